@@ -282,6 +282,9 @@ impl TyreModel for Tyre {
         // instead of one through the vtable.
         self.lateral_force_direct(s)
     }
+    fn lateral_forces(&self, rear: &Tyre, s: &[SlipState; 4]) -> [f64; 4] {
+        self.lateral_forces_direct(rear, s)
+    }
     fn lateral_force_per_load(&self, s: &SlipState) -> Option<f64> {
         self.lateral_force_per_load_direct(s)
     }

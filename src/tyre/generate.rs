@@ -61,6 +61,22 @@ macro_rules! tyre_models {
                 }
             }
 
+            /// [`TyreModel::lateral_forces`] of a vehicle's four wheels,
+            /// front on this tyre and rear on `rear`: one call to the model's
+            /// override when both are of one model, else a call per wheel.
+            pub(super) fn lateral_forces_direct(&self, rear: &Tyre, s: &[SlipState; 4]) -> [f64; 4] {
+                match (self, rear) {
+                    $( (Tyre::$variant(f), Tyre::$variant(r)) => Borrow::<$model>::borrow(f)
+                        .lateral_forces(Borrow::<$model>::borrow(r), s), )*
+                    _ => [
+                        self.lateral_force_direct(&s[0]),
+                        self.lateral_force_direct(&s[1]),
+                        rear.lateral_force_direct(&s[2]),
+                        rear.lateral_force_direct(&s[3]),
+                    ],
+                }
+            }
+
             /// Visitor `v`'s answer from the model's generic lateral force
             /// ([`MaybeLateralForceOf`]): `None` for a model without one and
             /// for a model registered at run time (a trait object cannot

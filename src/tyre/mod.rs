@@ -26,7 +26,8 @@
 //! are derived, and [`register`] for a model defined outside the crate;
 //! `generate.rs` the macro that expands the list; `erased.rs` the type-erased
 //! model a registered tyre is held as; `dispatch.rs` what [`Tyre`] does with
-//! any model; `name.rs` the model names.
+//! any model; `name.rs` the model names; `kernels.rs` the branch-free array
+//! `atan`/`sin`/`cos` the Magic Formula and PAC89 evaluate in.
 //!
 //! Adding a model: a file `tyre/<model>.rs` with its parameter struct
 //! (serde `Serialize`/`Deserialize`, `deny_unknown_fields`) implementing the
@@ -40,6 +41,7 @@ mod dispatch;
 mod erased;
 mod generate;
 mod gim;
+mod kernels;
 mod linear;
 pub mod load_range;
 mod magic_simple;
@@ -145,6 +147,22 @@ pub trait TyreModel {
     /// full evaluation is expensive override it.
     fn lateral_force(&self, s: &SlipState) -> f64 {
         self.forces(s).fy
+    }
+
+    /// The lateral forces of a vehicle's four wheels at `s`: the first two
+    /// on this tyre, the last two on `rear` (of the same model). By default
+    /// one [`TyreModel::lateral_force`] each; a model whose evaluation
+    /// vectorises across the wheels overrides it (PAC89).
+    fn lateral_forces(&self, rear: &Self, s: &[SlipState; 4]) -> [f64; 4]
+    where
+        Self: Sized,
+    {
+        [
+            self.lateral_force(&s[0]),
+            self.lateral_force(&s[1]),
+            rear.lateral_force(&s[2]),
+            rear.lateral_force(&s[3]),
+        ]
     }
 
     /// `Fy/Fz` at the slip state's slip angle, friction and speed when the

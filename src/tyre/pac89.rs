@@ -21,6 +21,9 @@
 //! `adams-pac89` is accepted. Road friction scales D and divides B, so the
 //! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
+//! A car's four wheels are evaluated together in SIMD lanes (`lanes.rs`).
+
+mod lanes;
 
 use super::{
     Block, Identification, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,
@@ -365,6 +368,11 @@ impl TyreModel for Pac89 {
             s.mu_scale,
             s.alpha.to_degrees(),
         )
+    }
+    /// The four wheels in SIMD lanes ([`Pac89::lateral_forces_lanes`]):
+    /// within a few ulp of [`TyreModel::lateral_force`] each.
+    fn lateral_forces(&self, rear: &Self, s: &[SlipState; 4]) -> [f64; 4] {
+        Self::lateral_forces_lanes([self, self, rear, rear], s)
     }
 }
 

@@ -111,11 +111,18 @@ impl<T: Scalar> AtSlip<T> {
                 self.combined(tyres, fz[0], fx, road) + self.combined(tyres, fz[1], fx, road)
             }
         };
-        if off(thrust) {
-            y
-        } else {
-            y + thrust * (fz[0] + fz[1])
-        }
+        with_thrust(y, fz, thrust)
+    }
+}
+
+/// An axle's force `y` of its wheels plus camber thrust `thrust` per unit
+/// of its loads `fz`.
+#[inline]
+fn with_thrust<T: Scalar>(y: T, fz: [T; 2], thrust: T) -> T {
+    if off(thrust) {
+        y
+    } else {
+        y + thrust * (fz[0] + fz[1])
     }
 }
 
@@ -219,6 +226,25 @@ impl<T: Scalar> Balance<T> {
         (alpha, f.eliminate(k, alpha))
     }
 
+    /// Both axles' forces on the wheel loads `fz` when both slip angles are
+    /// fixed and each wheel's force is its tyre's at its load (no
+    /// longitudinal force, no force per unit load): the four wheels in one
+    /// call ([`AxleTyres::wheels`]), summed as [`AtSlip::axle`] sums them.
+    /// None otherwise.
+    #[inline]
+    fn both_axles(&self, tyres: &impl AxleTyres<T>, fz: [T; 4]) -> Option<(T, T)> {
+        let (front, rear) = (self.front_at.as_ref()?, &self.rear_at);
+        if self.fx.is_some() || front.per_load.is_some() || rear.per_load.is_some() {
+            return None;
+        }
+        let (mu, speed) = (self.road.mu, self.road.speed);
+        let w = tyres.wheels([front.alpha, rear.alpha], fz, mu, speed);
+        Some((
+            with_thrust(w[0] + w[1], [fz[0], fz[1]], self.thrust[0]),
+            with_thrust(w[2] + w[3], [fz[2], fz[3]], self.thrust[1]),
+        ))
+    }
+
     /// `Y(ay)/m` and the axles at lateral acceleration `ay`.
     #[inline]
     pub(super) fn eval(
@@ -228,11 +254,17 @@ impl<T: Scalar> Balance<T> {
         ay: T,
     ) -> (T, AxleSolution<T>) {
         let fz = self.split.at(ay);
-        let (alpha_front, fy_front) = self.front(tyres, re, [fz[0], fz[1]]);
-        let fx = self.fx.map(|f| f[1]);
-        let fy_rear = self
-            .rear_at
-            .axle(tyres, [fz[2], fz[3]], self.thrust[1], fx, self.road);
+        let (alpha_front, fy_front, fy_rear) = match self.both_axles(tyres, fz) {
+            Some((front, rear)) => (self.alpha_front, front, rear),
+            None => {
+                let (alpha, front) = self.front(tyres, re, [fz[0], fz[1]]);
+                let fx = self.fx.map(|f| f[1]);
+                let rear = self
+                    .rear_at
+                    .axle(tyres, [fz[2], fz[3]], self.thrust[1], fx, self.road);
+                (alpha, front, rear)
+            }
+        };
         let projection = if off(self.compliance) {
             self.fixed_projection
         } else {

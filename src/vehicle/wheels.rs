@@ -27,6 +27,13 @@ pub trait AxleTyres<T: Scalar>: Sync {
     /// A wheel's lateral force at load `fz`, N.
     fn wheel(&self, axle: usize, alpha: T, fz: T, mu: T, speed: f64) -> T;
 
+    /// The four wheels' lateral forces (FL, FR, RL, RR), N, at the axles'
+    /// slip angles `alpha` (front, rear) and the loads `fz`: by default a
+    /// [`AxleTyres::wheel`] each.
+    fn wheels(&self, alpha: [T; 2], fz: [T; 4], mu: T, speed: f64) -> [T; 4] {
+        std::array::from_fn(|i| self.wheel(i / 2, alpha[i / 2], fz[i], mu, speed))
+    }
+
     /// The friction circle's radius per unit load
     /// ([`TyreModel::friction_coefficient`]).
     fn friction_coefficient(&self, axle: usize, fz: T, mu: T) -> T;
@@ -62,6 +69,20 @@ impl AxleTyres<f64> for PlainTyres<'_> {
             mu_scale: mu,
             speed,
         })
+    }
+    /// One call for the set ([`TyreModel::lateral_forces`]): a model that
+    /// evaluates the four wheels together (PAC89, in SIMD lanes) does.
+    fn wheels(&self, alpha: [f64; 2], fz: [f64; 4], mu: f64, speed: f64) -> [f64; 4] {
+        let wheel = |i: usize| SlipState {
+            alpha: alpha[i / 2],
+            kappa: 0.0,
+            fz: fz[i],
+            camber: 0.0,
+            mu_scale: mu,
+            speed,
+        };
+        let [front, rear] = self.tyres;
+        front.lateral_forces(rear, &[wheel(0), wheel(1), wheel(2), wheel(3)])
     }
     fn friction_coefficient(&self, axle: usize, fz: f64, mu: f64) -> f64 {
         self.tyres[axle].friction_coefficient(fz, mu)

@@ -5,8 +5,8 @@
 //! and the choices are in the parent module's notes. SI and radians; `α`
 //! here is TNO's.
 
-use super::kernels;
 use super::{AlphaStar, MagicFormula, MfVersion};
+use crate::tyre::kernels;
 use std::f64::consts::PI;
 
 pub(super) const EPS: f64 = 1e-6;

@@ -88,7 +88,6 @@
 mod channel;
 mod coefficients;
 mod formulae;
-mod kernels;
 mod lateral_of;
 mod mode;
 mod pure_curves;

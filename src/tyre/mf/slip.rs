@@ -5,8 +5,8 @@
 //! radians; `α` here is TNO's.
 
 use super::formulae::{cos_atan, sgn, LateralAtLoad, Prelude, EPS_V};
-use super::kernels;
 use super::{AlphaStar, MagicFormula, MfOutput, MfVersion};
+use crate::tyre::kernels;
 use std::f64::consts::PI;
 
 impl MagicFormula {

@@ -1,7 +1,7 @@
 //! Invariants of the Magic Formula by property test.
 
-use super::kernels;
 use super::*;
+use crate::tyre::kernels;
 use proptest::prelude::*;
 
 /// A symmetric 6.1 tyre: no shifts, no asymmetric camber terms.

@@ -1,14 +1,16 @@
 //! `atan`, `sin` and `cos` over small arrays of independent arguments, for
-//! the Magic Formula's hot path: the slip part of one evaluation needs about
-//! thirty of them, most independent of each other (the curves of `Fx0`,
-//! `Fy0`, `Gxα`, `Gyκ`, …), and the C library evaluates them one call at a
-//! time. Written branch-free over arrays, they compile to SIMD lanes (SSE2,
-//! the x86-64 baseline: two per instruction) and their polynomials are
+//! the tyre models' hot paths: the slip part of one Magic Formula
+//! evaluation needs about thirty of them, most independent of each other
+//! (the curves of `Fx0`, `Fy0`, `Gxα`, `Gyκ`, …), and a vehicle's four
+//! PAC89 wheels three each, independent across the wheels; the C library
+//! evaluates them one call at a time. Written branch-free over arrays, they
+//! compile to SIMD lanes (SSE2, the x86-64 baseline: two per instruction;
+//! four where a caller is compiled for AVX2) and their polynomials are
 //! evaluated by Estrin's scheme, so the chain of dependent stages of one
 //! evaluation is shorter as well.
 //!
 //! Accuracy: within 1 ulp of the C library's (glibc, itself within 1 ulp
-//! of the exact value) over the ranges tested in `tests.rs` — relative error
+//! of the exact value) over the ranges tested in `mf/tests.rs` — relative error
 //! below 3e-16, far inside the 1e-13 the model's agreement with MFeval
 //! allows. Pure functions of their arguments: the same inputs give the same
 //! bits whatever the lane, so a ratio of two equal curves is exactly 1.

@@ -9,11 +9,9 @@
 //! tells them apart: a unit scales `ay` against `u·r` (slope 1/2.237,
 //! intercept 0), an offset shifts it (slope 1, intercept `−u·δr` or the
 //! accelerometer's own offset). Where the slope with an intercept is a
-//! car's ([`SI_RANGE`]) over a spread of `u·r` that fixes it, no unit is
+//! car's (`run_slope`'s `SI_RANGE`, passed in) over a spread of `u·r` that fixes it, no unit is
 //! named: the offset is the replay's and the diagnosis's to say (as the
 //! channel's mean difference from the model).
-
-use super::run_slope::SI_RANGE;
 
 /// The least spread (5th to 95th percentile) of the kinematic lateral
 /// acceleration that fixes a slope with an intercept, m/s²: five times a
@@ -50,12 +48,12 @@ pub(super) fn line(pairs: impl Iterator<Item = (f64, f64)>) -> Option<(f64, f64,
 }
 
 /// Whether `ay` against the kinematic lateral acceleration is a car's
-/// line shifted by a constant ([`line`]'s slope within [`SI_RANGE`] over
-/// a spread of at least [`SPREAD`]): then the gap is an offset, and no
-/// unit is named.
-pub(super) fn an_offset(pairs: impl Iterator<Item = (f64, f64)>) -> bool {
+/// line shifted by a constant ([`line`]'s slope within `si`, the slopes
+/// of a run in SI units, over a spread of at least [`SPREAD`]): then the
+/// gap is an offset, and no unit is named.
+pub(super) fn an_offset(pairs: impl Iterator<Item = (f64, f64)>, si: (f64, f64)) -> bool {
     match line(pairs) {
-        Some((k, _, spread)) => spread >= SPREAD && (SI_RANGE.0..=SI_RANGE.1).contains(&k),
+        Some((k, _, spread)) => spread >= SPREAD && (si.0..=si.1).contains(&k),
         None => false,
     }
 }
@@ -63,6 +61,7 @@ pub(super) fn an_offset(pairs: impl Iterator<Item = (f64, f64)>) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    const SI: (f64, f64) = (0.6, 1.6);
 
     /// A yaw-rate offset is an offset; a speed in mph is not, with or
     /// without an accelerometer offset besides; a run with no spread
@@ -77,12 +76,12 @@ mod tests {
             "{k} {c}"
         );
         assert!((spread - 1.08).abs() < 1e-12);
-        assert!(an_offset(shifted));
+        assert!(an_offset(shifted, SI));
         let mph = x.iter().map(|v| (v * 2.23694, *v));
-        assert!(!an_offset(mph.clone()));
+        assert!(!an_offset(mph.clone(), SI));
         let (k, c, _) = line(mph).unwrap();
         assert!((k - 1.0 / 2.23694).abs() < 1e-12 && c.abs() < 1e-12);
-        assert!(!an_offset(x.iter().map(|v| (v * 2.23694, v + 0.2))));
-        assert!(!an_offset((0..100).map(|_| (1.83, 1.08))));
+        assert!(!an_offset(x.iter().map(|v| (v * 2.23694, v + 0.2)), SI));
+        assert!(!an_offset((0..100).map(|_| (1.83, 1.08)), SI));
     }
 }

@@ -233,8 +233,10 @@ pub(super) fn slope_slip(c: &Lateral) -> Option<(usize, LateralSlope)> {
     // Every moving stretch, straight ones too: a constant shift of `ay`
     // against the regressor is an offset, not a unit (`run_offset.rs`).
     let moving = stretches(c).iter().filter(|s| s.speed >= MOVING);
-    let offset =
-        super::run_offset::an_offset(moving.map(|s| (s.speed_yaw + s.v_dot + s.bank_term, s.ay)));
+    let offset = super::run_offset::an_offset(
+        moving.map(|s| (s.speed_yaw + s.v_dot + s.bank_term, s.ay)),
+        SI_RANGE,
+    );
     let unit = if swap {
         SlopeUnit::Swapped
     } else if r2 < MIN_R2 || offset {

@@ -158,7 +158,8 @@ pub(super) fn check_ay(
     // A ratio in a unit's band that a constant explains (a gyro's zero
     // offset over a step) names no unit: `run_offset.rs`.
     let moving = (0..ay.len()).filter(|&i| speed[i] >= MOVING);
-    if super::run_offset::an_offset(moving.map(|i| (speed[i] * r[i], ay[i]))) {
+    let pairs = moving.map(|i| (speed[i] * r[i], ay[i]));
+    if super::run_offset::an_offset(pairs, super::run_slope::SI_RANGE) {
         return Ok(());
     }
     let m = median(&mut q);

@@ -1,5 +1,5 @@
 //! What fresh users tripped on in `simulate`'s replays and `metrics`
-//! (session 94, from issue 41's fresh-eyes rounds): a yaw-rate offset
+//! (session 94, from the fresh-eyes rounds before it): a yaw-rate offset
 //! refused as a speed in mph, a noise-free offset called a dynamic error,
 //! and an unstable car's divergence refused as a unit slip (8 s log) or
 //! read as a gain "not settled" (4 s log). Also the one loop that writes a

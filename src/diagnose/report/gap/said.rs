@@ -167,22 +167,22 @@ pub(super) fn verdict(s: &Said) -> String {
     }
     if found.any() {
         let (rho, lag) = s.steer;
-        // What varies about the mean: a residual's shape (its likeness to
-        // the steer, its smoothness) is a shape only where this part
-        // stands above the noise floor. A constant offset replayed without
-        // noise leaves a numerical wiggle of 1e-4 of the signal whose
-        // correlation with the steer is 0.5: no dynamic error.
+        // A gap that is mostly its mean is an offset. What varies about
+        // the mean has a shape (a likeness to the steer, smoothness) only
+        // where it stands above the noise floor: a constant offset
+        // replayed without noise leaves a numerical wiggle of 1e-4 of the
+        // signal whose correlation with the steer is 0.5, no dynamic error.
         let varying = (rms * rms - bias * bias).max(0.0).sqrt();
-        let shaped = varying >= noise_floor;
-        if found.bias.significant && bias * bias >= OFFSET_SHARE * rms * rms {
+        let offset = found.bias.significant && bias * bias >= OFFSET_SHARE * rms * rms;
+        if offset {
             out += &offset_words(bias, rms, varying, noise_floor, unit);
         }
         // A time shift explains a residual shaped like the input's
         // derivative: saying "not a time shift" beside it contradicts it.
-        if !shaped {
-        } else if rho.abs() > 0.5 && shifted.is_none() {
+        let shaped = !offset || varying >= noise_floor;
+        if shaped && rho.abs() > 0.5 && shifted.is_none() {
             out += &format!("; the residual resembles the steer input (correlation {rho:.2} with the steer {lag:.2} s earlier: a residual shaped like the input, not a time shift): a dynamic error (gain, lag or stiffness)");
-        } else if correlation(s.e, s.e, 1) > 0.9 {
+        } else if shaped && correlation(s.e, s.e, 1) > 0.9 {
             out += "; the residual is slow and smooth: a model error rather than noise";
         }
     }

@@ -19,6 +19,7 @@ mod rig_scale;
 mod run;
 mod run_ay_sign;
 mod run_bank;
+mod run_offset;
 pub use run_bank::steep_bank;
 mod run_slope;
 mod run_units;

@@ -230,9 +230,16 @@ pub(super) fn slope_slip(c: &Lateral) -> Option<(usize, LateralSlope)> {
     let (swapped, swapped_r2) = fit(bins.iter().map(|b| (b.speed_ay, b.yaw_rate)));
     let swap =
         slope < BANDS[4].1 && swapped_r2 >= MIN_R2 && (SWAPPED.0..=SWAPPED.1).contains(&swapped);
+    // Every moving stretch, straight ones too: a constant shift of `ay`
+    // against the regressor is an offset, not a unit (`run_offset.rs`).
+    let moving = stretches(c).iter().filter(|s| s.speed >= MOVING);
+    let offset = super::run_offset::an_offset(
+        moving.map(|s| (s.speed_yaw + s.v_dot + s.bank_term, s.ay)),
+        SI_RANGE,
+    );
     let unit = if swap {
         SlopeUnit::Swapped
-    } else if r2 < MIN_R2 {
+    } else if r2 < MIN_R2 || offset {
         return None;
     } else {
         BANDS

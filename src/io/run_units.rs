@@ -155,6 +155,13 @@ pub(super) fn check_ay(
     if !in_g && !in_feet && speed_unit.is_none() && !in_deg && !too_small {
         return Ok(());
     }
+    // A ratio in a unit's band that a constant explains (a gyro's zero
+    // offset over a step) names no unit: `run_offset.rs`.
+    let moving = (0..ay.len()).filter(|&i| speed[i] >= MOVING);
+    let pairs = moving.map(|i| (speed[i] * r[i], ay[i]));
+    if super::run_offset::an_offset(pairs, super::run_slope::SI_RANGE) {
+        return Ok(());
+    }
     let m = median(&mut q);
     let i = turning[0];
     if too_small {

@@ -313,10 +313,9 @@ fn small_gain(m: &StepMetrics, u: f64) -> Option<String> {
     })
 }
 
-/// Refuses a run whose steer the yaw rate it gives contradicts
-/// ([`steer_problem`], the vehicle's wheelbase not known). `diagnose`,
-/// which knows the car's wheelbase, also notes a yaw rate above three
-/// times a neutral car's.
+/// Refuses a run whose steer its yaw rate contradicts ([`steer_problem`],
+/// wheelbase unknown), not an unstable car's divergence (the step metrics
+/// say it). `diagnose` also notes a yaw rate 3× a neutral car's.
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let wheelbase = Wheelbase::Unknown;
     let Some(y) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
@@ -329,6 +328,7 @@ fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError
         return p.map_or(Ok(()), |p| Err(InputError::problem(&run.path, p)));
     };
     match steer_problem(&y, wheelbase) {
+        Some(InputProblem::YawAboveSteer { .. }) if super::divergence::diverges_raw(run) => Ok(()),
         Some(problem) => Err(InputError::problem(&run.path, problem)),
         None => Ok(()),
     }

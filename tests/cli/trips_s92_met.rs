@@ -14,31 +14,18 @@ use std::fs;
 /// the tester's `resamp.py` does (`x0·(1 − w) + x1·w`, which writes a held
 /// steer back with an ulp of jitter), to 9 s, written to `dir/name`.
 pub(crate) fn resampled(history: &Path, hz: f64, t0: f64, dir: &Path, name: &str) -> PathBuf {
-    let text = fs::read_to_string(history).unwrap();
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').take(6).map(|v| v.parse().unwrap()).collect())
-        .collect();
-    let mut out = String::from("t,steer,speed,beta,yaw_rate,ay\n");
-    let mut k = 0;
-    loop {
-        let t = t0 + k as f64 / hz;
-        k += 1;
-        if t > 9.0 {
-            break;
-        }
+    let rows = super::trips_s94_met::history_rows(history);
+    let times = (0..).map(|k| t0 + k as f64 / hz).take_while(|t| *t <= 9.0);
+    let lines = times.map(|t| {
         let i = rows.partition_point(|r| r[0] < t).clamp(1, rows.len() - 1);
         let (a, b) = (&rows[i - 1], &rows[i]);
         let w = (t - a[0]) / (b[0] - a[0]);
         let v: Vec<String> = (1..6)
             .map(|c| (a[c] * (1.0 - w) + b[c] * w).to_string())
             .collect();
-        out.push_str(&format!("{:.6},{}\n", t, v.join(",")));
-    }
-    let path = dir.join(name);
-    fs::write(&path, out).unwrap();
-    path
+        format!("{:.6},{}", t, v.join(","))
+    });
+    super::trips_s94_met::written(dir, name, "t,steer,speed,beta,yaw_rate,ay", lines)
 }
 
 /// The closed-form yaw-rate gain u/(l·(1 + K·u²)) of the tester's car at

@@ -13,23 +13,21 @@ use super::*;
 fn a_log_whose_rate_changes_is_not_cut_into_one_sample_pieces() {
     let dir = tempfile::tempdir().unwrap();
     let history = trips_s90_met::tester_step(dir.path(), 0.1, "");
-    let text = fs::read_to_string(&history).unwrap();
-    let mut csv = String::from("t,steer,speed,beta,yaw_rate,ay\n");
-    for line in text.lines().skip(1) {
-        let c: Vec<f64> = line
-            .split(',')
-            .take(6)
-            .map(|v| v.parse().unwrap())
-            .collect();
-        let ms = (c[0] * 1000.0).round() as i64;
-        let kept = if ms < 3000 { ms % 5 == 0 } else { ms % 50 == 0 };
-        if kept {
-            let cells: Vec<String> = c.iter().map(|v| format!("{v}")).collect();
-            csv.push_str(&format!("{}\n", cells.join(",")));
-        }
-    }
-    let path = dir.path().join("mixed.csv");
-    fs::write(&path, csv).unwrap();
+    let path = trips_s94_met::rewritten(
+        &history,
+        dir.path(),
+        "mixed.csv",
+        "t,steer,speed,beta,yaw_rate,ay",
+        |c| {
+            let ms = trips_s94_met::millis(c);
+            if ms < 3000 {
+                ms % 5 == 0
+            } else {
+                ms % 50 == 0
+            }
+        },
+        <[f64]>::to_vec,
+    );
     let o = run(&["metrics", path.to_str().unwrap(), "--json"]);
     let e = stderr(&o);
     assert!(o.status.success(), "{e}");
@@ -172,7 +170,6 @@ fn a_time_column_with_its_unit_or_in_german_gets_a_did_you_mean() {
 fn a_uniform_offset_is_said_along_the_run_not_in_one_stretch() {
     let dir = tempfile::tempdir().unwrap();
     let history = trips_s90_met::tester_step(dir.path(), 0.1, "");
-    let text = fs::read_to_string(&history).unwrap();
     // A deterministic, zero-mean uniform noise (xorshift), deviation `s`.
     let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut noise = |s: f64| {
@@ -181,22 +178,22 @@ fn a_uniform_offset_is_said_along_the_run_not_in_one_stretch() {
         state ^= state << 17;
         (state as f64 / u64::MAX as f64 - 0.5) * s * 12f64.sqrt()
     };
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for line in text.lines().skip(1).step_by(10) {
-        let c: Vec<f64> = line
-            .split(',')
-            .take(6)
-            .map(|v| v.parse().unwrap())
-            .collect();
+    trips_s94_met::rewritten(
+        &history,
+        dir.path(),
+        "biased.csv",
+        "t,speed,steer,yaw_rate,ay,beta",
+        |c| trips_s94_met::on_grid(c, 10),
         // history: t, steer, speed, beta, yaw_rate, ay.
-        let (r, ay, beta) = (
-            c[4] + 0.005 + noise(0.002),
-            c[5] + noise(0.05),
-            c[3] + noise(0.002),
-        );
-        csv.push_str(&format!("{},{},{},{r},{ay},{beta}\n", c[0], c[2], c[1]));
-    }
-    fs::write(dir.path().join("biased.csv"), csv).unwrap();
+        |c| {
+            let (r, ay, beta) = (
+                c[4] + 0.005 + noise(0.002),
+                c[5] + noise(0.05),
+                c[3] + noise(0.002),
+            );
+            vec![c[0], c[2], c[1], r, ay, beta]
+        },
+    );
     let scenario = format!(
         "name = \"rep\"\n{VEHICLE}[tyres]\nfront = \"linear.toml\"\n[model]\nkinematics = \"small-angle\"\nload_transfer = false\n[manoeuvre]\nkind = \"replay\"\nrun = \"biased.csv\"\n"
     );
@@ -382,22 +379,14 @@ fn study_inputs_that_mean_nothing_are_refused_at_their_keys() {
 fn a_log_whose_rate_goes_up_reads_what_the_fast_log_reads() {
     let dir = tempfile::tempdir().unwrap();
     let history = trips_s90_met::tester_step(dir.path(), 0.1, "");
-    let text = fs::read_to_string(&history).unwrap();
-    let mut csv = String::from("t,steer,speed,beta,yaw_rate,ay\n");
-    for line in text.lines().skip(1) {
-        let c: Vec<f64> = line
-            .split(',')
-            .take(6)
-            .map(|v| v.parse().unwrap())
-            .collect();
-        let ms = (c[0] * 1000.0).round() as i64;
-        if ms >= 2000 || ms % 10 == 0 {
-            let cells: Vec<String> = c.iter().map(|v| format!("{v}")).collect();
-            csv.push_str(&format!("{}\n", cells.join(",")));
-        }
-    }
-    let path = dir.path().join("up.csv");
-    fs::write(&path, csv).unwrap();
+    let path = trips_s94_met::rewritten(
+        &history,
+        dir.path(),
+        "up.csv",
+        "t,steer,speed,beta,yaw_rate,ay",
+        |c| trips_s94_met::millis(c) >= 2000 || trips_s94_met::on_grid(c, 10),
+        <[f64]>::to_vec,
+    );
     let (fast, _) = trips_s90_met::measured(&history, &[]);
     let (up, w) = trips_s90_met::measured(&path, &[]);
     assert!(w.contains("from 100 Hz to 1000 Hz"), "{w}");

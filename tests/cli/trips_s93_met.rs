@@ -12,7 +12,7 @@ use std::fs;
 /// linear tyres of 57 296 N/rad per wheel in front and `rear` N/rad per
 /// wheel behind, no load transfer, stepped by 0.001 rad at 1 s at `speed`
 /// m/s to `end` s, simulated at 1 kHz in `dir`: its history.
-fn stepped(dir: &Path, rear: f64, speed: f64, end: f64) -> PathBuf {
+pub(crate) fn stepped(dir: &Path, rear: f64, speed: f64, end: f64) -> PathBuf {
     let tyre = |c: f64| format!("model = \"linear\"\ncornering_stiffness = {c:?}\n");
     fs::write(dir.join("front.toml"), tyre(57296.0)).unwrap();
     fs::write(dir.join("rear.toml"), tyre(rear)).unwrap();
@@ -35,7 +35,7 @@ fn stepped(dir: &Path, rear: f64, speed: f64, end: f64) -> PathBuf {
 /// The linear 2-DOF car's state matrix (β, r) at `u` m/s with axle
 /// stiffnesses 2 × 57 296 and 2 × `rear` N/rad: its larger eigenvalue,
 /// 1/s, and its steady yaw-rate gain u/(l + K·u²), 1/s.
-fn closed_form(rear: f64, u: f64) -> (f64, f64) {
+pub(crate) fn closed_form(rear: f64, u: f64) -> (f64, f64) {
     let (m, iz, a, b) = (1530.0, 2315.0, 1.11, 1.67);
     let (cf, cr) = (2.0 * 57296.0, 2.0 * rear);
     let a11 = -(cf + cr) / (m * u);

@@ -167,15 +167,53 @@ pub(super) fn verdict(s: &Said) -> String {
     }
     if found.any() {
         let (rho, lag) = s.steer;
+        // A gap that is mostly its mean is an offset. What varies about
+        // the mean has a shape (a likeness to the steer, smoothness) only
+        // where it stands above the noise floor: a constant offset
+        // replayed without noise leaves a numerical wiggle of 1e-4 of the
+        // signal whose correlation with the steer is 0.5, no dynamic error.
+        let varying = (rms * rms - bias * bias).max(0.0).sqrt();
+        let offset = found.bias.significant && bias * bias >= OFFSET_SHARE * rms * rms;
+        if offset {
+            out += &offset_words(bias, rms, varying, noise_floor, unit);
+        }
         // A time shift explains a residual shaped like the input's
         // derivative: saying "not a time shift" beside it contradicts it.
-        if rho.abs() > 0.5 && shifted.is_none() {
+        let shaped = !offset || varying >= noise_floor;
+        if shaped && rho.abs() > 0.5 && shifted.is_none() {
             out += &format!("; the residual resembles the steer input (correlation {rho:.2} with the steer {lag:.2} s earlier: a residual shaped like the input, not a time shift): a dynamic error (gain, lag or stiffness)");
-        } else if correlation(s.e, s.e, 1) > 0.9 {
+        } else if shaped && correlation(s.e, s.e, 1) > 0.9 {
             out += "; the residual is slow and smooth: a model error rather than noise";
         }
     }
     out
+}
+
+/// The share of the residual's mean square its mean must carry for the
+/// gap to be said as an offset (the mean larger than what varies about it).
+const OFFSET_SHARE: f64 = 0.5;
+
+/// A gap that is mostly its mean, said as an offset: the measured
+/// channel's mean difference from the simulation (`e` = simulated −
+/// measured), its share of the mean square, and what varies about it.
+fn offset_words(bias: f64, rms: f64, varying: f64, noise_floor: f64, unit: &str) -> String {
+    let way = if bias < 0.0 { "above" } else { "below" };
+    // Where what varies is above the noise, its shape is said next.
+    let (against, cause) = if varying < noise_floor {
+        (
+            "below",
+            ": a sensor's zero offset, or a constant the model leaves out, not a dynamic error",
+        )
+    } else {
+        ("above", "")
+    };
+    format!(
+        "; the gap is mostly a constant offset: the measured channel lies {} {unit} {way} the simulation on average (its mean difference, {:.0} % of the residual's mean square; what varies about it has RMS {} {unit}, {against} the noise floor of {} {unit}){cause}",
+        crate::format::significant(bias.abs(), 3),
+        100.0 * bias * bias / (rms * rms),
+        crate::format::significant(varying, 2),
+        crate::format::significant(noise_floor, 2),
+    )
 }
 
 /// The words of a gap over the whole run: its size, Sprague–Geers, and

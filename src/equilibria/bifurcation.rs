@@ -310,6 +310,9 @@ fn folds(model: &VehicleModel, axis: Axis, a: &Condition, b: &Condition) -> Vec<
         .collect()
 }
 
+/// A point of a continued branch: (parameter, (β, r)).
+type BranchPoint = (f64, [f64; 2]);
+
 /// The branch from `ea` at `a` to `eb` at `b` bisected in the parameter,
 /// each midpoint's equilibrium found by Newton from the mean of the
 /// bracket's, until the bracket is 1e-12 of its width: where `quantity` of
@@ -322,7 +325,7 @@ fn bisect_sign(
     (a, ea): (&Condition, &Equilibrium),
     (b, eb): (&Condition, &Equilibrium),
     quantity: impl Fn(&stability::Stability) -> f64,
-) -> Option<((f64, [f64; 2]), (f64, [f64; 2]))> {
+) -> Option<(BranchPoint, BranchPoint)> {
     let (mut pa, mut pb) = (axis.get(a), axis.get(b));
     let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
     let qa = quantity(&ea.stability);

@@ -351,11 +351,7 @@ impl EquilibriaReport {
                 ];
                 let header: Vec<&str> = header.iter().map(String::as_str).collect();
                 let rows = figures::branch_rows(r, axis, &sw.search_box);
-                write_csv(
-                    &dir.join(format!("branches_{a}.csv")),
-                    &header,
-                    rows.into_iter(),
-                )?;
+                write_csv(&dir.join(format!("branches_{a}.csv")), &header, rows)?;
             }
             let v = sw.grid.varying();
             if v.len() >= 2 {

@@ -193,23 +193,21 @@ fn fold_at(
     let third = [i.checked_sub(1), Some(i + 2)]
         .into_iter()
         .flatten()
-        .filter_map(|k| roots.get(k))
-        .any(|r| (r - mid).abs() < 10.0 * gap);
-    // The merge point: the extremum of h between the pair's rear slip
-    // angles (h has a double root there at the fold itself).
-    let (mut lo, mut hi) = (a0, a1);
-    let s = red.at(mid).h.signum();
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..100 {
-        let m1 = hi - g * (hi - lo);
-        let m2 = lo + g * (hi - lo);
-        if s * red.at(m1).h < s * red.at(m2).h {
-            hi = m2;
-        } else {
-            lo = m1;
+        .filter_map(|k| roots.get(k).copied())
+        .find(|r| (r - mid).abs() < 10.0 * gap);
+    // The merge point: for a pitchfork, the middle one of the three (the
+    // branch that continues through it: on straight running at δ = 0 it is
+    // (0, 0) exactly, where the outer two are √ of the distance away);
+    // for a fold, the extremum of h between the pair's rear slip angles (h
+    // has a double root there at the fold itself).
+    let merge = match third {
+        Some(t) => {
+            let mut three = [a0, a1, t];
+            three.sort_by(f64::total_cmp);
+            three[1]
         }
-    }
-    let merge = 0.5 * (lo + hi);
+        None => merge_point(&red, a0, a1),
+    };
     let p = red.at(merge);
     let x = [p.beta, p.yaw_rate];
     let f = residual(model, &at, x);
@@ -231,7 +229,7 @@ fn fold_at(
     let one_saddle = (kinds[0] == Kind::Saddle) != (kinds[1] == Kind::Saddle);
     let res = f[0].abs().max(f[1].abs());
     Some(Bifurcation {
-        kind: if third {
+        kind: if third.is_some() {
             BifurcationKind::Pitchfork
         } else {
             BifurcationKind::Fold
@@ -245,6 +243,25 @@ fn fold_at(
         kinds,
         verified: one_saddle && res <= 1e-8 && det.abs() <= 1e-3,
     })
+}
+
+/// The extremum of h between two neighbouring roots `a0 < a1` (golden
+/// section): where they merge at a fold.
+fn merge_point(red: &exact::Reduced, a0: f64, a1: f64) -> f64 {
+    let mid = 0.5 * (a0 + a1);
+    let (mut lo, mut hi) = (a0, a1);
+    let s = red.at(mid).h.signum();
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..100 {
+        let m1 = hi - g * (hi - lo);
+        let m2 = lo + g * (hi - lo);
+        if s * red.at(m1).h < s * red.at(m2).h {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// Folds between conditions `a` and `b` (which differ only in `axis`). A
@@ -293,6 +310,40 @@ fn folds(model: &VehicleModel, axis: Axis, a: &Condition, b: &Condition) -> Vec<
         .collect()
 }
 
+/// A point of a continued branch: (parameter, (β, r)).
+type BranchPoint = (f64, [f64; 2]);
+
+/// The branch from `ea` at `a` to `eb` at `b` bisected in the parameter,
+/// each midpoint's equilibrium found by Newton from the mean of the
+/// bracket's, until the bracket is 1e-12 of its width: where `quantity` of
+/// the equilibrium's stability (with a tyre lag, the full state's) changes
+/// sign. The bracket's ends, (parameter, state) on `ea`'s side and on
+/// `eb`'s; `None` when Newton loses the branch.
+fn bisect_sign(
+    model: &VehicleModel,
+    axis: Axis,
+    (a, ea): (&Condition, &Equilibrium),
+    (b, eb): (&Condition, &Equilibrium),
+    quantity: impl Fn(&stability::Stability) -> f64,
+) -> Option<(BranchPoint, BranchPoint)> {
+    let (mut pa, mut pb) = (axis.get(a), axis.get(b));
+    let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
+    let qa = quantity(&ea.stability);
+    let tol = 1e-12 * (pa - pb).abs().max(1e-12);
+    while (pa - pb).abs() > tol {
+        let pm = 0.5 * (pa + pb);
+        let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
+        let cm = axis.with(a, pm);
+        let xm = polish(model, &cm, x0)?;
+        if quantity(&lagged::classify(model, &cm, xm)) * qa > 0.0 {
+            (pa, xa) = (pm, xm);
+        } else {
+            (pb, xb) = (pm, xm);
+        }
+    }
+    Some(((pa, xa), (pb, xb)))
+}
+
 /// Locates a Hopf point on the branch from `ea` at `a` to `eb` at `b`.
 fn hopf(
     model: &VehicleModel,
@@ -302,27 +353,10 @@ fn hopf(
     b: &Condition,
     eb: &Equilibrium,
 ) -> Option<Bifurcation> {
-    let (mut pa, mut pb) = (axis.get(a), axis.get(b));
-    let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
     // The leading eigenvalue's real part: its sign is the trace's for the
     // (β, r) Jacobian at det J > 0, and it is what crosses zero at a Hopf
     // point of the full state with a tyre lag.
-    let ta = ea.stability.eigenvalues[0].0;
-    let tol = 1e-12 * (pa - pb).abs().max(1e-12);
-    while (pa - pb).abs() > tol {
-        let pm = 0.5 * (pa + pb);
-        let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
-        let cm = axis.with(a, pm);
-        let xm = polish(model, &cm, x0)?;
-        let t = lagged::classify(model, &cm, xm).eigenvalues[0].0;
-        if t * ta > 0.0 {
-            pa = pm;
-            xa = xm;
-        } else {
-            pb = pm;
-            xb = xm;
-        }
-    }
+    let ((pa, xa), _) = bisect_sign(model, axis, (a, ea), (b, eb), |s| s.eigenvalues[0].0)?;
     let at = axis.with(a, pa);
     let f = residual(model, &at, xa);
     let (s, scale) = if model.options.effects.lagged() {
@@ -360,21 +394,7 @@ fn zero_eigenvalue(
     b: &Condition,
     eb: &Equilibrium,
 ) -> Option<Bifurcation> {
-    let (mut pa, mut pb) = (axis.get(a), axis.get(b));
-    let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
-    let da = ea.stability.determinant;
-    let tol = 1e-12 * (pa - pb).abs().max(1e-12);
-    while (pa - pb).abs() > tol {
-        let pm = 0.5 * (pa + pb);
-        let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
-        let cm = axis.with(a, pm);
-        let xm = polish(model, &cm, x0)?;
-        if lagged::classify(model, &cm, xm).determinant * da > 0.0 {
-            (pa, xa) = (pm, xm);
-        } else {
-            (pb, xb) = (pm, xm);
-        }
-    }
+    let ((pa, xa), (pb, _)) = bisect_sign(model, axis, (a, ea), (b, eb), |s| s.determinant)?;
     let p = 0.5 * (pa + pb);
     let at = axis.with(a, p);
     let x = polish(model, &at, xa).unwrap_or(xa);

@@ -441,9 +441,45 @@ impl<'a> Reduced<'a> {
                 roots.push(xm);
             }
         }
+        self.roots_beside_zero_samples(a, h, flat, &mut roots);
         roots.sort_by(f64::total_cmp);
         roots.dedup_by(|x, y| (*x - *y).abs() < 1e-12);
         roots
+    }
+
+    /// Roots inside a cell that ends on a sample where h is exactly zero
+    /// (straight running at δ = 0, where symmetry puts a root on the sample
+    /// αr = 0): the sign scan misses them, as the product of the cell's
+    /// ends is zero. Near a pitchfork two roots ±ε sit there, ε → 0; without
+    /// them the count changes a scan cell away from the event, not at it.
+    fn roots_beside_zero_samples(&self, a: &[f64], h: &[f64], flat: &[bool], roots: &mut Vec<f64>) {
+        let f = |x: f64| self.at(x).h;
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        for i in 0..CELLS {
+            if flat[i] || flat[i + 1] || (h[i] == 0.0) == (h[i + 1] == 0.0) {
+                continue;
+            }
+            let (zero, other) = if h[i] == 0.0 { (i, i + 1) } else { (i + 1, i) };
+            // The extremum of h of the sign opposite to the non-zero end's:
+            // a root lies between it and that end when h gets there.
+            let s = h[other].signum();
+            let (mut lo, mut hi) = (a[i], a[i + 1]);
+            for _ in 0..80 {
+                let m1 = hi - g * (hi - lo);
+                let m2 = lo + g * (hi - lo);
+                if s * f(m1) < s * f(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            let xm = 0.5 * (lo + hi);
+            // An extremum within rounding of the zero sample is that
+            // sample's own root.
+            if s * f(xm) < 0.0 && (xm - a[zero]).abs() > 1e-12 {
+                roots.push(brent(f, xm, a[other], 1e-15));
+            }
+        }
     }
 }
 

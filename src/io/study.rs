@@ -442,7 +442,23 @@ impl Values<'_> {
                 ParamError::positive(&key, t.tolerance).map_err(|e| self.error(e))?;
             }
         }
+        // Er (Wang & Liang's evaluation index, s) is positive for every
+        // car: a target at or below zero is a typo, never met.
+        for (list, v) in [("targets", &inv.targets), ("constraints", &inv.constraints)] {
+            for (i, t) in v.iter().enumerate() {
+                if t.metric.eq_ignore_ascii_case("er") {
+                    let key = format!("inverse.{list}[{i}].value");
+                    ParamError::positive(&key, t.value).map_err(|e| self.error(e))?;
+                }
+            }
+        }
         let reference = inv.reference;
+        // A stiffness at or below zero is refused as such, before the unit
+        // check (which would read −9.4 N/deg as a unit slip).
+        ParamError::positive("inverse.reference.front", reference.front)
+            .map_err(|e| self.error(e))?;
+        ParamError::positive("inverse.reference.rear", reference.rear)
+            .map_err(|e| self.error(e))?;
         self.tyre_like("inverse.reference.front", &[reference.front])?;
         self.tyre_like("inverse.reference.rear", &[reference.rear])?;
         Ok(Inverse {

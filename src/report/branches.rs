@@ -4,8 +4,15 @@
 //! in the (scaled) state, closest pairs first, each point linked at most
 //! once to each side, never across a gap. The number of points may change
 //! from one column to the next (a branch leaves the plotted box, or two
-//! meet at a fold): the points left over end their branch, and a fold is
-//! joined to the two branch ends nearest to it. Distances are in whatever
+//! meet at a fold): the points left over end their branch. A fold's pair
+//! is chosen first — the two points nearest to it on the side that has
+//! them — and cut from the matching, so that the nearest-neighbour rule
+//! cannot link one of them past the fold to another branch (a branch moves
+//! fast near a fold: the partner it dies with may look closer to the
+//! surviving branch's next point than that branch's own last point); and a
+//! link never joins a saddle to a node or focus where no eigenvalue crosses
+//! zero (det J keeps its sign along a branch between bifurcations).
+//! Distances are in whatever
 //! scaled units the caller gives the states in (the equilibria figures use
 //! fractions of the search box).
 
@@ -18,10 +25,18 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// The links between points of neighbouring columns: each (point in column
 /// i, point in column i + 1), matched closest first, at most one link per
-/// point and side, none longer than `gap`.
-pub fn link(columns: &[Vec<[f64; 2]>], gap: f64) -> Vec<(At, At)> {
+/// point and side, none longer than `gap`, none that `allowed` refuses
+/// (given the interval i and the two points), and none from a point of
+/// `cut` — (interval i, point) — across its interval.
+pub fn link(
+    columns: &[Vec<[f64; 2]>],
+    gap: f64,
+    cut: &[(usize, At)],
+    allowed: &dyn Fn(usize, At, At) -> bool,
+) -> Vec<(At, At)> {
     let mut links = Vec::new();
     for (i, w) in columns.windows(2).enumerate() {
+        let is_cut = |p: At| cut.contains(&(i, p));
         let mut pairs: Vec<(f64, usize, usize)> = w[0]
             .iter()
             .enumerate()
@@ -30,7 +45,9 @@ pub fn link(columns: &[Vec<[f64; 2]>], gap: f64) -> Vec<(At, At)> {
                     .enumerate()
                     .map(move |(b, &q)| (distance(p, q), a, b))
             })
-            .filter(|(d, _, _)| *d <= gap)
+            .filter(|&(d, a, b)| {
+                d <= gap && !is_cut((i, a)) && !is_cut((i + 1, b)) && allowed(i, (i, a), (i + 1, b))
+            })
             .collect();
         pairs.sort_by(|x, y| x.0.total_cmp(&y.0));
         let (mut left, mut right) = (vec![false; w[0].len()], vec![false; w[1].len()]);
@@ -45,36 +62,33 @@ pub fn link(columns: &[Vec<[f64; 2]>], gap: f64) -> Vec<(At, At)> {
     links
 }
 
-/// The branch ends a fold at `at`, located between columns `i` and `i + 1`,
-/// joins: of the points of column `i` with no link forward and those of
-/// column `i + 1` with no link back, the two nearest to `at` within `gap`
-/// (the saddle and the node that meet there).
-pub fn fold_ends(
+/// The points of column `col` that end at a bifurcation at `at` where
+/// `meet` equilibria meet (2 at a fold, 3 at a pitchfork): the `meet`
+/// nearest to `at` within `gap`; at a pitchfork the middle one (in the
+/// first coordinate) continues through it and is left out.
+pub fn meeting(
     columns: &[Vec<[f64; 2]>],
-    links: &[(At, At)],
-    i: usize,
+    col: usize,
     at: [f64; 2],
+    meet: usize,
     gap: f64,
 ) -> Vec<At> {
-    let mut ends: Vec<(f64, At)> = Vec::new();
-    for col in [i, i + 1] {
-        let Some(points) = columns.get(col) else {
-            continue;
-        };
-        for (k, &p) in points.iter().enumerate() {
-            // Linked across the fold already: forward from column i, back
-            // from column i + 1.
-            let across = links
-                .iter()
-                .any(|l| (l.0 .0 == i) && (l.0 == (col, k) || l.1 == (col, k)));
-            let d = distance(p, at);
-            if !across && d <= gap {
-                ends.push((d, (col, k)));
-            }
-        }
+    let Some(points) = columns.get(col) else {
+        return Vec::new();
+    };
+    let mut near: Vec<(f64, usize)> = points
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| (distance(p, at), k))
+        .filter(|(d, _)| *d <= gap)
+        .collect();
+    near.sort_by(|x, y| x.0.total_cmp(&y.0));
+    near.truncate(meet);
+    if meet == 3 && near.len() == 3 {
+        near.sort_by(|x, y| points[x.1][0].total_cmp(&points[y.1][0]));
+        near.remove(1);
     }
-    ends.sort_by(|x, y| x.0.total_cmp(&y.0));
-    ends.into_iter().take(2).map(|e| e.1).collect()
+    near.into_iter().map(|(_, k)| (col, k)).collect()
 }
 
 #[cfg(test)]
@@ -90,7 +104,7 @@ mod tests {
             vec![[0.04, 0.35], [0.4, -0.65]],
             vec![[0.9, -0.5], [0.38, -0.55], [0.02, 0.4]],
         ];
-        let mut links = link(&columns, 0.35);
+        let mut links = link(&columns, 0.35, &[], &|_, _, _| true);
         links.sort();
         assert_eq!(
             links,
@@ -101,8 +115,8 @@ mod tests {
                 ((1, 1), (2, 1)),
             ]
         );
-        // The fold between the first two columns joins the two ends left.
-        let mut ends = fold_ends(&columns, &links, 0, [-0.4, 0.8], 0.5);
+        // The fold between the first two columns joins the two nearest.
+        let mut ends = meeting(&columns, 0, [-0.4, 0.8], 2, 0.5);
         ends.sort();
         assert_eq!(ends, [(0, 2), (0, 3)]);
         // The branch that entered the box joins nothing.
@@ -112,13 +126,49 @@ mod tests {
     #[test]
     fn a_gap_breaks_a_branch_and_each_point_links_once() {
         // The nearest point is past the gap: no link.
-        assert!(link(&[vec![[0.0, 0.0]], vec![[0.5, 0.0]]], 0.35).is_empty());
+        assert!(link(
+            &[vec![[0.0, 0.0]], vec![[0.5, 0.0]]],
+            0.35,
+            &[],
+            &|_, _, _| true
+        )
+        .is_empty());
         // Two points near one: the nearer is linked, the other ends.
-        let links = link(&[vec![[0.0, 0.0], [0.1, 0.0]], vec![[0.08, 0.0]]], 0.35);
+        let links = link(
+            &[vec![[0.0, 0.0], [0.1, 0.0]], vec![[0.08, 0.0]]],
+            0.35,
+            &[],
+            &|_, _, _| true,
+        );
         assert_eq!(links, [((0, 1), (1, 0))]);
-        // A fold never takes an end already linked across it.
+        // A point cut at its interval is not linked across it.
         let cols = vec![vec![[0.0, 0.0]], vec![[0.01, 0.0]]];
-        let l = link(&cols, 0.35);
-        assert!(fold_ends(&cols, &l, 0, [0.0, 0.0], 0.5).is_empty());
+        assert!(link(&cols, 0.35, &[(0, (0, 0))], &|_, _, _| true).is_empty());
+    }
+
+    #[test]
+    fn a_fold_pair_is_cut_before_the_survivor_is_linked() {
+        // Li, Jia & Zhao's sedan at δ = 0.04 → 0.06 rad (box units): the
+        // node, the saddle and the unstable focus; then one stable focus.
+        // The saddle is nearest to it, but the saddle dies with the
+        // unstable focus at the fold (−0.53, 0.83): the node goes on.
+        let columns = vec![
+            vec![[-0.072, 0.578], [-0.447, 0.832], [-0.706, 0.819]],
+            vec![[-0.265, 0.824]],
+        ];
+        let pair = meeting(&columns, 0, [-0.529, 0.829], 2, 0.8);
+        assert_eq!(pair, [(0, 1), (0, 2)]);
+        let cut: Vec<(usize, At)> = pair.iter().map(|&p| (0, p)).collect();
+        assert_eq!(
+            link(&columns, 0.35, &[], &|_, _, _| true),
+            [((0, 1), (1, 0))]
+        );
+        assert_eq!(
+            link(&columns, 0.35, &cut, &|_, _, _| true),
+            [((0, 0), (1, 0))]
+        );
+        // Three meet at a pitchfork: the middle one goes through.
+        let cols = vec![vec![[-0.1, 0.0], [0.0, 0.0], [0.1, 0.0]]];
+        assert_eq!(meeting(&cols, 0, [0.0, 0.0], 3, 0.5), [(0, 0), (0, 2)]);
     }
 }

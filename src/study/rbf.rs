@@ -20,6 +20,16 @@ pub struct Rbf {
 }
 
 impl Rbf {
+    /// The smallest and largest input it was trained on: outside them its
+    /// answer is an extrapolation of Gaussians that fade to the bias.
+    pub(crate) fn trained_range(&self) -> (f64, f64) {
+        self.centres
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &c| {
+                (lo.min(c), hi.max(c))
+            })
+    }
+
     /// Trains on inputs `x` and outputs `y` (one vector per input).
     pub(crate) fn train(x: &[f64], y: &[Vec<f64>], spread: f64) -> Self {
         let n = x.len();

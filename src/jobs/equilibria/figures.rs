@@ -4,7 +4,7 @@
 //! [`crate::equilibria::phase`]) and stability maps over two swept
 //! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
 
-use crate::equilibria::bifurcation::{Axis, Bifurcation};
+use crate::equilibria::bifurcation::{Axis, Bifurcation, BifurcationKind};
 use crate::equilibria::phase::{self, Manifold};
 use crate::equilibria::sweep::{axis_lines, Grid, SweepResult};
 use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
@@ -50,6 +50,121 @@ const BRANCH_GAP: f64 = 0.35;
 /// Largest distance, in box half-widths, from a fold to the last point of a
 /// branch that ends there (branches move fast near a fold).
 const FOLD_GAP: f64 = 0.8;
+
+/// What a branch diagram draws along the first line of an axis: the
+/// equilibria in the box at each grid value, the links between
+/// neighbouring values that make branches, and the branch ends joined to
+/// the fold or pitchfork where they meet.
+pub(super) struct Drawn<'a> {
+    /// The swept parameter at each grid value of the line, SI.
+    pub params: Vec<f64>,
+    /// The equilibria in the box at each value.
+    pub eqs: Vec<Vec<Equilibrium>>,
+    /// (value i, index), (value i + 1, index) of one branch.
+    pub links: Vec<(At, At)>,
+    /// A branch end and the bifurcation it ends at.
+    pub joins: Vec<(At, &'a Bifurcation)>,
+}
+
+/// The branches of the first line of `axis` ([`Drawn`]). The equilibria
+/// that meet at a fold (two) or pitchfork (the outer two of three) are
+/// chosen first, on the side of it that has them (more equilibria in all),
+/// and kept out of the matching across its interval ([`branches::link`]);
+/// a saddle is linked to a node or focus only across an interval that
+/// holds a zero eigenvalue or pitchfork.
+pub(super) fn drawn<'a>(res: &'a SweepResult, axis: Axis, bx: &SearchBox) -> Drawn<'a> {
+    let line = &axis_lines(&res.grid, axis)[0];
+    let params: Vec<f64> = line
+        .iter()
+        .map(|&i| axis.get(&res.points[i].condition))
+        .collect();
+    let eqs: Vec<Vec<Equilibrium>> = line
+        .iter()
+        .map(|&i| in_box(&res.points[i].exact, bx))
+        .collect();
+    let scaled = |e: &Equilibrium| [e.beta / bx.beta_max, e.yaw_rate / bx.yaw_rate_max];
+    let columns: Vec<Vec<[f64; 2]>> = eqs.iter().map(|c| c.iter().map(scaled).collect()).collect();
+    let (mut cut, mut joins, mut turning) = (Vec::new(), Vec::new(), Vec::new());
+    for f in folds_on_line(res, axis, line) {
+        let p = axis.get(&f.at);
+        let Some(i) = params
+            .windows(2)
+            .position(|w| w[0].min(w[1]) <= p && p <= w[0].max(w[1]))
+        else {
+            continue;
+        };
+        let meet = match f.kind {
+            BifurcationKind::Fold => 2,
+            BifurcationKind::Pitchfork => 3,
+            BifurcationKind::ZeroEigenvalue => {
+                turning.push(i);
+                continue;
+            }
+            BifurcationKind::Hopf => continue,
+        };
+        if meet == 3 {
+            turning.push(i);
+        }
+        let at = [f.beta / bx.beta_max, f.yaw_rate / bx.yaw_rate_max];
+        let (na, nb) = (
+            res.points[line[i]].exact.len(),
+            res.points[line[i + 1]].exact.len(),
+        );
+        let near = |c: usize| {
+            columns[c]
+                .iter()
+                .map(|&q| (q[0] - at[0]).hypot(q[1] - at[1]))
+                .fold(f64::INFINITY, f64::min)
+        };
+        let side = match na.cmp(&nb) {
+            std::cmp::Ordering::Greater => i,
+            std::cmp::Ordering::Less => i + 1,
+            std::cmp::Ordering::Equal if near(i) <= near(i + 1) => i,
+            std::cmp::Ordering::Equal => i + 1,
+        };
+        for end in branches::meeting(&columns, side, at, meet, FOLD_GAP) {
+            cut.push((i, end));
+            joins.push((end, f));
+        }
+    }
+    let saddle = |(c, k): At| eqs[c][k].stability.kind == Kind::Saddle;
+    let allowed = |i: usize, a: At, b: At| saddle(a) == saddle(b) || turning.contains(&i);
+    let links = branches::link(&columns, BRANCH_GAP, &cut, &allowed);
+    Drawn {
+        params,
+        eqs,
+        links,
+        joins,
+    }
+}
+
+/// The segments [`branch_diagram`] draws along `axis`, as rows of
+/// `branches_<axis>.csv` (SI: rad, rad/s, m/s): a link between
+/// equilibria of one branch at neighbouring grid values, or a branch end
+/// joined to the fold or pitchfork where it ends (`to_kind` names it).
+pub(super) fn branch_rows(res: &SweepResult, axis: Axis, bx: &SearchBox) -> Vec<Vec<String>> {
+    let d = drawn(res, axis, bx);
+    let point = |(c, k): At| {
+        let e = &d.eqs[c][k];
+        [d.params[c], e.beta, e.yaw_rate].map(|v| v.to_string())
+    };
+    let kind = |(c, k): At| d.eqs[c][k].stability.kind.name().to_string();
+    let links = d.links.iter().map(|&(a, b)| {
+        let mut row = point(a).to_vec();
+        row.push(kind(a));
+        row.extend(point(b));
+        row.push(kind(b));
+        row
+    });
+    let joins = d.joins.iter().map(|&(a, f)| {
+        let mut row = point(a).to_vec();
+        row.push(kind(a));
+        row.extend([axis.get(&f.at), f.beta, f.yaw_rate].map(|v| v.to_string()));
+        row.push(f.kind.name().to_string());
+        row
+    });
+    links.chain(joins).collect()
+}
 
 /// The other swept parameters' values along the line drawn (the grid's
 /// first), in display units, with how many each sweeps: a branch diagram
@@ -117,17 +232,9 @@ pub fn branch_diagram(
         y_label: "r_e [deg/s]".into(),
         ..Panel::default()
     };
-    let params: Vec<f64> = line
-        .iter()
-        .map(|&i| display(axis, axis.get(&res.points[i].condition)))
-        .collect();
-    let eqs: Vec<Vec<Equilibrium>> = line
-        .iter()
-        .map(|&i| in_box(&res.points[i].exact, bx))
-        .collect();
-    let scaled = |e: &Equilibrium| [e.beta / bx.beta_max, e.yaw_rate / bx.yaw_rate_max];
-    let columns: Vec<Vec<[f64; 2]>> = eqs.iter().map(|c| c.iter().map(scaled).collect()).collect();
-    let links = branches::link(&columns, BRANCH_GAP);
+    let d = drawn(res, axis, bx);
+    let params: Vec<f64> = d.params.iter().map(|&p| display(axis, p)).collect();
+    let eqs = &d.eqs;
     let class = |(c, k): At| eqs[c][k].stability.kind.class();
     let mut present = Vec::new();
     let mut segment = |class: Class, x: [f64; 2], b: [f64; 2], r: [f64; 2]| {
@@ -139,23 +246,16 @@ pub fn branch_diagram(
         let e = &eqs[c][k];
         (params[c], e.beta.to_degrees(), e.yaw_rate.to_degrees())
     };
-    for &(a, b) in &links {
+    for &(a, b) in &d.links {
         let ((xa, ba, ra), (xb, bb, rb)) = (state(a), state(b));
         segment(class(a).weaker(class(b)), [xa, xb], [ba, bb], [ra, rb]);
     }
     let folds = folds_on_line(res, axis, line);
-    for f in &folds {
+    for &(end, f) in &d.joins {
         let p = display(axis, axis.get(&f.at));
-        // The fold lies between the grid values around it.
-        let Some(i) = params.windows(2).position(|w| w[0] <= p && p <= w[1]) else {
-            continue;
-        };
-        let at = [f.beta / bx.beta_max, f.yaw_rate / bx.yaw_rate_max];
-        for end in branches::fold_ends(&columns, &links, i, at, FOLD_GAP) {
-            let (x, b, r) = state(end);
-            let (fb, fr) = (f.beta.to_degrees(), f.yaw_rate.to_degrees());
-            segment(class(end), [x, p], [b, fb], [r, fr]);
-        }
+        let (x, b, r) = state(end);
+        let (fb, fr) = (f.beta.to_degrees(), f.yaw_rate.to_degrees());
+        segment(class(end), [x, p], [b, fb], [r, fr]);
     }
     for cl in Class::ALL {
         let mut pts = Vec::new();

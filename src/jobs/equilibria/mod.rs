@@ -18,7 +18,7 @@ use crate::jobs::shard::{
 };
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
-use crate::vehicle::Kinematics;
+use crate::vehicle::{Kinematics, VehicleModel};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -313,7 +313,7 @@ impl EquilibriaReport {
                 b.criterion,
                 if b.verified { "verified" } else { "NOT verified" }
             ));
-            out.extend(critical_speed_line(b, s.critical_speed_closed_form));
+            out.extend(critical_speed_line(&self.sweep.model, b));
         }
         out.extend(
             self.leftovers
@@ -338,6 +338,20 @@ impl EquilibriaReport {
             for axis in sw.grid.varying() {
                 let file = dir.join(format!("branches_{}.png", axis.name()));
                 figures::branch_diagram(r, axis, &sw.search_box, &file)?;
+                let a = axis.name();
+                let header = [
+                    format!("from_{a}"),
+                    "from_beta".into(),
+                    "from_yaw_rate".into(),
+                    "from_kind".into(),
+                    format!("to_{a}"),
+                    "to_beta".into(),
+                    "to_yaw_rate".into(),
+                    "to_kind".into(),
+                ];
+                let header: Vec<&str> = header.iter().map(String::as_str).collect();
+                let rows = figures::branch_rows(r, axis, &sw.search_box);
+                write_csv(&dir.join(format!("branches_{a}.csv")), &header, rows)?;
             }
             let v = sw.grid.varying();
             if v.len() >= 2 {
@@ -428,25 +442,65 @@ fn linear_critical_speed(model: &crate::vehicle::VehicleModel) -> Option<f64> {
     }
 }
 
-/// The line under a zero-eigenvalue point along speed: the critical speed,
-/// in km/h too, and the closed form where it applies.
-fn critical_speed_line(b: &Bifurcation, closed_form: Option<f64>) -> Option<String> {
+/// The critical speed √(−l/K) of the linearised car at friction scale
+/// `friction` and speed `speed`, K from each axle's cornering stiffness at
+/// zero slip under its static load (a central difference of the tyre's own
+/// force, as the friction scales it on the simplified Magic Formula:
+/// K = B·C·D·μ per unit load there). None for a car that does not
+/// oversteer. On straight running (δ = 0, β = r = 0, no load moved) this is
+/// where det J of the equilibrium (0, 0) vanishes, whatever the tyres.
+fn zero_slip_critical_speed(model: &VehicleModel, friction: f64, speed: f64) -> Option<f64> {
+    let v = &model.vehicle;
+    let (front, rear) = v.static_axle_loads();
+    let h = 1e-6;
+    let axle = |tyre: &dyn crate::tyre::TyreModel, load: f64| {
+        let s = |alpha| crate::tyre::SlipState {
+            alpha,
+            kappa: 0.0,
+            fz: 0.5 * load,
+            camber: 0.0,
+            mu_scale: model.options.effects.friction_scale * friction,
+            speed,
+        };
+        2.0 * (tyre.lateral_force(&s(h)) - tyre.lateral_force(&s(-h))) / (2.0 * h)
+    };
+    let (cf, cr) = (axle(&model.front, front), axle(&model.rear, rear));
+    let k = v.mass / v.wheelbase() * (v.b / cf - v.a / cr);
+    (k < 0.0).then(|| (-v.wheelbase() / k).sqrt())
+}
+
+/// The line under a critical speed along speed — a zero-eigenvalue point,
+/// or a pitchfork on straight running (δ = 0, where the two equilibria
+/// beside (0, 0) merge with it) — in km/h too, against the closed form
+/// √(−l/K) from the tyres' cornering stiffness at zero slip.
+fn critical_speed_line(model: &VehicleModel, b: &Bifurcation) -> Option<String> {
     use crate::equilibria::bifurcation::{Axis, BifurcationKind};
-    if b.axis != Axis::Speed || b.kind != BifurcationKind::ZeroEigenvalue {
+    let straight = b.at.steer == 0.0 && b.beta.abs() < 1e-9 && b.yaw_rate.abs() < 1e-9;
+    let what = match b.kind {
+        BifurcationKind::ZeroEigenvalue => format!(
+            "an eigenvalue crosses zero, {} below, {} above",
+            b.kinds[0].name(),
+            b.kinds[1].name()
+        ),
+        BifurcationKind::Pitchfork if straight => {
+            "straight running changes stability there as the two equilibria beside it merge with it (a pitchfork)".to_string()
+        }
+        _ => return None,
+    };
+    if b.axis != Axis::Speed {
         return None;
     }
     let u = b.at.speed;
-    let against = closed_form.map_or_else(String::new, |c| {
+    let closed = zero_slip_critical_speed(model, b.at.friction, u);
+    let against = closed.map_or_else(String::new, |c| {
         format!(
-            "; closed form sqrt(-l/K) of these linear tyres {c:.4} m/s ({:+.2e} %)",
+            "; closed form sqrt(-l/K) from the tyres' cornering stiffness at zero slip {c:.4} m/s ({:+.2e} %)",
             100.0 * (u - c) / c
         )
     });
     Some(format!(
-        "    critical speed {u:.4} m/s ({:.2} km/h): an eigenvalue crosses zero, {} below, {} above{against}",
-        3.6 * u,
-        b.kinds[0].name(),
-        b.kinds[1].name()
+        "    critical speed {u:.4} m/s ({:.2} km/h): {what}{against}",
+        3.6 * u
     ))
 }
 

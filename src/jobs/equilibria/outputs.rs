@@ -16,7 +16,11 @@ pub(super) const OWN: OwnSet = OwnSet {
         "continua.csv",
         "stability_map.png",
     ],
-    families: &[("branches_", ".png"), ("phase_portrait_", ".png")],
+    families: &[
+        ("branches_", ".png"),
+        ("branches_", ".csv"),
+        ("phase_portrait_", ".png"),
+    ],
 };
 
 impl EquilibriaReport {
@@ -27,10 +31,10 @@ impl EquilibriaReport {
         let sw = &self.sweep;
         if sw.report.plots {
             let v = sw.grid.varying();
-            files.extend(
-                v.iter()
-                    .map(|axis| dir.join(format!("branches_{}.png", axis.name()))),
-            );
+            for axis in &v {
+                files.push(dir.join(format!("branches_{}.png", axis.name())));
+                files.push(dir.join(format!("branches_{}.csv", axis.name())));
+            }
             if v.len() >= 2 {
                 files.push(dir.join("stability_map.png"));
             }

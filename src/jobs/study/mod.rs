@@ -125,10 +125,14 @@ pub struct RbfAnswer {
     pub k_front: f64,
     /// Rear stiffness.
     pub k_rear: f64,
-    /// Er there, simulated, s.
-    pub er_resimulated: f64,
+    /// Er there, simulated, s; None where the re-simulated response has
+    /// no Er (it did not settle, or is no handling response).
+    pub er_resimulated: Option<f64>,
     /// Its error against the target, %.
-    pub error_percent: f64,
+    pub error_percent: Option<f64>,
+    /// The Er the network was trained on, smallest and largest, s: a
+    /// target outside it is answered by extrapolation.
+    pub trained_er: (f64, f64),
     /// Relative distance to the current tyres.
     pub distance_to_reference: f64,
 }
@@ -417,12 +421,13 @@ fn answer(
             });
         let rbf = net.filter(|_| t.metric == Metric::Er).map(|net| {
             let p = net.predict(t.value);
-            let e = st.er(p[0], p[1]);
+            let e = Some(st.er(p[0], p[1])).filter(|e| e.is_finite());
             RbfAnswer {
                 k_front: p[0] / k,
                 k_rear: p[1] / k,
                 er_resimulated: e,
-                error_percent: 100.0 * (e - t.value) / t.value,
+                error_percent: e.map(|e| 100.0 * (e - t.value) / t.value),
+                trained_er: net.trained_range(),
                 distance_to_reference: distance((p[0], p[1]), reference),
             }
         });
@@ -560,9 +565,22 @@ fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit) -> Vec<
         ),
     });
     if let Some(r) = &er.rbf {
+        let (lo, hi) = r.trained_er;
+        let outside = t.target < lo || t.target > hi;
+        let resimulated = match (r.er_resimulated, r.error_percent) {
+            (Some(e), Some(p)) => format!("Er {e:.6} re-simulated ({p:+.2} %)"),
+            _ => "no Er re-simulated (the response there does not settle to a steady state within the step)".to_string(),
+        };
         out.push(format!(
-            "    RBF answer: ({:.1}, {:.1}) {u}, Er {:.6} re-simulated ({:+.2} %), distance {:.3}",
-            r.k_front, r.k_rear, r.er_resimulated, r.error_percent, r.distance_to_reference
+            "    RBF answer: ({:.1}, {:.1}) {u}, {resimulated}, distance {:.3}{}",
+            r.k_front,
+            r.k_rear,
+            r.distance_to_reference,
+            if outside {
+                format!("; an extrapolation: Er {} lies outside the Er {lo:.5}–{hi:.5} s the network was trained on, where it has no data", t.target)
+            } else {
+                String::new()
+            }
         ));
     }
     out

@@ -461,6 +461,7 @@ mod trips_s93_diag;
 mod trips_s93_eq;
 mod trips_s93_lead;
 mod trips_s93_met;
+mod trips_s94_lead;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

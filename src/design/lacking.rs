@@ -21,7 +21,7 @@ use super::family::{
     family_and_left_out, Designed, Kind, Limits, DEFAULT_AX, DEFAULT_AY_SHARE, MIN_SPEED_CHANGE,
 };
 use super::separation::{separation, Logging};
-use super::Fitted;
+use super::{campaign_separation, Fitted, SetContext, Worth};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::Observed;
@@ -180,8 +180,12 @@ fn pair(
     runs: &[(Kind, f64)],
 ) -> Option<PairRun> {
     let base = fitted.base(c);
-    let a = fitted.candidate(&[reference])?.model(&base)?;
-    let b = fitted.candidate(&[other])?.model(&base)?;
+    let members = [
+        fitted.candidate(&[reference])?.clone(),
+        fitted.candidate(&[other])?.clone(),
+    ];
+    let a = members[0].model(&base)?;
+    let b = members[1].model(&base)?;
     let log = Logging::of(c);
     let floors = &fitted.noise_floors;
     let scored: Vec<(f64, &Designed, Observed, Observed)> = lacking
@@ -202,6 +206,18 @@ fn pair(
     let best = scored.iter().max_by(|x, y| x.0.total_cmp(&y.0));
     let largest = best.map_or(f64::NAN, |b| b.0);
     let best = best.filter(|b| b.0 > 1.0).map(|(sep, d, oa, ob)| {
+        let cx = SetContext {
+            c,
+            fitted,
+            base: &base,
+            members: &members,
+            models: vec![a.clone(), b.clone()],
+            labels: members.iter().map(|m| m.label()).collect(),
+            limits,
+            logging: &log,
+            runs: &Prepared::campaign_runs(c),
+        };
+        let (expected, uncertainty, campaign_separation, worth) = assess(&cx, d);
         let parts = channel_parts(oa, ob, floors, &log);
         let ch = Channel::ALL
             .into_iter()
@@ -218,6 +234,10 @@ fn pair(
             kind: kind_words(d.kind).to_string(),
             speed: designed_speed(d),
             campaign_speeds: speeds_of(runs, d.kind),
+            expected,
+            uncertainty,
+            campaign_separation,
+            worth,
         }
     });
     Some(PairRun {
@@ -227,6 +247,28 @@ fn pair(
         largest,
         replayed: scored.len(),
     })
+}
+
+/// The separation a driven run of `d` is expected to measure, its
+/// uncertainty, the campaign's own separation and the run's worth, by the
+/// rule `handling design` completes its best with, so the diagnosis never
+/// advises a run the design calls not worth driving.
+fn assess(cx: &SetContext, d: &Designed) -> (f64, f64, f64, Worth) {
+    let (campaign, calibration) = campaign_separation(cx);
+    match cx.score(d) {
+        Ok((mut s, _)) => {
+            cx.complete(&mut s, calibration.inflation, campaign);
+            let worth = s.worth.unwrap_or(Worth::WithinUncertainty);
+            let nan = f64::NAN;
+            (
+                s.expected.unwrap_or(nan),
+                s.uncertainty.unwrap_or(nan),
+                campaign,
+                worth,
+            )
+        }
+        Err(_) => (f64::NAN, f64::NAN, campaign, Worth::WithinUncertainty),
+    }
 }
 
 /// The separating runs of confounded set `effects` (the reference first)

@@ -186,7 +186,8 @@ pub(crate) fn start_terms(
     // ([`settled_start`]): its noise is the floor over √n.
     let n = settled_start(template).map_or(1, |(_, n)| n);
     let start_noise = 1.0 / (n as f64).sqrt();
-    let clean = Prepared::new(template, step, 1e6).observe(models[0]);
+    // At every sample: a run without a sideslip scores from later on.
+    let clean = Prepared::new(template, step, 1e6).observe_at(models[0], &template.t);
     let mut car = template.clone();
     car.yaw_rate = clean.yaw_rate.clone();
     if car.ay.is_some() {

@@ -181,7 +181,7 @@ fn on_a_car_that_behaves_as_the_reference_the_measured_separation_is_the_expecte
     let template = logging.run(&best.name, &best.manoeuvre);
     let reference = fitted.candidate(&[EffectKind::SensorDelay]).unwrap();
     let model = reference.model(&fitted.base(c)).unwrap();
-    let clean = Prepared::new(&template, c.settings.step, 1e6).observe(&model);
+    let clean = Prepared::new(&template, c.settings.step, 1e6).observe_at(&model, &template.t);
     let members = [vec![EffectKind::SensorDelay], vec![EffectKind::SteerPath]];
     let seeds = 24;
     let m: Vec<f64> = (0..seeds)

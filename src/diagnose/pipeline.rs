@@ -200,6 +200,7 @@ fn overlays(ctx: &Context, before: &[Observed], after: &[Observed]) -> Vec<Overl
             }
             Overlay {
                 run: r.name.clone(),
+                start: r.start_time(),
                 t: r.times.clone(),
                 measured: r.measured.clone(),
                 base: before[i].clone(),

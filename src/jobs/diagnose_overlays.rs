@@ -8,7 +8,8 @@
 //! ay starting at −0.4 m/s² where the measurement reads 0; a banked piece's
 //! "with bank_profile" line jumping from 0 to −3.3 m/s²), a transient of
 //! the replay that the scan leaves out, so the figure leaves it out too.
-//! The measured dots are drawn over the whole run.
+//! The measured dots are drawn over the whole run (over its scored samples
+//! where its opening stretch is not scored: a run without a sideslip).
 
 use crate::diagnose::effects::joined;
 use crate::diagnose::model::channels::Channel;
@@ -66,7 +67,7 @@ pub(super) fn overlay_panels(d: &Diagnosis) -> Vec<OverlayPanel> {
             panels.push(OverlayPanel {
                 run: run.clone(),
                 channel: *ch,
-                traces: overlay_traces(&o.t, m, observed_channel(&o.base, *ch), after),
+                traces: overlay_traces(o.start, &o.t, m, observed_channel(&o.base, *ch), after),
             });
         }
     }
@@ -79,14 +80,15 @@ pub(super) fn overlay_panels(d: &Diagnosis) -> Vec<OverlayPanel> {
 /// (drawn last, the dots hid the lines wherever they agree). The models
 /// are drawn from the scored span's start ([`scored_from`]) on.
 pub(super) fn overlay_traces(
+    start: f64,
     t: &[f64],
     measured: &[f64],
     base: &[f64],
     after: Option<(&str, &[f64])>,
 ) -> Vec<Trace> {
-    let from = t
-        .first()
-        .map_or(0, |&t0| t.partition_point(|&x| x < scored_from(t0)));
+    // From the replay's start: a run without a sideslip has its
+    // residuals (its `t`) start where the scored span does already.
+    let from = t.partition_point(|&x| x < scored_from(start));
     let trace = |label: &str, y: &[f64], from: usize, style, colour| Trace {
         label: label.into(),
         t: t[from.min(t.len())..].to_vec(),
@@ -165,7 +167,7 @@ mod tests {
         let t: Vec<f64> = (0..20).map(|i| 3.0 + 0.04 * i as f64).collect();
         let m = vec![0.0; 20];
         let base: Vec<f64> = t.iter().map(|x| -0.4 * (-(x - 3.0) / 0.05).exp()).collect();
-        let with = overlay_traces(&t, &m, &base, Some(("with x", &base)));
+        let with = overlay_traces(t[0], &t, &m, &base, Some(("with x", &base)));
         let drawn: Vec<(&str, Style)> = with.iter().map(|s| (s.label.as_str(), s.style)).collect();
         assert_eq!(
             drawn,
@@ -184,7 +186,7 @@ mod tests {
             assert!((s.t[0] - 3.52).abs() < 1e-12, "{}: {}", s.label, s.t[0]);
             assert!(s.y[0].abs() < 1e-4, "{}", s.y[0]);
         }
-        let without = overlay_traces(&t, &m, &base, None);
+        let without = overlay_traces(t[0], &t, &m, &base, None);
         assert_eq!(without.last().unwrap().style, Style::Dashed);
         assert_eq!(without.len(), 2);
     }

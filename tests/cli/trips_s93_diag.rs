@@ -7,7 +7,7 @@ use super::*;
 
 /// The handling programme's roll-steer campaign on linear tyre files,
 /// its candidates narrowed to roll_steer and its look-alike.
-fn linear_roll_steer(dir: &Path) -> PathBuf {
+pub(crate) fn linear_roll_steer(dir: &Path) -> PathBuf {
     let c = synth_campaign(dir, "c", &["--effects", "roll_steer", "--seed", "1"]);
     fs::remove_file(c.join("tyre_rig.csv")).unwrap();
     let v = c.join("vehicle.toml");

@@ -61,11 +61,20 @@ pub struct Prepared {
     pub(crate) measured: Vec<(Channel, Vec<f64>)>,
     /// Initial sideslip (measured, else 0) and yaw rate.
     pub(crate) start: (f64, f64),
+    /// The time they are read at, s (the first residual's where the
+    /// sideslip is measured).
+    start_time: f64,
     /// Relative tolerance of the replays' load-transfer loop
     /// ([`crate::vehicle::LOAD_TOLERANCE`]; a check of derivatives against
     /// differences sets it at rounding).
     pub(crate) load_tolerance: f64,
 }
+
+/// The opening stretch of a run without a sideslip channel that is not
+/// scored, s: its replay starts at a sideslip of 0 and settles within it
+/// (the gap scan's first half-second window
+/// leaves the same stretch out of every run).
+pub const UNMEASURED_START: f64 = 0.5;
 
 impl Prepared {
     /// Every run of campaign `c`, prepared with its `[diagnose]` step and
@@ -88,8 +97,19 @@ impl Prepared {
             masked[i] = true;
         }
         let first = (0..run.t.len()).find(|&i| !masked[i]).unwrap_or(0);
-        let mut idx = vec![first];
-        for (i, (&t, &m)) in run.t.iter().zip(&masked).enumerate().skip(first + 1) {
+        // Without a sideslip channel the replay starts at a sideslip of 0,
+        // which a piece that starts in a turn does not have: its first
+        // [`UNMEASURED_START`] s are the replay settling, not the model,
+        // and are not scored (as the gap scan leaves them out).
+        let scored_from = match run.beta {
+            Some(_) => f64::NEG_INFINITY,
+            None => run.t[first] + UNMEASURED_START,
+        };
+        let from = (first..run.t.len())
+            .find(|&i| !masked[i] && run.t[i] >= scored_from - 1e-9)
+            .unwrap_or(first);
+        let mut idx = vec![from];
+        for (i, (&t, &m)) in run.t.iter().zip(&masked).enumerate().skip(from + 1) {
             if !m && t - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
                 idx.push(i);
             }
@@ -124,6 +144,7 @@ impl Prepared {
                 run.beta.as_ref().map_or(0.0, |b| b[first]),
                 run.yaw_rate[first],
             ),
+            start_time: run.t[first],
             load_tolerance: crate::vehicle::LOAD_TOLERANCE,
         }
     }
@@ -187,6 +208,12 @@ impl Prepared {
         model.observe(&self.replay(model), &self.times)
     }
 
+    /// [`Prepared::observe`] at times `t` of the replay's span, scored or
+    /// not (a run's every sample: a designed run logged from a replay).
+    pub(crate) fn observe_at(&self, model: &Augmented, t: &[f64]) -> Observed {
+        model.observe(&self.replay(model), t)
+    }
+
     /// The replay's start (sideslip, yaw rate): the first measured state less
     /// the model's sensor offsets. A run without a sideslip channel starts
     /// at 0 whatever the sideslip offset: else the offset of a channel the
@@ -205,9 +232,16 @@ impl Prepared {
         )
     }
 
+    /// The time the replay starts at, s: the run's first unmasked sample
+    /// (its residuals start [`UNMEASURED_START`] later without a sideslip
+    /// channel).
+    pub(crate) fn start_time(&self) -> f64 {
+        self.start_time
+    }
+
     /// The forward speed at the replay's start, m/s.
     pub(crate) fn start_speed(&self) -> f64 {
-        crate::manoeuvre::interpolate(&self.inputs.t, &self.inputs.speed, self.times[0])
+        crate::manoeuvre::interpolate(&self.inputs.t, &self.inputs.speed, self.start_time)
     }
 
     /// The forward speed at times `t`, m/s (the logged speed interpolated).

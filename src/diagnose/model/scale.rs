@@ -256,15 +256,21 @@ pub fn channel_scale(
     }
 }
 
-/// Each channel's RMS signal over every sample of every run (0 where no
-/// run measures it).
+/// Each channel's RMS signal over every unmasked sample of every run (0
+/// where no run measures it).
 pub fn signal_rms(runs: &[MeasuredRun]) -> [f64; 3] {
     Channel::ALL.map(|ch| {
         let (mut s, mut n) = (0.0, 0usize);
         for r in runs {
             if let Some(v) = ch.of(r) {
-                s += v.iter().map(|x| x * x).sum::<f64>();
-                n += v.len();
+                // A masked sample (a logger's spike of 9999) is no signal:
+                // counted, it would set a scale that hides every gap.
+                let kept = v
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, _)| r.masked.binary_search(k).is_err());
+                s += kept.clone().map(|(_, x)| x * x).sum::<f64>();
+                n += kept.count();
             }
         }
         if n == 0 {

@@ -197,6 +197,9 @@ fn part(name: Part, idx: &[usize], e: &[f64], levels: &Levels) -> PartGap {
 /// regimes.
 #[derive(Debug, Clone, Copy)]
 pub struct Record<'a> {
+    /// When the replay starts, s (`t[0]`, or before it where the opening
+    /// stretch is not scored): the scan's windows start one window in.
+    pub start: f64,
     /// Sample times, s.
     pub t: &'a [f64],
     /// Steer, rad.
@@ -250,7 +253,8 @@ pub fn trusted_channel_gap(
     // scatter of, else the whole run (its second differences); a stated
     // floor is known better, and counted so, conservatively.
     let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
-    let window = scan::worst_window(t, &e, noise_floor, tau, floor_samples, resolved);
+    let from = scored_from(rec.start);
+    let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
     let bias = scan::bias_test(&e, noise_floor, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated);
     let found = Found {
@@ -384,6 +388,7 @@ pub fn run_gap(
     let ay_regime = pick(&regime_acceleration(run));
     let (steer, speed) = (pick(&run.steer), pick(&run.speed));
     let rec = Record {
+        start: t[0],
         t: &t,
         steer: &steer,
         ay: &ay_regime,

@@ -17,6 +17,7 @@ pub(crate) mod summary;
 pub(crate) mod trust;
 mod values;
 pub mod words;
+pub mod worth;
 
 pub use crate::diagnose::model::scale::ScaleSource;
 
@@ -327,6 +328,9 @@ impl Diagnosis {
 pub struct Overlay {
     /// Run name.
     pub run: String,
+    /// When its replay starts, s (before `t[0]` where the opening
+    /// stretch is not scored).
+    pub start: f64,
     /// Times, s.
     pub t: Vec<f64>,
     /// Measured channels.

@@ -365,6 +365,10 @@ pub enum GapFinding {
         noise_floor: f64,
         /// Runs in which its gap is significant.
         significant_runs: usize,
+        /// Those runs' names and their held-out RMS of the channel (its
+        /// unit): a gap in one run that no part over all runs isolates
+        /// is named by its run.
+        significant_in: Vec<(String, f64)>,
         /// Runs.
         runs: usize,
         /// Parts (windows, regimes) above three noise floors, with their RMS.

@@ -18,6 +18,7 @@
 
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::worth::Worth;
 use crate::diagnose::report::BaseReport;
 use crate::tyre::TyreModel;
 use serde::Serialize;
@@ -86,6 +87,17 @@ pub struct LackingRun {
     /// The speeds of the campaign's runs of that kind, m/s (empty: the
     /// campaign has none of that kind).
     pub campaign_speeds: Vec<f64>,
+    /// The separation a driven run of it is expected to measure, and its
+    /// uncertainty (1 σ), as `handling design` completes its best (NaN:
+    /// not computed).
+    pub expected: f64,
+    /// The uncertainty of `expected`.
+    pub uncertainty: f64,
+    /// D of the two candidates over the campaign's own runs.
+    pub campaign_separation: f64,
+    /// Whether a driven run is worth it, by `handling design`'s rule
+    /// ([`crate::diagnose::report::worth::worth`]).
+    pub worth: Worth,
 }
 
 /// What separates the reference from one look-alike.
@@ -137,15 +149,18 @@ fn pair_words(p: &PairRun) -> String {
     let has = if r.campaign_speeds.is_empty() {
         format!("the campaign has no {}", r.kind)
     } else {
+        // Mean speeds on both sides, the rule's: a braking run named by
+        // its entry speed (`brake_in_turn_043kph`) averages less.
         format!(
-            "the campaign's {} are at {}",
+            "its mean speed {}, the campaign's {} at mean speeds of {}",
+            kmh(&[r.speed]),
             r.kind,
             kmh(&r.campaign_speeds)
         )
     };
     let unit = r.channel.unit();
-    format!(
-        "{a} from {b}: {} ({}; {has}): their predicted responses differ by D = {:.1} noise floors, most in {} (D = {:.1} of it; up to {} {unit} apart, its noise floor {} {unit})",
+    let run = format!(
+        "{} ({}; {has}): their predicted responses differ by D = {:.1} noise floors, most in {} (D = {:.1} of it; up to {} {unit} apart, its noise floor {} {unit})",
         r.description,
         r.name,
         r.separation,
@@ -153,7 +168,29 @@ fn pair_words(p: &PairRun) -> String {
         r.channel_separation,
         crate::format::readable(r.peak_difference, 3),
         crate::format::readable(r.noise_floor, 3),
-    )
+    );
+    let measured = format!(
+        "a driven run is expected to measure {:.1} ± {:.1}",
+        r.expected, r.uncertainty
+    );
+    match r.worth {
+        Worth::Separates | Worth::AlreadyToldApart => format!("{a} from {b}: {run}; {measured}"),
+        Worth::WithinUncertainty => format!(
+            "{a} from {b}: none of the {} is worth driving to separate them; the best, {run}, but {measured}: within its own uncertainty, one run may show no separation or favour the wrong candidate",
+            p.replayed
+        ),
+        Worth::BelowCampaign => format!(
+            "{a} from {b}: none of the {} is worth driving to separate them; the best, {run}, but {measured}, less than the campaign's own runs separate them by (D = {:.1})",
+            p.replayed, r.campaign_separation
+        ),
+    }
+}
+
+/// Whether pair `p` has a manoeuvre worth driving.
+fn has_run(p: &PairRun) -> bool {
+    p.best
+        .as_ref()
+        .is_some_and(|r| matches!(r.worth, Worth::Separates | Worth::AlreadyToldApart))
 }
 
 impl SeparatingRuns {
@@ -161,7 +198,7 @@ impl SeparatingRuns {
     /// pair's run.
     pub fn words(&self) -> String {
         let pairs: Vec<String> = self.pairs.iter().map(pair_words).collect();
-        let remedy = if self.pairs.iter().any(|p| p.best.is_none()) {
+        let remedy = if !self.pairs.iter().all(has_run) {
             match self.no_limit {
                 NoLimit::LinearTyres => "; tyres with a friction limit (rig data) give the base the saturation a test at the limit needs",
                 NoLimit::FrictionHeld => "; runs nearer the limit let the diagnosis identify the peak friction a test at the limit needs",
@@ -174,5 +211,72 @@ impl SeparatingRuns {
             self.no_limit.words(),
             pairs.join("; ")
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pair(worth: Worth) -> PairRun {
+        PairRun {
+            reference: EffectKind::RollSteer,
+            other: EffectKind::CorneringStiffness,
+            best: Some(LackingRun {
+                name: "brake_in_turn_043kph_2.9ms2".into(),
+                description: "a steady turn at 43 km/h, braking".into(),
+                separation: 39.4,
+                channel: Channel::YawRate,
+                channel_separation: 33.0,
+                peak_difference: 0.0103,
+                noise_floor: 0.003,
+                kind: "runs braking in a turn".into(),
+                speed: 9.6,
+                campaign_speeds: vec![11.49, 13.07],
+                expected: 39.4,
+                uncertainty: 10.5,
+                campaign_separation: 63.0,
+                worth,
+            }),
+            largest: 39.4,
+            replayed: 12,
+        }
+    }
+
+    /// The advice follows the design's worth: a run worth driving is
+    /// advised with what a driven run is expected to measure; one within
+    /// its uncertainty or below the campaign's own separation is named
+    /// as the best but not worth driving, with the reason; the speeds
+    /// compared are means on both sides.
+    #[test]
+    fn the_advice_words_follow_the_runs_worth() {
+        let said = pair_words(&pair(Worth::Separates));
+        assert!(
+            said.ends_with("; a driven run is expected to measure 39.4 ± 10.5"),
+            "{said}"
+        );
+        assert!(!said.contains("none of"), "{said}");
+        assert!(
+            said.contains("its mean speed 35 km/h, the campaign's runs braking in a turn at mean speeds of 41, 47 km/h"),
+            "{said}"
+        );
+        let within = pair_words(&pair(Worth::WithinUncertainty));
+        assert!(
+            within.starts_with("roll_steer from cornering_stiffness: none of the 12 is worth driving to separate them; the best, "),
+            "{within}"
+        );
+        assert!(within.ends_with("within its own uncertainty, one run may show no separation or favour the wrong candidate"), "{within}");
+        let below = pair_words(&pair(Worth::BelowCampaign));
+        assert!(
+            below.ends_with("less than the campaign's own runs separate them by (D = 63.0)"),
+            "{below}"
+        );
+        let runs = |w| SeparatingRuns {
+            no_limit: NoLimit::LinearTyres,
+            pairs: vec![pair(w)],
+        };
+        let remedy = "tyres with a friction limit (rig data)";
+        assert!(!runs(Worth::Separates).words().contains(remedy));
+        assert!(runs(Worth::BelowCampaign).words().contains(remedy));
     }
 }

@@ -157,6 +157,7 @@ pub(crate) fn parts_table(
         let speed = at(&run.speed);
         let ay = at(&regime_acceleration(run));
         let rec = Record {
+            start: p.start_time(),
             t: &p.times,
             steer: &steer,
             ay: &ay,
@@ -220,14 +221,22 @@ pub(crate) fn gap_summary(
             .filter(|p| !above_noise(p.before, nf))
             .map(|p| p.part)
             .collect();
+        let significant_in: Vec<(String, f64)> = runs
+            .iter()
+            .filter_map(|r| {
+                let c = r
+                    .channels
+                    .iter()
+                    .find(|c| c.channel == ch && c.significant)?;
+                Some((r.run.clone(), c.rms))
+            })
+            .collect();
         out.push(GapFinding::Channel {
             channel: ch,
             rms: all.before,
             noise_floor: nf,
-            significant_runs: runs
-                .iter()
-                .filter(|r| r.channels.iter().any(|c| c.channel == ch && c.significant))
-                .count(),
+            significant_runs: significant_in.len(),
+            significant_in,
             runs: runs.len(),
             wrong,
             right,

@@ -97,10 +97,27 @@ impl SwarmReport {
                 3,
                 6,
             );
-            out.push(if differ {
-                format!("  writing the direct fit (σ over all points {d} % ≤ two-stage {c} %)")
+            let against = if differ {
+                format!("{d} % ≤ two-stage {c} %")
             } else {
-                format!("  writing the direct fit (σ over all points {d} %, the two-stage result's {c} % to the printed precision, not lower beyond it)")
+                format!("{d} %, the two-stage result's {c} % to the printed precision, not lower beyond it")
+            };
+            // The file holds the fit with what the data do not determine
+            // held, whose σ is not the free fit's the choice compared.
+            let held: Vec<String> = self
+                .held_in(Block::First)
+                .into_iter()
+                .filter(|h| h.reason != HeldFor::Given)
+                .map(|h| h.name)
+                .collect();
+            out.push(if held.is_empty() || self.fit.sigma_percent == t.direct_sigma_percent {
+                format!("  writing the direct fit (σ over all points {against})")
+            } else {
+                format!(
+                    "  writing the direct fit with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
+                    held.join(", "),
+                    self.fit.sigma_percent
+                )
             });
         }
         if let (Some(Written::CurvatureHeld), Some(h)) = (self.written, &self.curvature_held) {

@@ -176,10 +176,12 @@ pub(super) fn noise_time(t: &[f64], e: &[f64]) -> f64 {
 /// most noise floors above its threshold, the noise's autocorrelation time
 /// `tau` samples and the floor estimated from `floor_samples` samples (its
 /// effective count `floor_samples/tau`); `resolved` false (noise-free data: a zero floor) makes
-/// no window significant. The first window starts [`WINDOW`] into the run.
+/// no window significant. The first window starts at `from` ([`scored_from`]
+/// of the replay's start: one [`WINDOW`] into it).
 /// None on a run shorter than two windows.
 pub(super) fn worst_window(
     t: &[f64],
+    from: f64,
     e: &[f64],
     floor: f64,
     tau: f64,
@@ -188,13 +190,14 @@ pub(super) fn worst_window(
 ) -> Option<WindowGap> {
     let tau = tau.max(1.0);
     let k2 = (floor_samples as f64 / tau).max(1.0);
-    let (t0, t1) = (t[0], t[t.len() - 1]);
-    // From one window in: a replay's first half second follows from the
-    // initial state it estimates from noisy samples, a transient of the
-    // replay, not of the model (a clean sedan replay's ay read "a gap in
-    // one stretch: 1.5 noise floors from t = 0.00 s").
-    let starts: Vec<f64> = (FIRST_HALF_WINDOW..)
-        .map(|j| t0 + 0.5 * WINDOW * j as f64)
+    let t1 = t[t.len() - 1];
+    // From `from`, one window into the replay ([`scored_from`]): a
+    // replay's first half second follows from the initial state it
+    // estimates from noisy samples, a transient of the replay, not of the
+    // model (a clean sedan replay's ay read "a gap in one stretch: 1.5
+    // noise floors from t = 0.00 s").
+    let starts: Vec<f64> = (0..)
+        .map(|j| from + 0.5 * WINDOW * j as f64)
         .take_while(|s| s + WINDOW <= t1 + 1e-9)
         .collect();
     let m = starts.len();
@@ -337,7 +340,7 @@ mod tests {
             let pre = &e[..100];
             let floor = (pre.iter().map(|x| x * x).sum::<f64>() / 100.0).sqrt();
             let tau = noise_time(&t, &e);
-            let w = worst_window(&t, &e, floor, tau, 100, true).unwrap();
+            let w = worst_window(&t, scored_from(t[0]), &e, floor, tau, 100, true).unwrap();
             alarms += usize::from(w.significant);
         }
         assert!(alarms <= 10, "{alarms} of 400");
@@ -366,10 +369,10 @@ mod tests {
         // The stretch, looked for after the transient, the floor from a
         // hundred samples (a second before the input).
         let (t1, e1) = (&t[100..], &e[100..]);
-        let w = worst_window(t1, e1, 1.0, tau, 100, true).unwrap();
+        let w = worst_window(t1, scored_from(t1[0]), e1, 1.0, tau, 100, true).unwrap();
         assert!(w.significant && (2.75..=3.25).contains(&w.start), "{w:?}");
         let whole = correlation_time(&e);
-        let hidden = worst_window(t1, e1, 1.0, whole, 100, true).unwrap();
+        let hidden = worst_window(t1, scored_from(t1[0]), e1, 1.0, whole, 100, true).unwrap();
         assert!(!hidden.significant, "τ {whole}: {hidden:?}");
     }
 

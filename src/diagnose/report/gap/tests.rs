@@ -63,6 +63,7 @@ impl Step {
     }
     fn record(&self) -> Record<'_> {
         Record {
+            start: self.t[0],
             t: &self.t,
             steer: &self.steer,
             ay: &self.ay,
@@ -187,6 +188,7 @@ fn a_run_with_no_steady_start_is_not_split_by_time_after_an_input() {
     let (measured, simulated) = (s.response(0.2), s.response(0.5));
     let from = |k: usize| {
         let rec = Record {
+            start: s.t[k],
             t: &s.t[k..],
             steer: &s.steer[k..],
             ay: &s.ay[k..],

@@ -12,6 +12,7 @@ fn a_channel_within_noise_alone_under_a_significant_combined_gap_is_not_said_to_
         rms: 0.0046,
         noise_floor: 0.002,
         significant_runs: 0,
+        significant_in: Vec::new(),
         runs: 8,
         wrong: vec![],
         right: vec![Part::All],
@@ -47,5 +48,37 @@ fn a_band_off_in_several_runs_is_said_once_with_its_runs_counted() {
             "yaw-rate response 0.30–0.60 Hz off in 3 of 29 runs: -0.2 to +1.6 dB, +19 to +31° (simulated against measured: + the model leads; each run's in diagnosis.json)",
             "a.csv: yaw-rate response 0.60–1.20 Hz off by +0.9 dB, +56° (simulated against measured: + the model leads)",
         ]
+    );
+}
+
+/// Up to three significant runs are named, with their RMS in noise
+/// floors: a gap one run shows is not lost where no part over all runs
+/// isolates it (round 24: "significant in 1 of 4 runs; wrong in:
+/// nowhere", the run never named).
+#[test]
+fn a_gap_in_a_few_runs_names_them() {
+    let finding = |n: usize| GapFinding::Channel {
+        channel: crate::diagnose::model::channels::Channel::Beta,
+        rms: 0.0040,
+        noise_floor: 0.002,
+        significant_runs: n,
+        significant_in: (0..n).map(|k| (format!("run{k}.csv"), 0.0065)).collect(),
+        runs: 8,
+        wrong: vec![],
+        right: vec![Part::All],
+        offset: None,
+        combined_significant: false,
+    };
+    let one = gap::channel(&finding(1));
+    assert!(
+        one.contains("significant in 1 of 8 runs (run0.csv: 0.0065 rad, 3.2 noise floors); wrong in: no part over all runs"),
+        "{one}"
+    );
+    let three = gap::channel(&finding(3));
+    assert!(three.contains("(run0.csv: 0.0065 rad, 3.2 noise floors; run1.csv: 0.0065 rad, 3.2 noise floors; run2.csv: 0.0065 rad, 3.2 noise floors)"), "{three}");
+    let four = gap::channel(&finding(4));
+    assert!(
+        four.contains("significant in 4 of 8 runs; wrong in"),
+        "{four}"
     );
 }

@@ -23,6 +23,7 @@ pub(super) fn channel(f: &GapFinding) -> String {
         rms,
         noise_floor,
         significant_runs,
+        significant_in,
         runs,
         wrong,
         right,
@@ -43,8 +44,22 @@ pub(super) fn channel(f: &GapFinding) -> String {
                     100.0 * o.share
                 )
             });
+    // A few runs are named: a gap in one run that no part over all runs
+    // isolates ("wrong in: nowhere") is otherwise lost.
+    let which = if (1..=3).contains(significant_runs) && significant_in.len() == *significant_runs {
+        let named: Vec<String> = significant_in
+            .iter()
+            .map(|(run, rms)| {
+                let floors = crate::format::fixed(rms / noise_floor, 1);
+                format!("{run}: {rms:.4} {}, {floors} noise floors", channel.unit())
+            })
+            .collect();
+        format!(" ({})", named.join("; "))
+    } else {
+        String::new()
+    };
     let head = format!(
-                "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs",
+                "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs{which}",
                 channel.name(),
                 channel.unit(),
             );
@@ -56,9 +71,13 @@ pub(super) fn channel(f: &GapFinding) -> String {
         )
     };
     let place = if above_noise(*rms, *noise_floor) || *significant_runs > 0 {
+        let wrong = if wrong.is_empty() && *significant_runs > 0 {
+            "no part over all runs".to_string()
+        } else {
+            parts(wrong)
+        };
         format!(
-            "{head}; wrong in: {}; right in: {}",
-            parts(wrong),
+            "{head}; wrong in: {wrong}; right in: {}",
             listed(right.iter().map(|p| p.label()).collect()),
         )
     } else if *combined_significant {

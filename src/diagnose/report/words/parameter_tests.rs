@@ -201,6 +201,7 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
         rms: 0.0046,
         noise_floor: 0.0019,
         significant_runs: 0,
+        significant_in: Vec::new(),
         runs: 8,
         wrong: vec![],
         right: vec![Part::All],

@@ -4,12 +4,10 @@
 use super::*;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::{Bound, EffectKind};
-use crate::diagnose::report::outcome::Evidence;
-use crate::diagnose::report::outcome::VerdictWarning;
-use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
-use crate::diagnose::report::ParameterValue;
-use crate::diagnose::report::Part;
-use crate::diagnose::report::Unseen;
+use crate::diagnose::report::outcome::{
+    Evidence, Explained, NoSignificantGap, OutsideLibrary, VerdictWarning,
+};
+use crate::diagnose::report::{ParameterValue, Part, Unseen};
 
 pub(super) fn explained(reduction_percent: f64) -> Verdict {
     Verdict::Explained(Explained {
@@ -497,6 +495,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         rms,
         noise_floor: 0.002,
         significant_runs,
+        significant_in: Vec::new(),
         runs: 8,
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],

@@ -90,14 +90,18 @@ pub fn treat_held(run: &mut MeasuredRun, report: &mut CleaningReport) {
             continue;
         };
         let samples = interpolate(&t, x, &starts);
-        let span = t[starts[starts.len() - 1]] - t[starts[0]];
         report.samples_interpolated += samples;
+        let log_rate = 1.0 / super::median_interval(&t);
         report.held.push(HeldChannel {
             run: name.clone(),
             channel: ch,
             every,
-            update_rate: (starts.len() - 1) as f64 / span,
-            log_rate: 1.0 / super::median_interval(&t),
+            // The logger's rate, from its median hold: counting the changes
+            // misses the updates that repeat a quantised value (a steer
+            // held on a straight), and read a 20 Hz steer as 15.1 Hz beside
+            // "every 5 samples of the 100 Hz log".
+            update_rate: log_rate / every as f64,
+            log_rate,
             samples,
         });
     }
@@ -107,6 +111,43 @@ pub fn treat_held(run: &mut MeasuredRun, report: &mut CleaningReport) {
 mod tests {
     use super::super::test_signals::gauss_noise;
     use super::*;
+
+    /// A steer held at 20 Hz in a 100 Hz log whose quantised value repeats
+    /// across updates on a straight: its rate is the logger's, 20 Hz, as
+    /// "every 5 samples" says, not the rate of its changes.
+    #[test]
+    fn a_held_channel_is_reported_at_its_updates_rate_not_its_changes() {
+        let n = 3000;
+        let t: Vec<f64> = (0..n).map(|i| i as f64 * 0.01).collect();
+        let update = |i: usize| {
+            let s = t[i - i % 5];
+            // A straight for the first 10 s: the quantised value repeats.
+            let v = if s < 10.0 {
+                0.0
+            } else {
+                0.05 * (0.7 * s).sin()
+            };
+            (v / 2e-4).round() * 2e-4
+        };
+        let mut run = crate::measured::MeasuredRun {
+            path: "r.csv".into(),
+            t: t.clone(),
+            speed: vec![15.0; n],
+            steer: (0..n).map(update).collect(),
+            yaw_rate: vec![0.0; n],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let mut report = CleaningReport::default();
+        treat_held(&mut run, &mut report);
+        let h = &report.held[0];
+        assert_eq!(h.every, 5);
+        assert!((h.update_rate - 20.0).abs() < 1e-9, "{}", h.update_rate);
+    }
 
     #[test]
     fn a_channel_held_at_a_tenth_of_the_rate_is_interpolated_between_updates() {

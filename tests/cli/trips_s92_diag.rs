@@ -51,9 +51,17 @@ fn a_tie_with_an_idle_parameter_goes_to_the_simpler_set_from_the_greedy_search_t
         said.contains("verdict: sensor_delay+yaw_inertia explains the gap: held-out error 5.286 → 1.080 (noise level 0.941), 89.8 % of the gap above noise removed; but steer_path in place of sensor_delay (steer_path is the single the set was grown from, and sensor_delay took its place by the parsimony rule below): steer_path+yaw_inertia removes 90.5 % (gap above noise 0.496), against sensor_delay+yaw_inertia's 89.8 % (0.531): within the set's confounding window"),
         "{said}"
     );
+    // The idle lag's value lies in a flat valley (6.4e-5 ± 0.062 s before
+    // the four-wheel PAC89 evaluation of session 94, 1.9e-5 s on its
+    // physical limit after it, the forces equal to a few ulp): its words,
+    // not its digits.
+    let line = said
+        .lines()
+        .find(|l| l.starts_with("  chosen for parsimony over a look-alike that removes more: steer_path+yaw_inertia removes 90.5 % (held-out error 1.063) with 3 parameters, but leaves steer_path.lag = "))
+        .unwrap_or_else(|| panic!("{said}"));
     assert!(
-        said.contains("  chosen for parsimony over a look-alike that removes more: steer_path+yaw_inertia removes 90.5 % (held-out error 1.063) with 3 parameters, but leaves steer_path.lag = 6.423e-5 ± 0.0622 s idle (off, or not told from off); sensor_delay+yaw_inertia removes 89.8 % with 2 parameters"),
-        "{said}"
+        line.contains(" idle (off, or not told from off); sensor_delay+yaw_inertia removes 89.8 % with 2 parameters"),
+        "{line}"
     );
     assert!(
         said.contains("\nconfounded: sensor_delay, steer_path — "),

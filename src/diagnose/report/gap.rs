@@ -30,6 +30,7 @@
 //! Units: SI, rad; times in s.
 
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::replay::UNMEASURED_START;
 use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{
     regime_samples, scatter_by, timed_from_an_input, window_samples, Levels, Part, Scatter,
@@ -364,13 +365,34 @@ pub fn regime_acceleration(run: &crate::measured::MeasuredRun) -> Vec<f64> {
 }
 
 /// The samples of a run that are scored: all but the masked ones (logger
-/// glitches in a response channel).
+/// glitches in a response channel), and without a sideslip channel not
+/// those of the replay's first [`UNMEASURED_START`] s, as the diagnosis's
+/// residuals leave them out (`Prepared::new`).
 pub fn scored_samples(run: &crate::measured::MeasuredRun) -> Vec<usize> {
     let mut keep = vec![true; run.t.len()];
     for &i in &run.masked {
         keep[i] = false;
     }
-    (0..run.t.len()).filter(|&i| keep[i]).collect()
+    let from = match run.beta {
+        Some(_) => f64::NEG_INFINITY,
+        None => replay_start(run) + UNMEASURED_START - 1e-9,
+    };
+    let scored: Vec<usize> = (0..run.t.len())
+        .filter(|&i| keep[i] && run.t[i] >= from)
+        .collect();
+    if scored.is_empty() {
+        (0..run.t.len()).filter(|&i| keep[i]).collect()
+    } else {
+        scored
+    }
+}
+
+/// When a run's replay starts, s: its first unmasked sample.
+fn replay_start(run: &crate::measured::MeasuredRun) -> f64 {
+    let first = (0..run.t.len())
+        .find(|i| run.masked.binary_search(i).is_err())
+        .unwrap_or(0);
+    run.t.get(first).copied().unwrap_or(0.0)
 }
 
 /// The gap of every measured channel of a replayed run, on its unmasked
@@ -388,7 +410,7 @@ pub fn run_gap(
     let ay_regime = pick(&regime_acceleration(run));
     let (steer, speed) = (pick(&run.steer), pick(&run.speed));
     let rec = Record {
-        start: t[0],
+        start: replay_start(run),
         t: &t,
         steer: &steer,
         ay: &ay_regime,

@@ -10,8 +10,11 @@
 //! campaign already has. Instead the fitted candidates are replayed on the
 //! manoeuvres of the design's family the campaign has not driven
 //! (`crate::design`, filled in by the `diagnose` job), and the one whose
-//! predicted responses differ most is advised, with the channel where they
-//! differ most.
+//! predicted responses differ most is named, with the channel where they
+//! differ most. It is advised only where `handling design` would
+//! recommend it ([`super::worth::worth`]: the separation a driven run is
+//! expected to measure lies beyond its uncertainty and is at least the
+//! campaign's own); else the words say why it is not worth driving.
 //!
 //! Units: separations D in noise floors (`crate::design::separation`);
 //! speeds m/s; a channel's difference in its own unit (rad/s, m/s², rad).

@@ -420,18 +420,7 @@ impl<'a> Reduced<'a> {
                 continue;
             }
             let s = q.signum();
-            let (mut lo, mut hi) = (a[i - 1], a[i + 1]);
-            let g = 0.5 * (5f64.sqrt() - 1.0);
-            for _ in 0..80 {
-                let m1 = hi - g * (hi - lo);
-                let m2 = lo + g * (hi - lo);
-                if s * f(m1) < s * f(m2) {
-                    hi = m2;
-                } else {
-                    lo = m1;
-                }
-            }
-            let xm = 0.5 * (lo + hi);
+            let xm = least(f, s, a[i - 1], a[i + 1]);
             let hm = f(xm);
             let scale = self.model.vehicle.mass * crate::constants::G;
             if s * hm < 0.0 {
@@ -454,7 +443,6 @@ impl<'a> Reduced<'a> {
     /// them the count changes a scan cell away from the event, not at it.
     fn roots_beside_zero_samples(&self, a: &[f64], h: &[f64], flat: &[bool], roots: &mut Vec<f64>) {
         let f = |x: f64| self.at(x).h;
-        let g = 0.5 * (5f64.sqrt() - 1.0);
         for i in 0..CELLS {
             if flat[i] || flat[i + 1] || (h[i] == 0.0) == (h[i + 1] == 0.0) {
                 continue;
@@ -463,17 +451,7 @@ impl<'a> Reduced<'a> {
             // The extremum of h of the sign opposite to the non-zero end's:
             // a root lies between it and that end when h gets there.
             let s = h[other].signum();
-            let (mut lo, mut hi) = (a[i], a[i + 1]);
-            for _ in 0..80 {
-                let m1 = hi - g * (hi - lo);
-                let m2 = lo + g * (hi - lo);
-                if s * f(m1) < s * f(m2) {
-                    hi = m2;
-                } else {
-                    lo = m1;
-                }
-            }
-            let xm = 0.5 * (lo + hi);
+            let xm = least(f, s, a[i], a[i + 1]);
             // An extremum within rounding of the zero sample is that
             // sample's own root.
             if s * f(xm) < 0.0 && (xm - a[zero]).abs() > 1e-12 {
@@ -481,6 +459,22 @@ impl<'a> Reduced<'a> {
             }
         }
     }
+}
+
+/// Where `s·f` is least on `[lo, hi]`: 80 steps of a golden-section
+/// search (the interval shrinks to rounding), the last bracket's middle.
+fn least(f: impl Fn(f64) -> f64, s: f64, mut lo: f64, mut hi: f64) -> f64 {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..80 {
+        let m1 = hi - g * (hi - lo);
+        let m2 = lo + g * (hi - lo);
+        if s * f(m1) < s * f(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// A continuum of equilibria: an interval of rear slip angle over which the

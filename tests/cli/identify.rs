@@ -1,5 +1,6 @@
 //! Tyre identification from rig files.
 
+use super::trips_s69_identify::{at_pressure, hoosier};
 use super::*;
 
 fn rig_csv(rows: &[(f64, f64, f64)]) -> String {
@@ -491,28 +492,14 @@ fn the_curve_lines_name_a_pressure_level_as_the_level_line_does() {
 /// lies there by more than twice its standard error.
 #[test]
 fn a_parameter_with_a_standard_error_above_its_value_is_not_identified_past_its_box_or_not() {
-    let Some(data) = shared_data(
+    let Some(data) = hoosier(
         "a_parameter_with_a_standard_error_above_its_value_is_not_identified_past_its_box_or_not",
-        "tyre_ttc_hoosier_43075/cornering.csv",
     ) else {
         return;
     };
     let out = tempfile::tempdir().unwrap();
     let tyre = out.path().join("uni.toml");
-    let o = run(&[
-        "identify",
-        data.to_str().unwrap(),
-        "--model",
-        "unitire",
-        "--pressure",
-        "83400",
-        "--camber",
-        "0",
-        "--out",
-        tyre.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
+    let stdout = at_pressure(&data, "unitire", &tyre, &["--camber", "0"]);
     let report = read_json(&tyre.with_extension("report.json"));
     let (mut undetermined_past_box, mut past_box) = (0, 0);
     for fit in [&report, &report["aligning"]] {

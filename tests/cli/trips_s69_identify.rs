@@ -11,25 +11,30 @@
 use super::*;
 
 /// The Hoosier file, or `None` (skipped) where the shared data are absent.
-fn hoosier(test: &str) -> Option<PathBuf> {
+pub(crate) fn hoosier(test: &str) -> Option<PathBuf> {
     shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv")
 }
 
 /// `identify rig --model model` at the Hoosier file's 83.4 kPa and 0°
 /// level, written to `out`: the terminal.
 fn one_level(rig: &Path, model: &str, out: &Path) -> String {
-    let o = run(&[
+    at_pressure(rig, model, out, &["--camber", "0"])
+}
+
+/// `identify rig --model model --pressure 83400` with `extra` arguments,
+/// written to `out`: the terminal.
+pub(crate) fn at_pressure(rig: &Path, model: &str, out: &Path, extra: &[&str]) -> String {
+    let mut args = vec![
         "identify",
         rig.to_str().unwrap(),
         "--model",
         model,
         "--pressure",
         "83400",
-        "--camber",
-        "0",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    ];
+    args.extend_from_slice(extra);
+    args.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    let o = run(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     String::from_utf8_lossy(&o.stdout).into_owned()
 }

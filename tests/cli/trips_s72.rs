@@ -1,6 +1,7 @@
 //! What a fresh-eyes check of `identify`, `simulate` and `diagnose` found
 //! (stop 72), run as a user runs the tool.
 
+use super::trips_s69_identify::{at_pressure, hoosier};
 use super::*;
 
 /// `synth --seed -3` was clap's "unexpected argument '-3' found" and
@@ -87,28 +88,13 @@ fn the_at_the_limit_warning_names_the_last_rows_ay_not_a_second_steady_ay() {
 /// the terminal state is the file's value.
 #[test]
 fn a_pac89_two_stage_result_writes_the_values_its_held_lines_state() {
-    let Some(rig) = shared_data(
-        "a_pac89_two_stage_result_writes_the_values_its_held_lines_state",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
-        return;
-    };
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("pac.toml");
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--pressure",
-        "83400",
-        "--camber",
-        "0",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let Some(rig) = hoosier("a_pac89_two_stage_result_writes_the_values_its_held_lines_state")
+    else {
+        return;
+    };
+    let text = at_pressure(&rig, "pac89", &out, &["--camber", "0"]);
     let report = read_json(&dir.path().join("pac.report.json"));
     assert_eq!(report["written"], "two-stage", "{text}");
     let file: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();

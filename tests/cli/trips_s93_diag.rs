@@ -24,6 +24,23 @@ pub(crate) fn linear_roll_steer(dir: &Path) -> PathBuf {
     c
 }
 
+/// `design`'s first set for the pair roll_steer / cornering_stiffness on
+/// the diagnosis in `diagnosis`, its 30 best manoeuvres, written to `to`.
+pub(crate) fn roll_steer_design(diagnosis: &Path, to: &Path) -> serde_json::Value {
+    let o = run(&[
+        "design",
+        diagnosis.to_str().unwrap(),
+        "--effects",
+        "roll_steer,cornering_stiffness",
+        "--top",
+        "30",
+        "--out",
+        to.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    read_json(&to.join("design.json"))["sets"][0].clone()
+}
+
 /// Before: "confounded: roll_steer, cornering_stiffness — separate them
 /// with roll_steer: … a ramp steer to the limit; cornering_stiffness: …
 /// steps at two speeds", on linear tyres and a campaign with steps at five
@@ -68,19 +85,8 @@ fn a_confounded_roll_steer_on_linear_tyres_is_advised_a_run_the_campaign_lacks()
     );
     // `design` replays the pair on its family: the advised run among them,
     // apart by more than a noise floor, by the D the diagnosis states.
-    let o = run(&[
-        "design",
-        out.to_str().unwrap(),
-        "--effects",
-        "roll_steer,cornering_stiffness",
-        "--top",
-        "30",
-        "--out",
-        dir.path().join("design").to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let design = read_json(&dir.path().join("design/design.json"));
-    let ranked = design["sets"][0]["ranked"].as_array().unwrap();
+    let set = roll_steer_design(&out, &dir.path().join("design"));
+    let ranked = set["ranked"].as_array().unwrap();
     let scored = ranked.iter().find(|s| s["name"] == name).unwrap();
     let sep = scored["separation"].as_f64().unwrap();
     assert!(sep > 1.0, "{sep}");

@@ -1,7 +1,8 @@
 //! What fresh-eyes users tripped on in session 94, run as a user runs the
 //! tool.
 
-use super::trips_s93_diag::linear_roll_steer;
+use super::trips_s69_identify::{at_pressure, hoosier};
+use super::trips_s93_diag::{linear_roll_steer, roll_steer_design};
 use super::*;
 
 /// Before: the diagnosis advised any manoeuvre the campaign lacked whose
@@ -20,19 +21,7 @@ fn the_diagnosis_advises_a_lacking_run_by_the_designs_own_rule() {
     let (said, d) = diagnose_to(&c, &out);
     let best = &d["confounded"][0]["separating_runs"]["pairs"][0]["best"];
     let name = best["name"].as_str().unwrap_or_else(|| panic!("{said}"));
-    let o = run(&[
-        "design",
-        out.to_str().unwrap(),
-        "--effects",
-        "roll_steer,cornering_stiffness",
-        "--top",
-        "30",
-        "--out",
-        dir.path().join("design").to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let design = read_json(&dir.path().join("design/design.json"));
-    let set = &design["sets"][0];
+    let set = &roll_steer_design(&out, &dir.path().join("design"));
     let scored = set["ranked"].as_array().unwrap();
     let scored = scored.iter().find(|s| s["name"] == name).unwrap();
     for key in ["expected", "uncertainty"] {
@@ -159,26 +148,12 @@ fn a_masked_spike_does_not_set_the_scale_of_its_channel() {
 /// the σ of what is written, the σ line's and the file's.
 #[test]
 fn identify_says_the_sigma_of_the_fit_it_writes() {
-    let Some(rig) = shared_data(
-        "identify_says_the_sigma_of_the_fit_it_writes",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
-        return;
-    };
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("h.toml");
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--pressure",
-        "83400",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let said = String::from_utf8_lossy(&o.stdout);
+    let Some(rig) = hoosier("identify_says_the_sigma_of_the_fit_it_writes") else {
+        return;
+    };
+    let said = at_pressure(&rig, "pac89", &out, &[]);
     let sigma = said
         .lines()
         .find_map(|l| l.strip_prefix("  σ "))

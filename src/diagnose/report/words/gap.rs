@@ -99,10 +99,19 @@ pub(super) fn channel(f: &GapFinding) -> String {
         // "right in" would read as a finding.
         format!("{head}: within noise in every part, so no place where the base model is wrong")
     } else {
+        // Named, but not as where the model is wrong: a part of a channel
+        // within noise in every run is too little of the runs to place a
+        // gap, and "no place where it is wrong" beside it would contradict
+        // the part's own number.
+        let (one, verb) = if wrong.len() == 1 {
+            ("one part", "reads")
+        } else {
+            ("some parts", "read")
+        };
         format!(
-                    "{head}: within noise over the runs, so no place where the base model is wrong; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
-                    parts(wrong)
-                )
+            "{head}: within noise over the runs and in every run; {one}, {}, {verb} above {SIGNIFICANT_NOISE_FLOORS} noise floors: too little of the runs to say the base model is wrong there",
+            parts(wrong)
+        )
     };
     place + &said
 }

@@ -1,7 +1,9 @@
 //! What a fresh user tripped on in the words of `metrics`, `simulate
-//! --measured`, `diagnose` and `equilibria` (session 95, issue 41): a
+//! --measured`, `diagnose` and `equilibria` (session 95): a
 //! speed sample read with its sign flipped taken for a crawl that split
-//! the run, a stretch reversing called a crawl.
+//! the run, a stretch reversing called a crawl, a gain error said as a
+//! constant offset and a dynamic error at once, and an equilibria box of
+//! ±1e9 rad/s searched without a word.
 
 use super::*;
 use crate::trips_s90_met::{measured, tester_step};

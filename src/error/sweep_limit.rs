@@ -18,6 +18,42 @@ pub enum SweepLimit {
         /// The value as read, rad.
         given: f64,
     },
+    /// `yaw_rate_max`, rad/s, as given, beyond [`MAX_BOX_YAW_RATES`] times
+    /// the largest steady yaw rate of the sweep.
+    #[error("{}", yaw_rate(*given, *steady))]
+    YawRate {
+        /// The value as read, rad/s.
+        given: f64,
+        /// The largest steady yaw rate of the sweep, μ_peak·μ·g/u_min, rad/s.
+        steady: f64,
+    },
+}
+
+/// How many times the largest steady yaw rate a search box may reach: no
+/// equilibrium lies beyond 1 (steady, m·u·r is the tyres' lateral force,
+/// at most μ_peak·μ·m·g), and a box ten times wider spreads the search over
+/// a plane 99 % empty.
+pub const MAX_BOX_YAW_RATES: f64 = 10.0;
+
+/// What a `yaw_rate_max` beyond [`MAX_BOX_YAW_RATES`] steady yaw rates is
+/// refused with: the value said in deg/s when read as such lands inside.
+fn yaw_rate(given: f64, steady: f64) -> String {
+    let limit = MAX_BOX_YAW_RATES * steady;
+    let rule = format!(
+        "must lie in (0, {}] rad/s: no equilibrium turns faster than μ_peak·μ·g/u_min = {} rad/s (at the slowest speed swept, the tyres' peak force on the highest friction), and a box {MAX_BOX_YAW_RATES} times that is searched almost all in vain; leave the key out for the default, 1.2 times it; the key is in rad/s",
+        rounded(limit, 4),
+        rounded(steady, 4)
+    );
+    let rad = given.to_radians();
+    if rad > 0.0 && rad <= limit {
+        format!(
+            "{rule}: did you mean {} rad/s ({} deg/s)?",
+            rounded(rad, 4),
+            rounded(given, 4)
+        )
+    } else {
+        rule
+    }
 }
 
 /// What a `beta_max` beyond 90° is refused with: the value said in degrees

@@ -11,7 +11,7 @@ use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
-use crate::error::{FileKind, SweepLimit, Wanted, MAX_BOX_SIDESLIP};
+use crate::error::{FileKind, SweepLimit, Wanted, MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
 use crate::error::{InputError, Limit, Location, ParamError, ParamReason};
 use crate::tyre::TyreModel;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, MIN_SPEED};
@@ -310,33 +310,41 @@ fn search_box(
     grid: &Grid,
     b: BoxSpec,
 ) -> Result<SearchBox, InputError> {
+    // A key beyond its range, refused at its line.
+    let beyond = |key: &str, value: f64, why: SweepLimit| InputError::Sweep {
+        path: src.path.clone(),
+        at: src.key_span(key).map(|s| {
+            let (line, column) = line_col(&src.text, s.start);
+            Location { line, column }
+        }),
+        key: key.into(),
+        value,
+        why,
+    };
     if let Some(beta) = b.beta_max {
         ParamError::positive("beta_max", beta).map_err(|e| param_error(src, Some("box"), e))?;
         if beta > MAX_BOX_SIDESLIP {
-            let key = "box.beta_max";
-            return Err(InputError::Sweep {
-                path: src.path.clone(),
-                at: src.key_span(key).map(|s| {
-                    let (line, column) = line_col(&src.text, s.start);
-                    Location { line, column }
-                }),
-                key: key.into(),
-                value: beta,
-                why: SweepLimit::Sideslip { given: beta },
-            });
+            let why = SweepLimit::Sideslip { given: beta };
+            return Err(beyond("box.beta_max", beta, why));
         }
     }
-    if let Some(r) = b.yaw_rate_max {
-        ParamError::positive("yaw_rate_max", r).map_err(|e| param_error(src, Some("box"), e))?;
-    }
-    let yaw_rate_max = b.yaw_rate_max.unwrap_or_else(|| {
+    // Steady, m·u·r is the tyres' lateral force: at most μ_peak·μ·m·g.
+    let steady = {
         let (sf, sr) = model.vehicle.static_axle_loads();
         let peak = |t: &crate::tyre::Tyre, fz: f64| t.peak_lateral_force(fz, 1.0) / fz;
         let mu_peak = peak(&model.front, 0.5 * sf).max(peak(&model.rear, 0.5 * sr));
         let fmax = grid.friction.iter().copied().fold(0.0, f64::max);
         let umin = grid.speed.iter().copied().fold(f64::INFINITY, f64::min);
-        1.2 * mu_peak * fmax * G / umin
-    });
+        mu_peak * fmax * G / umin
+    };
+    if let Some(r) = b.yaw_rate_max {
+        ParamError::positive("yaw_rate_max", r).map_err(|e| param_error(src, Some("box"), e))?;
+        if r > MAX_BOX_YAW_RATES * steady {
+            let why = SweepLimit::YawRate { given: r, steady };
+            return Err(beyond("box.yaw_rate_max", r, why));
+        }
+    }
+    let yaw_rate_max = b.yaw_rate_max.unwrap_or(1.2 * steady);
     Ok(SearchBox {
         beta_max: b.beta_max.unwrap_or(0.6),
         yaw_rate_max,

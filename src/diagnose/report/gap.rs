@@ -268,6 +268,7 @@ pub fn trusted_channel_gap(
         rms,
         noise_floor,
         e: &e,
+        measured,
         windows: &windows,
         regimes: &regimes,
         sg: (magnitude_error, phase_error),

@@ -6,6 +6,7 @@
 //! unit; times in s.
 
 use super::moves::{beyond_resolution, Moves};
+use super::repair::repair;
 use super::report::{CleaningReport, Glitch, GlitchKind, RunChannel, Treatment};
 use super::settled::settled_hold;
 use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SEARCHED, SPIKE_MADS, STUCK_CONTEXT};
@@ -331,34 +332,6 @@ fn stuck_values(x: &[f64], slow: &[bool], flagged: &mut [bool], out: &mut Vec<Fo
     }
 }
 
-/// Interpolates `x` linearly in `t` across the flagged samples (held at the
-/// nearest good value at an end).
-pub(super) fn repair(t: &[f64], x: &mut [f64], bad: &[bool]) {
-    let n = x.len();
-    let mut i = 0;
-    while i < n {
-        if !bad[i] {
-            i += 1;
-            continue;
-        }
-        let mut j = i;
-        while j < n && bad[j] {
-            j += 1;
-        }
-        let left = i.checked_sub(1);
-        let right = (j < n).then_some(j);
-        for k in i..j {
-            x[k] = match (left, right) {
-                (Some(l), Some(r)) => x[l] + (x[r] - x[l]) * (t[k] - t[l]) / (t[r] - t[l]),
-                (Some(l), None) => x[l],
-                (None, Some(r)) => x[r],
-                (None, None) => x[k],
-            };
-        }
-        i = j;
-    }
-}
-
 /// The response channels a settled hold is judged against.
 const RESPONSES: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta];
 
@@ -420,37 +393,12 @@ fn steer_step_floor(steer: &[f64]) -> f64 {
     (0.5 * range).max(SPIKE_MADS * sigma).max(1e-12)
 }
 
-/// Repairs the speed's zero reads no car can drive
-/// ([`super::speed_dropout`]) and lists them in `report`: before the
-/// slow samples are read, where such a sample would be a standstill.
-fn speed_dropouts(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
-    let found = super::speed_dropout::impossible_zeros(&run.t, &run.speed, min_speed);
-    let mut bad = vec![false; run.t.len()];
-    for &(start, len) in &found {
-        bad[start..start + len].iter_mut().for_each(|b| *b = true);
-        report.samples_repaired += len;
-        report.push_glitch(Glitch {
-            run: run.path.display().to_string(),
-            t: run.t[start],
-            channel: RunChannel::Speed,
-            kind: GlitchKind::ZeroRead,
-            value: 0.0,
-            samples: len,
-            treatment: Treatment::Repaired,
-            dropped_with: None,
-        });
-    }
-    if !found.is_empty() {
-        repair(&run.t, &mut run.speed, &bad);
-    }
-}
-
 /// Finds the glitches of one run (a piece between time gaps), repairs its
 /// inputs, masks its responses, and lists what it found in `report`.
 pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
     let name = run.path.display().to_string();
     let n = run.t.len();
-    speed_dropouts(run, min_speed, report);
+    super::speed_dropout::speed_dropouts(run, min_speed, report);
     let slow: Vec<bool> = run.speed.iter().map(|v| *v < min_speed).collect();
     let mut masked = vec![false; n];
     for &i in &run.masked {

@@ -20,7 +20,7 @@
 //! hold, with no next update, stays. Every such channel and the samples changed are reported.
 //! Units: the channel's SI unit; times in s.
 
-use super::glitches::repair;
+use super::repair::repair;
 use super::report::{CleaningReport, HeldChannel};
 use super::SEARCHED;
 use crate::measured::MeasuredRun;

@@ -73,8 +73,10 @@ mod held;
 mod inject;
 mod moves;
 mod pieces;
+mod repair;
 mod report;
 mod settled;
+mod slow;
 mod speed_dropout;
 #[cfg(test)]
 mod test_signals;

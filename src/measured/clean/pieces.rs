@@ -4,8 +4,9 @@
 //! entry points for a diagnosis, a single replay and the metrics. Times in
 //! s, speeds in m/s.
 
-use super::glitches::{repair, treat_glitches};
+use super::glitches::treat_glitches;
 use super::held::treat_held;
+use super::repair::repair;
 use super::report::{
     CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
 };
@@ -139,6 +140,21 @@ fn slow_samples(speed: &[f64], min_speed: f64) -> Vec<bool> {
     slow
 }
 
+/// What a slow span is: reversing where the car moves backwards (below
+/// −[`STANDSTILL_SPEED`]) over more than half its samples, else a
+/// standstill where it stood (`stopped` samples) over at least half, else
+/// a crawl (a climb from rest through the crawl speeds among them).
+fn slow_kind(speed: &[f64], stopped: usize) -> SlowKind {
+    let backwards = speed.iter().filter(|&&u| u < -STANDSTILL_SPEED).count();
+    if 2 * backwards > speed.len() {
+        SlowKind::Reversing
+    } else if 2 * stopped >= speed.len() {
+        SlowKind::Standstill
+    } else {
+        SlowKind::Crawl
+    }
+}
+
 fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
     let n = run.t.len();
     n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
@@ -178,6 +194,7 @@ pub fn clean_run(
             }
             if slow {
                 let max_speed = part.speed[i..j].iter().copied().fold(f64::MIN, f64::max);
+                let min_speed = part.speed[i..j].iter().copied().fold(f64::MAX, f64::min);
                 // Stopped for at least half the span: a climb from rest
                 // through the crawl speeds is a crawl, not a standstill.
                 let stopped = part.speed[i..j]
@@ -191,11 +208,8 @@ pub fn clean_run(
                     t_end: part.t[j - 1],
                     samples: j - i,
                     max_speed,
-                    kind: if 2 * stopped >= j - i {
-                        SlowKind::Standstill
-                    } else {
-                        SlowKind::Crawl
-                    },
+                    min_speed,
+                    kind: slow_kind(&part.speed[i..j], stopped),
                 });
             } else {
                 moving.push(slice(&part, i, j, ""));

@@ -4,6 +4,8 @@
 //! the JSON report). Times in s, speeds in m/s, values in the channel's SI
 //! unit.
 
+use super::slow::{slow_line, slows_line};
+pub use super::slow::{SlowKind, SlowSpan};
 use crate::error::PieceRefusal;
 use crate::format::plural;
 use crate::measured::MeasuredRun;
@@ -98,16 +100,6 @@ impl Treatment {
             Treatment::Repaired => "repaired",
             Treatment::Masked => "masked",
             Treatment::Split => "split",
-        }
-    }
-}
-
-impl SlowKind {
-    /// Name in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            SlowKind::Standstill => "standstill",
-            SlowKind::Crawl => "crawl",
         }
     }
 }
@@ -235,41 +227,6 @@ fn glitches_line(row: &[Glitch]) -> String {
     )
 }
 
-/// A slow span as the terminal says it.
-fn slow_line(s: &SlowSpan, min_speed: f64) -> String {
-    format!(
-        "{} {:.2}–{:.2} s in {} ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
-        s.kind.name(),
-        s.t_start,
-        s.t_end,
-        s.run,
-        plural(s.samples, "sample", "samples"),
-        // Truncated: a span below 5 m/s must not read "at most 5.00".
-        (s.max_speed * 100.0).floor() / 100.0,
-        crate::format::rounded(min_speed, 4)
-    )
-}
-
-/// Alike slow spans in a row (one run and kind) in one line.
-fn slows_line(row: &[SlowSpan], min_speed: f64) -> String {
-    let (s, last) = (&row[0], &row[row.len() - 1]);
-    let samples: usize = row.iter().map(|s| s.samples).sum();
-    let top = row.iter().fold(0.0_f64, |m, s| m.max(s.max_speed));
-    format!(
-        "{} in {}: {} spans, the first {:.2}–{:.2} s, the last {:.2}–{:.2} s ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
-        s.kind.name(),
-        s.run,
-        row.len(),
-        s.t_start,
-        s.t_end,
-        last.t_start,
-        last.t_end,
-        plural(samples, "sample", "samples"),
-        (top * 100.0).floor() / 100.0,
-        crate::format::rounded(min_speed, 4)
-    )
-}
-
 /// What was done about a glitch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -304,34 +261,6 @@ pub struct Glitch {
     /// reached no fit or score.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dropped_with: Option<String>,
-}
-
-/// Why a slow span was excluded.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SlowKind {
-    /// The car stood in it (below 0.5 m/s over at least half its samples).
-    Standstill,
-    /// The car moved below the minimum speed for most of the span: a
-    /// crawl, or a climb from rest.
-    Crawl,
-}
-
-/// A span of samples below the minimum speed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SlowSpan {
-    /// The run.
-    pub run: String,
-    /// First excluded sample, s.
-    pub t_start: f64,
-    /// Last excluded sample, s.
-    pub t_end: f64,
-    /// Samples excluded.
-    pub samples: usize,
-    /// Highest speed in the span, m/s.
-    pub max_speed: f64,
-    /// Standstill or crawl.
-    pub kind: SlowKind,
 }
 
 /// A channel logged slower than its run and held between updates,
@@ -489,14 +418,28 @@ impl CleaningReport {
     fn counts_line(&self) -> String {
         let c = &self.counts;
         let spans = |kind: SlowKind| self.slow.iter().filter(|s| s.kind == kind).count();
+        let standstills = plural(
+            spans(SlowKind::Standstill),
+            "standstill span",
+            "standstill spans",
+        );
+        let crawls = plural(spans(SlowKind::Crawl), "crawl span", "crawl spans");
+        // Reversing is rare: said where it was found, so that the common
+        // line reads as it did.
+        let slow_spans = match spans(SlowKind::Reversing) {
+            0 => format!("{standstills} and {crawls}"),
+            r => format!(
+                "{standstills}, {crawls} and {}",
+                plural(r, "reversing span", "reversing spans")
+            ),
+        };
         format!(
-            "{} read, {} kept; {} below {} m/s excluded ({} and {}), {} in {} dropped; glitches: {}, {}, {}, {} ({} repaired, {} masked)",
+            "{} read, {} kept; {} below {} m/s excluded ({}), {} in {} dropped; glitches: {}, {}, {}, {} ({} repaired, {} masked)",
             plural(self.samples_read, "sample", "samples"),
             self.samples_kept,
             self.samples_slow,
             self.min_speed,
-            plural(spans(SlowKind::Standstill), "standstill span", "standstill spans"),
-            plural(spans(SlowKind::Crawl), "crawl span", "crawl spans"),
+            slow_spans,
             self.samples_in_dropped_pieces,
             plural(self.dropped_pieces.len(), "piece", "pieces"),
             plural(c.zero_read, "zero read", "zero reads"),

@@ -1,7 +1,10 @@
 //! A channel's gap in words: the whole run's RMS against three noise
 //! floors, then what it hides (a window's gap, a bias of many standard
 //! errors), the time shift, and how much the residual looks like the steer
-//! (worded as a likeness, not a lag). Numbers in the channel's unit.
+//! (worded as a likeness, not a lag). A gap that grows with the response
+//! (the residual a line through the measured channel with a small
+//! intercept) is said as a gain error, not as a constant offset beside a
+//! dynamic error. Numbers in the channel's unit.
 
 use super::scan::{BiasTest, WindowGap, BIAS_STANDARD_ERRORS, FALSE_ALARM, WINDOW};
 use super::{correlation, mean, PartGap};
@@ -28,8 +31,10 @@ pub(super) struct Said<'a> {
     pub unit: &'static str,
     pub rms: f64,
     pub noise_floor: f64,
-    /// The residual.
+    /// The residual (simulated − measured).
     pub e: &'a [f64],
+    /// The measured channel.
+    pub measured: &'a [f64],
     pub windows: &'a [PartGap],
     pub regimes: &'a [PartGap],
     /// Sprague–Geers magnitude and phase errors.
@@ -166,6 +171,10 @@ pub(super) fn verdict(s: &Said) -> String {
         out += &format!("; the measurement {way} the simulation by {by:.2} s (the simulated channel shifted by {shift:+.2} s in time matches it best)");
     }
     if found.any() {
+        if let Some(g) = gain_error(s.e, s.measured, noise_floor) {
+            out += &gain_words(&g, noise_floor, unit);
+            return out;
+        }
         let (rho, lag) = s.steer;
         // A gap that is mostly its mean is an offset. What varies about
         // the mean has a shape (a likeness to the steer, smoothness) only
@@ -187,6 +196,65 @@ pub(super) fn verdict(s: &Said) -> String {
         }
     }
     out
+}
+
+/// The residual as a line through the measured channel, `e ≈ k·m + c`.
+struct GainLine {
+    /// Slope: the simulation reads `1 + k` times the measurement.
+    k: f64,
+    /// Intercept, the channel's unit.
+    c: f64,
+    /// Correlation of the residual with the measured channel.
+    rho: f64,
+}
+
+/// The least correlation of the residual with the measured channel for
+/// its gap to be said as a gain error: the line carries at least 81 % of
+/// what varies.
+const GAIN_CORRELATION: f64 = 0.9;
+
+/// The residual's line through the measured channel where it is a gain
+/// error: close to a line (|ρ| ≥ [`GAIN_CORRELATION`]), whose slope moves
+/// it by more than the noise floor across the channel's range, with an intercept within
+/// half the residual's mean or within the noise floor. A constant offset
+/// has no slope (its intercept is its mean); a front tyre 20 % soft
+/// replayed on a step has residual ≈ −0.13 × the yaw rate and no
+/// intercept, where the mean alone read "mostly a constant offset" and
+/// the likeness to the steer "a dynamic error" in one sentence.
+fn gain_error(e: &[f64], measured: &[f64], noise_floor: f64) -> Option<GainLine> {
+    let sums = crate::stats::CentredSums::of(measured, e);
+    let rho = sums.correlation()?;
+    let k = sums.xy / sums.xx;
+    let c = mean(e) - k * mean(&measured[..sums.n]);
+    // What the slope moves the residual by across the measured channel's
+    // 5–95 % range (a step's sd understates its range: it sits at 0 and
+    // at its steady value).
+    let mut sorted = measured[..sums.n].to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let at = |q: f64| sorted[(q * (sorted.len() - 1) as f64).round() as usize];
+    let swing = k.abs() * (at(0.95) - at(0.05));
+    let small = c.abs() <= (0.5 * mean(e).abs()).max(noise_floor);
+    (rho.abs() >= GAIN_CORRELATION && swing >= noise_floor && small).then_some(GainLine {
+        k,
+        c,
+        rho,
+    })
+}
+
+/// A gap that grows with the response, said as a gain error.
+fn gain_words(g: &GainLine, noise_floor: f64, unit: &str) -> String {
+    let within = if g.c.abs() < noise_floor {
+        ", within the noise floor"
+    } else {
+        ""
+    };
+    format!(
+        "; the gap grows with the response, not a constant offset: the residual follows the measured channel as a line of slope {:+.3} (the simulation reads {:.1} % of the measurement; correlation {:.2}) with an intercept of {} {unit}{within}: a gain error (a stiffness, a mass or inertia, or a sensor's scale factor)",
+        g.k,
+        100.0 * (1.0 + g.k),
+        g.rho,
+        crate::format::readable(g.c, 2),
+    )
 }
 
 /// The share of the residual's mean square its mean must carry for the

@@ -35,6 +35,13 @@ pub enum CellProblem {
     /// read (the cell is the row's cells, joined): a row of units, as
     /// loggers and spreadsheets write one.
     UnitsRow,
+    /// The row repeats the header (the cell is the row's cells, joined),
+    /// a header line mid-file, as a logger writes one where it restarts
+    /// or two logs are joined: one refusal for the row, not one per cell.
+    HeaderAgain {
+        /// The header's line.
+        header: usize,
+    },
     /// It holds a byte that is not UTF-8 (a file saved as Latin-1).
     NotUtf8 {
         /// The first such byte.
@@ -64,6 +71,7 @@ impl CellProblem {
             },
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
             CellProblem::UnitsRow => format!("no cell of this row is a number (`{cell}`): a row of units under the header? Delete it: the columns hold numbers in the units FORMATS.md gives them"),
+            CellProblem::HeaderAgain { header } => format!("this row repeats the header of line {header} (`{cell}`): a second header mid-file, as a logger writes where it restarts or where two logs were joined? Delete it, and check that the rows after it are of the same test"),
             CellProblem::NotUtf8 { byte } => InputProblem::NotUtf8 { byte }.to_string(),
         }
     }

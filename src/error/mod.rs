@@ -84,9 +84,9 @@ pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
-    BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce,
-    NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn, SlowSteer, Waveform, Wheelbase,
-    DYNAMIC_INDEX, MAX_MIN_SPEED,
+    BeyondSignal, CampaignReason, CgTooLow, CurveFault, DeclaredHow, Limit, MassDigit,
+    NoLateralForce, NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn, SlowSteer,
+    Waveform, Wheelbase, DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use replay_run::ReplayRunProblem;
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};

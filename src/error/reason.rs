@@ -18,7 +18,7 @@ pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
-pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
+pub use tir::{CurveFault, DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod angles;
 mod boxed;

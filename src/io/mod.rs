@@ -13,6 +13,7 @@ pub mod paths;
 pub mod rig;
 mod rig_checks;
 mod rig_degrees;
+pub use rig_degrees::{camber_in_degrees, STEEP_CAMBER};
 mod rig_exchanged;
 pub(crate) mod rig_rows;
 mod rig_scale;

@@ -201,6 +201,12 @@ pub(super) fn sample_errors(path: &Path, c: &Columns, t: &Taken) -> Vec<InputErr
     ];
     for (name, values, limit) in angles {
         let Some(values) = values else { continue };
+        // A camber column whose every tilt is steeper than 20° asked as
+        // degrees (0 and 0.5 meant as degrees), as `tyre-eval` asks it.
+        let limit = match name == "camber" && super::camber_in_degrees(values) {
+            true => super::STEEP_CAMBER,
+            false => limit,
+        };
         let beyond = values
             .iter()
             .enumerate()

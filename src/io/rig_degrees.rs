@@ -20,6 +20,13 @@
 //! floor. The near-zero window of the radian reading keeps a tyre in
 //! radians whose sweep goes far past its peak (an ice tyre to 30°, whose
 //! slope over the whole sweep is low) from being taken for one in degrees.
+//!
+//! A camber column reads as degrees where some camber is not 0 and every
+//! one that is lies steeper than [`STEEP_CAMBER`] (20°) read in radians
+//! ([`camber_in_degrees`]): a rig's cambers 0 and 0.5 meant as degrees
+//! are 0 and 28.6° in radians, steeper than any car tyre's measured range.
+//! `identify` (`rig_checks.rs`) and `tyre-eval` (`physical.rs`) ask the
+//! same question of the same cells by this one rule.
 
 use super::columns::Columns;
 use crate::error::{
@@ -27,6 +34,20 @@ use crate::error::{
 };
 use crate::tyre::sizes::MIN_CORNERING_PER_LOAD;
 use std::path::Path;
+
+/// The camber above which a point of a model with no stated camber range
+/// is said, and past which a column whose every tilt lies reads as
+/// degrees, rad (20°): none of the thirteen public `.tir` files states a
+/// camber range beyond 15.1° (`CAMMAX` 0.264 rad).
+pub const STEEP_CAMBER: f64 = 0.349_065_850_398_865_9;
+
+/// Whether a camber column reads as degrees: some camber other than 0,
+/// and every one beyond [`STEEP_CAMBER`] (20°) read in radians.
+pub fn camber_in_degrees(values: &[f64]) -> bool {
+    let mut tilted = values.iter().filter(|v| v.is_finite() && **v != 0.0);
+    let first = tilted.next();
+    first.is_some_and(|v| v.abs() > STEEP_CAMBER) && tilted.all(|v| v.abs() > STEEP_CAMBER)
+}
 
 /// The small-slip range, rad (2°: inside the linear range of any tyre).
 const SMALL_SLIP: f64 = 0.035;

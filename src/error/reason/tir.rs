@@ -285,6 +285,18 @@ pub(super) fn declared_unit(d: &DeclaredUnit) -> String {
     )
 }
 
+/// What is wrong with a `.tir` file's pure-slip curve ([`PureCurve::fault`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CurveFault {
+    /// Its peak |F|/Fz lies beyond any tyre's.
+    Peak,
+    /// It turns against its slip.
+    Reversal,
+    /// It is the same at every slip: a shape factor C of about 0 makes
+    /// `sin(C·atan(B·x))` vanish, leaving the shifts' constant force.
+    Flat,
+}
+
 /// What [`ParamReason::MfPureCurve`] says, boxed: where a `.tir` file's
 /// pure-slip curve goes beyond any tyre's.
 #[derive(Debug, Clone, PartialEq)]
@@ -296,8 +308,8 @@ pub struct PureCurve {
     pub key: &'static str,
     /// |F|/Fz at the point for a peak, else the force there, N.
     pub at: f64,
-    /// The curve turns against its slip (else its peak is too high).
-    pub reversal: bool,
+    /// What is wrong with the curve.
+    pub fault: CurveFault,
     /// The load, N.
     pub load: f64,
     /// The slip angle (rad) or ratio.
@@ -339,7 +351,16 @@ pub(super) fn pure_curve(p: &PureCurve) -> String {
         rounded(p.speed, 4)
     );
     let at = format!("at Fz = {} N and {slip}", rounded(p.load, 5));
-    if !p.reversal {
+    if p.fault == CurveFault::Flat {
+        return format!(
+            "makes {head} the same at every {}: {f} = {} N {at} as at any other (the shifts' force alone), where a tyre's rises with its slip (its stiffness): the shape factor C = PC{a}1·LC{a} = {} makes sin(C·atan(B·x)) about 0 at every slip (a tyre's C is about 1.1–1.9): check {}",
+            if p.lateral { "slip angle" } else { "slip ratio" },
+            readable(p.at, 4),
+            readable(p.shape, 4),
+            p.key
+        );
+    }
+    if p.fault == CurveFault::Peak {
         let why = match p.key {
             k if k.starts_with("LMU") => format!("{k} scales the peak friction (1 as fitted)"),
             k if k.ends_with('2') => format!("{k} is the peak friction's change with load"),
@@ -369,12 +390,12 @@ pub(super) fn pure_curve(p: &PureCurve) -> String {
 
 impl ParamReason {
     /// [`ParamReason::MfPureCurve`]: the `lateral` (else longitudinal)
-    /// curve, the coefficient `key` named, what is wrong `at` the point
-    /// (|F|/Fz of a peak, the force of a `reversal`), the point's load and
+    /// curve, the coefficient `key` named, what is wrong (`fault`) `at`
+    /// the point (|F|/Fz of a peak, else the force), the point's load and
     /// slip, the shape factor C and the speed.
     pub(crate) fn mf_pure_curve(
         (lateral, key): (bool, &'static str),
-        (at, reversal): (f64, bool),
+        (at, fault): (f64, CurveFault),
         (load, slip): (f64, f64),
         (shape, speed): (f64, f64),
     ) -> Self {
@@ -382,7 +403,7 @@ impl ParamReason {
             lateral,
             key,
             at,
-            reversal,
+            fault,
             load,
             slip,
             shape,

@@ -1,7 +1,9 @@
 //! The records under a CSV header (see [`super`]): every wanted cell read
 //! as a number at its true line, every cell that is not a finite number
 //! refused (all of them, not only the first), a row of units under the
-//! header said once.
+//! header said once, and a row that repeats the header (a logger's second
+//! header mid-file) said once as that, not as a cell per column that is
+//! not a number.
 
 use super::{line_of, not_utf8, Columns};
 use crate::error::{CellProblem, InputError};
@@ -34,6 +36,15 @@ pub(super) fn read_records(
                 out.lines.push(line);
                 continue;
             }
+        }
+        if let Some(e) = header_again(path, (out.header_line, headers), line, &rec, wanted) {
+            bad.push(e);
+            for (_, name) in wanted {
+                let column = out.data.get_mut(name).expect("inserted by the reader");
+                column.push(f64::NAN);
+            }
+            out.lines.push(line);
+            continue;
         }
         for (idx, name) in wanted {
             let cell = rec.get(*idx).unwrap_or("");
@@ -132,5 +143,31 @@ fn units_row(
         name: wanted[0].1.clone(),
         cell: quoted.join(", "),
         problem: CellProblem::UnitsRow,
+    })
+}
+
+/// A row that repeats the header, cell by cell (trimmed, any case): one
+/// refusal for the row at its first wanted column, naming the header's
+/// line.
+fn header_again(
+    path: &Path,
+    (header, headers): (usize, &csv::StringRecord),
+    line: usize,
+    rec: &csv::StringRecord,
+    wanted: &[(usize, String)],
+) -> Option<InputError> {
+    let same = rec.len() == headers.len()
+        && rec
+            .iter()
+            .zip(headers.iter())
+            .all(|(a, b)| !a.trim().is_empty() && a.trim().eq_ignore_ascii_case(b.trim()));
+    let quoted: Vec<&str> = rec.iter().map(str::trim).collect();
+    (same && !wanted.is_empty()).then(|| InputError::Cell {
+        path: path.to_path_buf(),
+        line,
+        column: wanted[0].0 + 1,
+        name: wanted[0].1.clone(),
+        cell: quoted.join(", "),
+        problem: CellProblem::HeaderAgain { header },
     })
 }

@@ -20,8 +20,9 @@ use crate::tyre::{PointForces, Tyre};
 use serde::Serialize;
 
 /// The camber above which a point of a model with no stated camber range
-/// is said, rad (20°).
-pub const STEEP_CAMBER: f64 = 0.349_065_850_398_865_9;
+/// is said, rad (20°): the rig reader's, past which a column reads as
+/// degrees.
+pub use crate::io::STEEP_CAMBER;
 
 /// The points at a camber steeper than [`STEEP_CAMBER`].
 #[derive(Debug, Clone, PartialEq, Serialize)]

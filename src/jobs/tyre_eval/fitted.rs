@@ -7,10 +7,54 @@
 //! data (a rig holds its load and slip angle to about that); such points
 //! are counted apart, not warned of: one count over every range alone
 //! said "2 of 3 points outside" for a load 0.5 N past the data's end.
+//!
+//! A range whose span is under [`ONE_LEVEL`]'s width for its key is one
+//! level of the data (a camber held at 0°, a pressure at 83.4 kPa), its
+//! span the rig's spread about that level: a point past it is said by its
+//! distance in the range's unit, not as a share of a span that is noise
+//! ("4117 % of the range's span" for a camber of 0.03 rad past ±0.00036).
+//! A range of an input the model does not read (`unread.rs`: a Gim
+//! tyre's camber, pressure) is not checked: the points are evaluated as
+//! if it were not set, which `unread.rs` says, and an extrapolation in it
+//! would contradict that.
 
 use crate::format::{plural, readable, rounded};
 use crate::io::fitted_ranges::{FittedRanges, RangePoint};
 use serde::Serialize;
+
+/// The span under which a fitted range is one level of the data, by key:
+/// 0.5° of camber or slip angle (a rig holds an angle to a few hundredths
+/// of a degree; a sweep spans degrees), 5 kPa of pressure (the TTC's
+/// levels lie 14 kPa apart, each held to about ±1.5 kPa) and 0.01 of slip
+/// ratio (a cornering test's, at 0). The load has none: a rig's load
+/// levels are each a sweep's step and a share of the span reads right.
+pub const ONE_LEVEL: [(&str, f64); 4] = [
+    ("alpha", 0.008_726_646_259_971_648),
+    ("kappa", 0.01),
+    ("camber", 0.008_726_646_259_971_648),
+    ("pressure", 5000.0),
+];
+
+/// Whether the range `[lo, hi]` of `key` is one level of the data.
+pub fn one_level(key: &str, [lo, hi]: [f64; 2]) -> bool {
+    ONE_LEVEL
+        .iter()
+        .any(|(k, width)| *k == key && hi - lo < *width)
+}
+
+/// `r` without the ranges of the inputs the model does not read (each
+/// `unread.rs`'s column): its points there are evaluated as if unset.
+pub(super) fn read_ranges(r: &FittedRanges, unread: &[super::Unread]) -> FittedRanges {
+    let read = |key: &str, range: Option<[f64; 2]>| {
+        range.filter(|_| !super::unread::is_unread(unread, key))
+    };
+    FittedRanges {
+        kappa: read("kappa", r.kappa),
+        camber: read("camber", r.camber),
+        pressure: read("pressure", r.pressure),
+        ..*r
+    }
+}
 
 /// One side of one fitted range some points lie past.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -115,7 +159,23 @@ impl FittedLeft {
             true => ("below", lo),
             false => ("above", hi),
         };
-        let share = (self.farthest - end).abs() / (hi - lo);
+        let past = (self.farthest - end).abs();
+        if one_level(self.key, self.range) {
+            return format!(
+                "{} of {} {side} the rig data's {}, one level at {}{unit} (its [fitted_ranges]: {} to {}{unit}, the rig's spread about that level, no sweep): evaluated by extrapolation from that one level, the farthest at {}{unit}, {}{unit} past the range's end; the first at line {}, {} = {}{unit}",
+                self.points,
+                plural(count, "point", "points"),
+                self.key,
+                readable(0.5 * (lo + hi), 4),
+                readable(lo, 4),
+                readable(hi, 4),
+                rounded(self.farthest, 6),
+                readable(past, 4),
+                self.first_line,
+                self.key,
+                rounded(self.first_value, 6)
+            );
+        }
         format!(
             "{} of {} {side} the rig data's {} = {}{unit} the tyre was fitted to (its [fitted_ranges]: {} to {}{unit}): evaluated by extrapolation, the farthest at {}{unit}, {} % of the range's span past its end; the first at line {}, {} = {}{unit}",
             self.points,
@@ -125,7 +185,7 @@ impl FittedLeft {
             readable(lo, 4),
             readable(hi, 4),
             rounded(self.farthest, 6),
-            readable(100.0 * share, 3),
+            readable(100.0 * past / (hi - lo), 3),
             self.first_line,
             self.key,
             rounded(self.first_value, 6)

@@ -62,6 +62,7 @@ mod points;
 mod pressure;
 mod radius;
 mod ranges;
+mod rolling;
 mod slip_ratio;
 mod standstill;
 mod stiffness;
@@ -146,6 +147,9 @@ pub struct TyreEvalReport {
     pub zero_outputs: Vec<ZeroOutput>,
     /// Points faster than a Magic Formula `my`'s speed terms reach.
     pub beyond_my_speed: Option<BeyondMySpeed>,
+    /// Points whose Magic Formula `my` is beyond any tyre's rolling
+    /// resistance at a speed its speed terms carry (`rolling.rs`).
+    pub rolling_beyond: Option<rolling::RollingBeyond>,
     /// Points at a slip ratio beyond ±1, of a model that reads it.
     pub slip_past_lock: Option<slip_ratio::SlipPastLock>,
     /// Points whose `√(fx² + fy²)` exceeds the tyre's `μ·Fz` by more than
@@ -328,13 +332,15 @@ pub fn run(
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
     let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
-        fitted::beyond(r, [fz, kappa, alpha, camber], &p, &file.lines)
+        let r = fitted::read_ranges(r, &unread);
+        fitted::beyond(&r, [fz, kappa, alpha, camber], &p, &file.lines)
     });
     let unfitted_lateral =
         unfitted_lateral::unfitted_lateral(fitted_ranges.as_ref(), alpha, camber, &file.lines);
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let opposed = opposed::opposed(&tyre, fitted_ranges.as_ref(), &given, &f, &file.lines);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
+    let rolling_beyond = rolling::rolling_beyond(&tyre, &given, &f, &file.lines);
     let slip_past_lock = if unread::is_unread(&unread, "kappa") {
         None
     } else {
@@ -404,6 +410,7 @@ pub fn run(
         off_road,
         zero_outputs,
         beyond_my_speed,
+        rolling_beyond,
         slip_past_lock,
         beyond_friction,
         fx_at_zero_slip,
@@ -437,6 +444,7 @@ impl TyreEvalReport {
         out.extend(self.opposed.iter().map(|o| o.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
+        out.extend(self.rolling_beyond.iter().map(|r| r.line(self.count)));
         out.extend(self.slip_past_lock.iter().map(|k| k.line(self.count)));
         out.extend(self.fx_at_zero_slip.iter().map(|z| z.line(self.count)));
         out.extend(

@@ -20,6 +20,7 @@
 
 use super::camber::STEEP_CAMBER;
 use crate::error::InputProblem;
+use crate::io::camber_in_degrees;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
@@ -62,14 +63,6 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
         "5 MPa, above any pneumatic tyre's inflation",
     ),
 ];
-
-/// Whether a camber column reads as degrees: some camber other than 0,
-/// and every one beyond [`STEEP_CAMBER`] (20°) read in radians.
-fn camber_in_degrees(values: &[f64]) -> bool {
-    let mut tilted = values.iter().filter(|v| v.is_finite() && **v != 0.0);
-    let first = tilted.next();
-    first.is_some_and(|v| v.abs() > STEEP_CAMBER) && tilted.all(|v| v.abs() > STEEP_CAMBER)
-}
 
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
 /// range, a speed within it below 0, and every load of a column of

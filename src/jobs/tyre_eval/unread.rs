@@ -9,7 +9,12 @@
 //! only a sliding-speed friction law reads it. Nor is a Magic Formula
 //! tyre: it has terms in every input, and past its file's ranges it holds
 //! an input at the range's end (`tyre-eval` counts those points), where
-//! a probe would take saturation for an input not read.
+//! a probe would take saturation for an input not read. Its pressure is
+//! said unread by the file instead (as MFeval reads it, TNO MF 6.1): a
+//! 5.2 file has no pressure terms, a 6.x file without `NOMPRES` has them
+//! off (`dpi = 0`), and one whose every pressure coefficient
+//! ([`MF_PRESSURE_TERMS`]) is 0 gives them no effect; a pressure column
+//! evaluated at such a file was ignored without a word.
 
 use crate::tyre::{PointForces, Tyre};
 use serde::Serialize;
@@ -26,6 +31,45 @@ pub struct Unread {
     /// Points where it is set (non-zero; every point for a pressure),
     /// evaluated as if it were not.
     pub points: usize,
+    /// Why a Magic Formula file does not read it, where known.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub why: Option<MfNoPressure>,
+}
+
+/// Why a Magic Formula file does not respond to the pressure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MfNoPressure {
+    /// A 5.2 file (`FITTYP` 5, 52, …): no pressure terms.
+    Mf52,
+    /// A 6.x file without a positive `NOMPRES`: its terms are off.
+    NoNompres,
+    /// A 6.x file whose every pressure coefficient is 0.
+    TermsZero,
+}
+
+/// The coefficients of a 6.x file through which the pressure acts
+/// (`dpi = (p − NOMPRES)/NOMPRES`; TNO MF 6.1): Fx, Fy, Mz, Mx, the
+/// vertical stiffness and the rolling resistance's `(p/NOMPRES)^QSY8`.
+pub const MF_PRESSURE_TERMS: [&str; 14] = [
+    "PPX1", "PPX2", "PPX3", "PPX4", "PPY1", "PPY2", "PPY3", "PPY4", "PPY5", "PPZ1", "PPZ2",
+    "PPMX1", "PFZ1", "QSY8",
+];
+
+/// Why the Magic Formula `t` does not respond to the pressure, or `None`.
+fn mf_no_pressure(t: &crate::tyre::MagicFormula) -> Option<MfNoPressure> {
+    use crate::tyre::mf::MfVersion;
+    let c = &t.coefficients;
+    let zero = |k: &&str| c.get(k).is_none_or(|v| v == 0.0);
+    if t.version == MfVersion::Mf52 {
+        Some(MfNoPressure::Mf52)
+    } else if c.NOMPRES <= 0.0 {
+        Some(MfNoPressure::NoNompres)
+    } else if MF_PRESSURE_TERMS.iter().all(zero) {
+        Some(MfNoPressure::TermsZero)
+    } else {
+        None
+    }
 }
 
 impl Unread {
@@ -43,8 +87,14 @@ impl Unread {
                 crate::format::plural(self.points, "point", "points")
             ),
         };
+        let why = match self.why {
+            None => "its model does not read it, or its coefficients give it no effect",
+            Some(MfNoPressure::Mf52) => "a Magic Formula 5.2 file has no pressure terms (FITTYP 5x)",
+            Some(MfNoPressure::NoNompres) => "the file has no NOMPRES, without which its pressure terms are off (MFeval's dpi = 0)",
+            Some(MfNoPressure::TermsZero) => "every one of its pressure coefficients (PPX1–4, PPY1–5, PPZ1–2, PPMX1, PFZ1, QSY8) is 0",
+        };
         format!(
-            "this {model} tyre does not respond to `{}`: its forces and moments are the same at any value ({set}); its model does not read it, or its coefficients give it no effect",
+            "this {model} tyre does not respond to `{}`: its forces and moments are the same at any value ({set}); {why}",
             self.column
         )
     }
@@ -70,8 +120,16 @@ pub(crate) fn is_unread(unread: &[Unread], column: &str) -> bool {
 /// at them.
 pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> {
     let [fz, kappa, alpha, camber, speed] = p.columns;
-    if matches!(tyre, Tyre::MagicFormula(_)) {
-        return Vec::new();
+    if let Tyre::MagicFormula(t) = tyre {
+        let points = (0..p.pressure.len()).filter(|&i| fz[i] > 0.0).count();
+        return match mf_no_pressure(t) {
+            Some(why) if points > 0 => vec![Unread {
+                column: "pressure",
+                points,
+                why: Some(why),
+            }],
+            _ => Vec::new(),
+        };
     }
     let probes: [Probe; 3] = [
         ("kappa", 1, |_| 0.0),
@@ -115,6 +173,7 @@ pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> 
             out.push(Unread {
                 column,
                 points: set.len(),
+                why: None,
             });
         }
     }

@@ -15,7 +15,7 @@
 //! [max(KPUMIN, −1), 0), on a grid of [`POINTS`] per side. Units: SI, rad.
 
 use super::{MagicFormula, MfCoefficients};
-use crate::error::{ParamError, ParamReason};
+use crate::error::{CurveFault, ParamError, ParamReason};
 use crate::tyre::sizes::MAX_FRICTION;
 
 /// Grid points on each side of a curve.
@@ -34,12 +34,17 @@ const MAX_KAPPA: f64 = 1.0;
 /// not a turn.
 const TURN: f64 = 0.05;
 
+/// The largest |C| = |PC?1·LC?| a curve is judged flat at: a tenth of
+/// any tyre's (about 1.1–1.9). A larger C that still gives a flat curve
+/// has another cause, which the other checks name.
+const FLAT_SHAPE: f64 = 0.1;
+
 /// What a scan found wrong, at a load and slip.
 #[derive(Clone, Copy)]
 struct Fault {
-    /// |F|/Fz of a peak, or the force (N) of a turn.
+    /// |F|/Fz of a peak, or the force (N) of a turn or a flat curve.
     at: f64,
-    reversal: bool,
+    fault: CurveFault,
     load: f64,
     slip: f64,
 }
@@ -131,6 +136,9 @@ impl MagicFormula {
             if !judged {
                 continue;
             }
+            if let Some(f) = self.flat(is_lateral) {
+                return Err(self.curve_error(is_lateral, &f));
+            }
             let faults: Vec<Fault> = self
                 .judged_loads()
                 .iter()
@@ -143,7 +151,7 @@ impl MagicFormula {
             // is the clearer slip when both show.
             let worst = faults
                 .iter()
-                .filter(|f| !f.reversal)
+                .filter(|f| f.fault == CurveFault::Peak)
                 .max_by(|a, b| a.at.total_cmp(&b.at));
             if let Some(f) = worst.or_else(|| faults.first()) {
                 return Err(self.curve_error(is_lateral, f));
@@ -194,6 +202,45 @@ impl MagicFormula {
         [lo, fnomin.clamp(lo, hi), hi]
     }
 
+    /// The curve of a file whose peak is a tyre's (|μ| = |PD?1·LMU?| above
+    /// [`TURN`]) but whose force moves by less than [`TURN`] of the load
+    /// over its whole slip range at `FNOMIN`, with a shape factor
+    /// C = PC?1·LC? of at most [`FLAT_SHAPE`]: `PCY1 = 0` gave a constant
+    /// −49 N at every slip angle at 2 kN (the shift `SVy` alone), which
+    /// no other check saw. A file giving no force at all (`PDX1 = 0`,
+    /// written by a fit without longitudinal data) is not judged here.
+    fn flat(&self, lateral: bool) -> Option<Fault> {
+        let n = match lateral {
+            true => LATERAL,
+            false => LONGITUDINAL,
+        };
+        let get = |k: &str| self.coefficients.get(k).unwrap_or(0.0);
+        let shape = (get(n.shape) * get(n.shape_scale)).abs();
+        if (get(n.peak) * get(n.scale)).abs() <= TURN || shape > FLAT_SHAPE {
+            return None;
+        }
+        let fz = self.coefficients.FNOMIN;
+        let at = self.at_load(fz, None, 0.0);
+        let speed = self.coefficients.LONGVL;
+        let force = |x: f64| match lateral {
+            true => at.forces(0.0, x, speed).fy,
+            false => at.forces(x, 0.0, speed).fx,
+        };
+        let end = match lateral {
+            true => MAX_ALPHA,
+            false => MAX_KAPPA,
+        };
+        let zero = force(0.0);
+        let grid = (-(POINTS as i64)..=POINTS as i64).map(|i| end * i as f64 / POINTS as f64);
+        let moves = grid.map(|x| (force(x) - zero).abs()).fold(0.0, f64::max);
+        (moves < TURN * fz).then_some(Fault {
+            at: force(end),
+            fault: CurveFault::Flat,
+            load: fz,
+            slip: end,
+        })
+    }
+
     /// The pure curve at load `fz`: its peak beyond [`MAX_FRICTION`] (the
     /// highest), its first turn against the slip, and its highest |F|/Fz
     /// whatever its size.
@@ -225,7 +272,7 @@ impl MagicFormula {
                 if top.as_ref().is_none_or(|p| ratio > p.at) {
                     top = Some(Fault {
                         at: ratio,
-                        reversal: false,
+                        fault: CurveFault::Peak,
                         load: fz,
                         slip: x,
                     });
@@ -235,7 +282,7 @@ impl MagicFormula {
                 if passed && along < -TURN * fz && turn.is_none() && own != 0.0 {
                     turn = Some(Fault {
                         at: f,
-                        reversal: true,
+                        fault: CurveFault::Reversal,
                         load: fz,
                         slip: x,
                     });
@@ -255,13 +302,18 @@ impl MagicFormula {
         };
         let get = |k: &str| c.get(k).unwrap_or(0.0);
         let shape = get(n.shape) * get(n.shape_scale);
-        let key = match f.reversal {
-            true => most_likely_shape(&n, shape, get(n.shape)),
-            false => most_likely_peak(c, &n, f.load),
+        let key = match f.fault {
+            CurveFault::Reversal => most_likely_shape(&n, shape, get(n.shape)),
+            CurveFault::Peak => most_likely_peak(c, &n, f.load),
+            // The one of PC?1 and LC? nearer 0 (a scale's 1, a tyre's 1.1–1.9).
+            CurveFault::Flat => match get(n.shape_scale).abs() < get(n.shape).abs() {
+                true => n.shape_scale,
+                false => n.shape,
+            },
         };
         let reason = ParamReason::mf_pure_curve(
             (lateral, key),
-            (f.at, f.reversal),
+            (f.at, f.fault),
             (f.load, f.slip),
             (shape, c.LONGVL),
         );
@@ -344,6 +396,11 @@ mod tests {
         assert_eq!(key(refused(|c| c.LCY = 10.0)).0, "LCY");
         assert_eq!(key(refused(|c| c.PDX1 *= 10.0)).0, "PDX1");
         assert_eq!(key(refused(|c| c.PCX1 *= 10.0)).0, "PCX1");
+        // A shape factor of 0 leaves the shifts' force at every slip.
+        let (k, e) = key(refused(|c| c.PCY1 = 0.0));
+        assert_eq!(k, "PCY1");
+        assert!(e.contains("the same at every slip angle"), "{e}");
+        assert_eq!(key(refused(|c| c.LCX = 0.0)).0, "LCX");
         // A longitudinal block the file does not describe is not judged.
         let mut t = sample();
         t.coefficients.PDX1 *= 10.0;

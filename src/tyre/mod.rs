@@ -41,7 +41,7 @@ mod dispatch;
 mod erased;
 mod generate;
 mod gim;
-mod kernels;
+pub(crate) mod kernels;
 mod linear;
 pub mod load_range;
 mod magic_simple;

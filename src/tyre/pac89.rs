@@ -24,6 +24,7 @@
 //! A car's four wheels are evaluated together in SIMD lanes (`lanes.rs`).
 
 mod lanes;
+mod load_jets;
 
 use super::{
     Block, Identification, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,

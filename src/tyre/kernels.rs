@@ -93,7 +93,7 @@ fn mask(b: bool) -> u64 {
 
 /// `atan(n/d)` lane by lane for `d > 0` (`d = 1`: `atan n`, to the bit).
 #[inline(always)]
-pub(crate) fn atan_ratio<const N: usize>(n: [f64; N], d: [f64; N]) -> [f64; N] {
+pub(super) fn atan_ratio<const N: usize>(n: [f64; N], d: [f64; N]) -> [f64; N] {
     atan_ratio_lanes(n, d)
 }
 

@@ -41,7 +41,7 @@ mod dispatch;
 mod erased;
 mod generate;
 mod gim;
-pub(crate) mod kernels;
+mod kernels;
 mod linear;
 pub mod load_range;
 mod magic_simple;

@@ -10,7 +10,7 @@
 
 use super::loads::{solve_load_transfer, LoadSplit};
 use super::scalar::{off, ModelScalars, Scalar};
-use super::wheels::{AxleTyres, PlainTyres, FRONT, REAR};
+use super::wheels::{AxleTyres, FRONT, REAR};
 use super::{Inputs, Kinematics, LoadTransferSeed, VehicleModel, MIN_SPEED};
 
 /// What the load-transfer loop carries out of its last evaluation.
@@ -310,16 +310,8 @@ impl<T: Scalar> Balance<T> {
         tolerance: f64,
     ) -> (T, AxleSolution<T>, u32) {
         if T::PLAIN {
-            if let Some((y, s, n)) = self.re().solve_newton(&tyres.plain(), seed, tolerance) {
-                let lift = |x: f64| T::from(x);
-                let s = AxleSolution {
-                    alpha_front: lift(s.alpha_front),
-                    fy_front: lift(s.fy_front),
-                    fy_rear: lift(s.fy_rear),
-                    projection: lift(s.projection),
-                    fz: s.fz.map(lift),
-                };
-                return (T::from(y), s, n);
+            if let Some(solved) = self.solve_newton(tyres, seed, tolerance) {
+                return solved;
             }
             let (_, y, s, n) = solve_load_transfer(self.transfer, seed, tolerance, |ay| {
                 let (y, s) = self.eval(tyres, None, T::from(ay));
@@ -344,7 +336,7 @@ impl<T: Scalar> Balance<T> {
     }
 }
 
-impl Balance<f64> {
+impl<T: Scalar> Balance<T> {
     /// The load-transfer loop by Newton's method on `g(ay) = ay − Y(ay)/m`
     /// where the tyres give their forces' derivatives in load (PAC89) and
     /// the balance is the four wheels' alone (both slip angles fixed, no
@@ -361,27 +353,32 @@ impl Balance<f64> {
     /// `ay + Δ` to well within the loop's tolerance. A step steer's solves
     /// mostly end after one pass instead of two (tested against the
     /// converged root in `vehicle::tests`). An iterate that lifts a wheel
-    /// off hands over to the secant loop from there.
+    /// off hands over to the secant loop from there. In plain numbers only
+    /// (the values of `T`), reading the balance in place: a plain copy of it
+    /// (`Balance::re`) stalled the loop on store forwarding (profiled).
     fn solve_newton(
         &self,
-        tyres: &PlainTyres<'_>,
+        tyres: &impl AxleTyres<T>,
         seed: &mut LoadTransferSeed,
         tolerance: f64,
-    ) -> Option<(f64, AxleSolution<f64>, u32)> {
+    ) -> Option<(T, AxleSolution<T>, u32)> {
         let (front, rear) = (self.front_at.as_ref()?, &self.rear_at);
         let fixed = self.fx.is_none() && front.per_load.is_none() && rear.per_load.is_none();
         if !(self.transfer && fixed && off(self.compliance)) {
             return None;
         }
-        let (alpha, mu, speed) = ([front.alpha, rear.alpha], self.road.mu, self.road.speed);
-        let weight = [self.fixed_projection, self.fixed_projection, 1.0, 1.0];
+        let (plain, split) = (tyres.plain(), self.split.re());
+        let (mu, speed) = (self.road.mu.re(), self.road.speed);
+        let alpha = [front.alpha.re(), rear.alpha.re()];
+        let p = self.fixed_projection.re();
+        let weight = [p, p, 1.0, 1.0];
         let (mut x, mut slope, mut evals) = (seed.predict(), seed.slope, 0);
-        while let Some(k) = self.split.slopes(x) {
-            let fz = self.split.at(x);
-            let [f, f1, f2] = tyres.wheels_in_load(alpha, fz, mu, speed)?;
+        while let Some(k) = split.slopes(x) {
+            let fz = split.at(x);
+            let [f, f1, f2] = plain.wheels_in_load(alpha, fz, mu, speed)?;
             evals += 1;
             let (y, s) = self.wheel_sums(f, fz);
-            let g = x - y;
+            let g = x - y.re();
             // As the secant loop: a NaN ends it too.
             if !(g.abs() > tolerance * (1.0 + x.abs())) || evals >= 60 {
                 seed.slope = slope;
@@ -399,14 +396,14 @@ impl Balance<f64> {
             };
             let step = -g / slope;
             let next = x + step;
-            if slope == exact && self.split.slopes(next) == Some(k) {
+            if slope == exact && split.slopes(next) == Some(k) {
                 let taylor: [f64; 4] = std::array::from_fn(|i| {
                     let dz = k[i] * step;
                     f[i] + (f1[i] + 0.5 * f2[i] * dz) * dz
                 });
-                let (y, s) = self.wheel_sums(taylor, self.split.at(next));
+                let (y, s) = self.wheel_sums(taylor, split.at(next));
                 let within = tolerance * (1.0 + next.abs());
-                if (next - y).abs() <= within && 0.5 * ddy.abs() * step * step <= within {
+                if (next - y.re()).abs() <= within && 0.5 * ddy.abs() * step * step <= within {
                     seed.slope = slope;
                     return Some((y, s, evals));
                 }
@@ -420,16 +417,19 @@ impl Balance<f64> {
         // history left as it was.
         let history = seed.ay;
         (seed.ay, seed.slope) = ([x; 3], slope);
-        let (_, y, s, n) =
-            solve_load_transfer(true, seed, tolerance, |ay| self.eval(tyres, None, ay));
+        let (_, y, s, n) = solve_load_transfer(true, seed, tolerance, |ay| {
+            let (y, s) = self.eval(tyres, None, T::from(ay));
+            (y.re(), s)
+        });
         seed.ay = history;
-        Some((y, s, evals + n))
+        Some((T::from(y), s, evals + n))
     }
 
     /// `Y/m` and the axles of the four wheels' forces `w` (FL, FR, RL, RR)
     /// on loads `fz`, summed as [`Balance::both_axles`] sums them.
     #[inline]
-    fn wheel_sums(&self, w: [f64; 4], fz: [f64; 4]) -> (f64, AxleSolution<f64>) {
+    fn wheel_sums(&self, w: [f64; 4], fz: [f64; 4]) -> (T, AxleSolution<T>) {
+        let (w, fz) = (w.map(T::from), fz.map(T::from));
         let front = with_thrust(w[0] + w[1], [fz[0], fz[1]], self.thrust[0]);
         let rear = with_thrust(w[2] + w[3], [fz[2], fz[3]], self.thrust[1]);
         self.at_forces(self.alpha_front, front, rear, fz)

@@ -15,7 +15,9 @@
 //! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
 //! lagged by a step; `g` is strictly increasing for any tyre whose force does
 //! not grow faster with load than `m/(h/d)` allows, so the root is unique.
-//! Units: SI.
+//! Tyres that give their forces' load derivatives (PAC89) are solved by
+//! Newton's method instead (`balance.rs`, `Balance::solve_newton`), to the
+//! same test. Units: SI.
 
 use super::scalar::{off, ModelScalars, Scalar};
 use super::VehicleModel;

@@ -16,7 +16,7 @@ use super::balance::{projection, AxleSolution};
 use super::scalar::{ModelScalars, Scalar};
 use super::wheels::{AxleTyres, PlainTyres, FRONT};
 use super::{Inputs, Kinematics, LoadTransferSeed, Outputs, State, VehicleModel, MIN_SPEED};
-use crate::tyre::{kernels, Tyre};
+use crate::tyre::Tyre;
 
 /// The full state: β (rad), r (rad/s), the lagged front and rear slip
 /// angles (rad), roll φ (rad) and roll rate (rad/s).
@@ -88,15 +88,6 @@ impl VehicleModel {
     fn kinematic_slip_at<T: Scalar>(&self, beta: T, v: T, r: T, u: f64, steer: [T; 2]) -> (T, T) {
         let (a, b) = (self.vehicle.a, self.vehicle.b);
         match self.options.kinematics {
-            // In plain numbers both arctangents in two lanes of the crate's
-            // kernel (`atan(n/d)` without the division; within 1 ulp of the
-            // C library's): the right-hand side's hottest call after the
-            // tyres'.
-            Kinematics::Exact if T::PLAIN => {
-                let [front, rear] =
-                    kernels::atan_ratio([(v + r * a).re(), (v - r * b).re()], [u, u]);
-                (steer[0] - T::from(front), steer[1] - T::from(rear))
-            }
             Kinematics::Exact => (
                 steer[0] - ((v + r * a) / u).atan(),
                 steer[1] - ((v - r * b) / u).atan(),

@@ -380,7 +380,7 @@ impl<T: Scalar> Balance<T> {
             let (y, s) = self.wheel_sums(f, fz);
             let g = x - y.re();
             // As the secant loop: a NaN ends it too.
-            if !(g.abs() > tolerance * (1.0 + x.abs())) || evals >= 60 {
+            if g.abs() <= tolerance * (1.0 + x.abs()) || g.is_nan() || evals >= 60 {
                 seed.slope = slope;
                 return Some((y, s, evals));
             }

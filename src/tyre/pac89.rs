@@ -21,9 +21,11 @@
 //! `adams-pac89` is accepted. Road friction scales D and divides B, so the
 //! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
-//! A car's four wheels are evaluated together in SIMD lanes (`lanes.rs`).
+//! A car's four wheels are evaluated together in SIMD lanes (`lanes.rs`),
+//! with their forces' load derivatives for the load-transfer loop (`load_jets.rs`).
 
 mod lanes;
+mod load_jets;
 
 use super::{
     Block, Identification, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,

@@ -15,7 +15,9 @@
 //! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
 //! lagged by a step; `g` is strictly increasing for any tyre whose force does
 //! not grow faster with load than `m/(h/d)` allows, so the root is unique.
-//! Units: SI.
+//! Tyres that give their forces' load derivatives (PAC89) are solved by
+//! Newton's method instead (`balance.rs`, `Balance::solve_newton`), to the
+//! same test. Units: SI.
 
 use super::scalar::{off, ModelScalars, Scalar};
 use super::VehicleModel;
@@ -43,7 +45,7 @@ impl Default for LoadTransferSeed {
 }
 
 impl LoadTransferSeed {
-    fn predict(&self) -> f64 {
+    pub(crate) fn predict(&self) -> f64 {
         let [a, b, c] = self.ay;
         3.0 * a - 3.0 * b + c
     }
@@ -123,6 +125,18 @@ impl<T: Scalar> LoadSplit<T> {
             self.rear - dr,
             self.rear + dr,
         ]
+    }
+}
+
+impl LoadSplit<f64> {
+    /// The wheel loads' slopes `dFz/day` (FL, FR, RL, RR; N per m/s²) at
+    /// `ay` where no wheel has lifted off, so that [`LoadSplit::at`] is
+    /// linear about it (strictly inside the lift-off bounds); None
+    /// otherwise.
+    pub(crate) fn slopes(&self, ay: f64) -> Option<[f64; 4]> {
+        let (df, dr) = (self.kf * ay, self.kr * ay);
+        (df.abs() < self.front && dr.abs() < self.rear)
+            .then_some([-self.kf, self.kf, -self.kr, self.kr])
     }
 }
 

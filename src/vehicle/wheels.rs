@@ -73,20 +73,42 @@ impl AxleTyres<f64> for PlainTyres<'_> {
     /// One call for the set ([`TyreModel::lateral_forces`]): a model that
     /// evaluates the four wheels together (PAC89, in SIMD lanes) does.
     fn wheels(&self, alpha: [f64; 2], fz: [f64; 4], mu: f64, speed: f64) -> [f64; 4] {
-        let wheel = |i: usize| SlipState {
-            alpha: alpha[i / 2],
-            kappa: 0.0,
-            fz: fz[i],
-            camber: 0.0,
-            mu_scale: mu,
-            speed,
-        };
         let [front, rear] = self.tyres;
-        front.lateral_forces(rear, &[wheel(0), wheel(1), wheel(2), wheel(3)])
+        front.lateral_forces(rear, &four_wheels(alpha, fz, mu, speed))
     }
     fn friction_coefficient(&self, axle: usize, fz: f64, mu: f64) -> f64 {
         self.tyres[axle].friction_coefficient(fz, mu)
     }
+}
+
+impl PlainTyres<'_> {
+    /// [`AxleTyres::wheels`] with each force's first and second derivatives
+    /// in its wheel's load (N/N, 1/N; [`Tyre::lateral_forces_in_load`]):
+    /// None unless the model gives them (PAC89).
+    pub(crate) fn wheels_in_load(
+        &self,
+        alpha: [f64; 2],
+        fz: [f64; 4],
+        mu: f64,
+        speed: f64,
+    ) -> Option<[[f64; 4]; 3]> {
+        let [front, rear] = self.tyres;
+        front.lateral_forces_in_load(rear, &four_wheels(alpha, fz, mu, speed))
+    }
+}
+
+/// The slip states of a car's four wheels (FL, FR, RL, RR) at the axles'
+/// slip angles `alpha` and the loads `fz`.
+#[inline]
+fn four_wheels(alpha: [f64; 2], fz: [f64; 4], mu: f64, speed: f64) -> [SlipState; 4] {
+    std::array::from_fn(|i| SlipState {
+        alpha: alpha[i / 2],
+        kappa: 0.0,
+        fz: fz[i],
+        camber: 0.0,
+        mu_scale: mu,
+        speed,
+    })
 }
 
 /// The model's tyres with their lateral parameter vectors in scalar `T`

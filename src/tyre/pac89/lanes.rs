@@ -40,21 +40,42 @@ fn lanes_avx2(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> [f64; 4] {
 
 /// An array of `N` lanes, lane `i` the value of `f(i)`.
 #[inline(always)]
-fn each<const N: usize>(f: impl FnMut(usize) -> f64) -> [f64; N] {
+pub(super) fn each<const N: usize>(f: impl FnMut(usize) -> f64) -> [f64; N] {
     std::array::from_fn(f)
 }
 
-/// The lateral force of each lane: `Y = D·sin(C·atan(B·x − E·(B·x −
-/// atan(B·x)))) + Sv` with the curve at the lane's load and camber and the
-/// road's friction scale on D, B and Sv, zero off the ground (`Fz ≤ 0`) or
-/// without friction (`μ ≤ 0`). Every operation is the one-wheel method's
+/// What a lane's lateral force is made of, up to the outer `atan`: the
+/// coefficients (`a[k][i]`, coefficient k of lane i), the lane's load in kN
+/// (`f`), friction scale, camber in degrees, the curve's D, B, E, Sh, Sv,
+/// `B·x/μ` and the two arctangents. Shared by [`lanes`] and the load
+/// derivatives (`load_jets.rs`), so both hold the same values to the bit.
+pub(super) struct Stages<const N: usize> {
+    pub(super) a: [[f64; N]; 14],
+    pub(super) on: [bool; N],
+    pub(super) f: [f64; N],
+    pub(super) mu: [f64; N],
+    pub(super) g: [f64; N],
+    pub(super) d: [f64; N],
+    pub(super) z: [f64; N],
+    pub(super) bcd_camber: [f64; N],
+    pub(super) b: [f64; N],
+    pub(super) e: [f64; N],
+    pub(super) sh: [f64; N],
+    pub(super) sv: [f64; N],
+    pub(super) bx: [f64; N],
+    pub(super) inner: [f64; N],
+    pub(super) phi: [f64; N],
+    pub(super) outer: [f64; N],
+}
+
+/// The lanes' [`Stages`]: every operation is the one-wheel method's
 /// (`lateral_curve_of` and `Pac89::scaled`), in its order, so only the
 /// kernels' last bits differ; `x/1` and `x·1` are `x` to the bit, so μ = 1
 /// needs no branch of its own. Written as whole-array steps without
 /// branches (a load-less lane selects, it does not jump), so the compiler
 /// keeps the lanes in vector registers from the coefficients on.
 #[inline(always)]
-fn lanes<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> [f64; N] {
+pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> Stages<N> {
     let a: [[f64; N]; 14] = std::array::from_fn(|k| std::array::from_fn(|i| tyres[i].a[k]));
     let on: [bool; N] =
         std::array::from_fn(|i| (s[i].fz > 0.0 || s[i].fz.is_nan()) && s[i].mu_scale > 0.0);
@@ -67,8 +88,8 @@ fn lanes<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> [f64; N] {
     let c = a[0];
     let d: [f64; N] = each(|i| a[1][i] * f[i] * f[i] + a[2][i] * f[i]);
     let z: [f64; N] = each(|i| f[i] / a[4][i]);
-    let bcd: [f64; N] =
-        each(|i| a[3][i] * (z[i] * 2.0 / (z[i] * z[i] + 1.0)) * (-(a[5][i] * g[i].abs()) + 1.0));
+    let bcd_camber: [f64; N] = each(|i| -(a[5][i] * g[i].abs()) + 1.0);
+    let bcd: [f64; N] = each(|i| a[3][i] * (z[i] * 2.0 / (z[i] * z[i] + 1.0)) * bcd_camber[i]);
     // B = BCD/(C·D), zero where C·D vanishes (`stiffness_factor`).
     let b: [f64; N] = each(|i| {
         let cd = c[i] * d[i];
@@ -85,14 +106,46 @@ fn lanes<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> [f64; N] {
     let inner = kernels::atan(bx);
     let phi: [f64; N] = each(|i| bx[i] - e[i] * (bx[i] - inner[i]));
     let outer = kernels::atan(phi);
-    let sine = kernels::sin_cos(each(|i| c[i] * outer[i]), [false; N]);
-    each(|i| {
-        if on[i] {
-            d[i] * mu[i] * sine[i] + sv[i] * mu[i]
-        } else {
-            0.0
-        }
-    })
+    Stages {
+        a,
+        on,
+        f,
+        mu,
+        g,
+        d,
+        z,
+        bcd_camber,
+        b,
+        e,
+        sh,
+        sv,
+        bx,
+        inner,
+        phi,
+        outer,
+    }
+}
+
+/// The lateral force of each lane: `Y = D·sin(C·atan(B·x − E·(B·x −
+/// atan(B·x)))) + Sv` with the curve at the lane's load and camber and the
+/// road's friction scale on D, B and Sv, zero off the ground (`Fz ≤ 0`) or
+/// without friction (`μ ≤ 0`), from its [`Stages`].
+#[inline(always)]
+fn lanes<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> [f64; N] {
+    let st = stages(tyres, s);
+    let c = st.a[0];
+    let sine = kernels::sin_cos(each(|i| c[i] * st.outer[i]), [false; N]);
+    each(|i| force(&st, sine[i], i))
+}
+
+/// Lane `i`'s force of its [`Stages`] `st` and `sin(C·atan(…))` `sine`.
+#[inline(always)]
+pub(super) fn force<const N: usize>(st: &Stages<N>, sine: f64, i: usize) -> f64 {
+    if st.on[i] {
+        st.d[i] * st.mu[i] * sine + st.sv[i] * st.mu[i]
+    } else {
+        0.0
+    }
 }
 
 #[cfg(test)]

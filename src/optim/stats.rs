@@ -99,16 +99,40 @@ pub(crate) fn standard_errors(j: &DMatrix<f64>, sum_squares: f64) -> Vec<f64> {
 /// correlation make it the batch-means estimate of the scores' long-run
 /// variance (heteroscedasticity and autocorrelation consistent; Newey &
 /// West 1987, Conley 1999 on blocks). NaN where [`standard_errors`] is.
+#[cfg(test)]
 pub(crate) fn sandwich_standard_errors(
     j: &DMatrix<f64>,
     r: &[f64],
     blocks: &[std::ops::Range<usize>],
 ) -> Vec<f64> {
-    let (m, n) = j.shape();
-    // `covariance` with a sum of squares of m − n is s² = 1: (JᵀJ)⁻¹.
-    let Some(bread) = covariance(j, m.saturating_sub(n).max(1) as f64) else {
+    let n = j.ncols();
+    let Some(v) = sandwich_covariance(j, r, blocks) else {
         return vec![f64::NAN; n];
     };
+    (0..n)
+        .map(|i| {
+            if v[(i, i)] >= 0.0 {
+                v[(i, i)].sqrt()
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
+}
+
+/// The covariance of the block sandwich, whose diagonal's roots are the
+/// standard errors `sandwich_standard_errors` gives (NaN
+/// in the rows and columns of the parameters it leaves without one; None
+/// where `JᵀJ` has no inverse): what a combination of the parameters, a
+/// sum of two, is determined to.
+pub(crate) fn sandwich_covariance(
+    j: &DMatrix<f64>,
+    r: &[f64],
+    blocks: &[std::ops::Range<usize>],
+) -> Option<DMatrix<f64>> {
+    let (m, n) = j.shape();
+    // `covariance` with a sum of squares of m − n is s² = 1: (JᵀJ)⁻¹.
+    let bread = covariance(j, m.saturating_sub(n).max(1) as f64)?;
     let ok: Vec<usize> = (0..n).filter(|&i| bread[(i, i)].is_finite()).collect();
     let mut meat = DMatrix::<f64>::zeros(n, n);
     let mut add = |rows: std::ops::Range<usize>| {
@@ -136,15 +160,13 @@ pub(crate) fn sandwich_standard_errors(
         }
     });
     let v = &bread_ok * meat * &bread_ok;
-    (0..n)
-        .map(|i| {
-            if ok.contains(&i) && v[(i, i)] >= 0.0 {
-                v[(i, i)].sqrt()
-            } else {
-                f64::NAN
-            }
-        })
-        .collect()
+    Some(DMatrix::from_fn(n, n, |a, b| {
+        if ok.contains(&a) && ok.contains(&b) {
+            v[(a, b)]
+        } else {
+            f64::NAN
+        }
+    }))
 }
 
 /// A standard normal draw (Box–Muller) from a seeded stream: the noise of

@@ -29,7 +29,7 @@ use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::{BoundedLm, Jacobians};
 use crate::optim::local::Residuals;
-use crate::optim::stats::{sandwich_standard_errors, seen_columns, standard_errors};
+use crate::optim::stats::{sandwich_covariance, seen_columns, standard_errors};
 use nalgebra::DMatrix;
 use serde::Serialize;
 
@@ -90,9 +90,13 @@ pub struct FitOutcome {
     #[serde(skip)]
     pub linear: Option<Linearisation>,
     /// The standard errors robust to residuals correlated over time
-    /// ([`robust_std_errors`]; empty where not linearised): the ones
+    /// ([`robust_covariance`]; empty where not linearised): the ones
     /// reported.
     pub robust_std_errors: Vec<f64>,
+    /// Their covariance (None where not linearised): what a sum of two
+    /// parameters that trade against each other is determined to.
+    #[serde(skip)]
+    pub robust_covariance: Option<DMatrix<f64>>,
 }
 
 /// Data residuals `r`, their Jacobian `J` and second derivatives of a
@@ -118,7 +122,7 @@ pub fn pair_index(n: usize, a: usize, b: usize) -> usize {
 
 impl FitOutcome {
     /// The standard errors as reported: robust to residuals correlated
-    /// over time where the fit was linearised ([`robust_std_errors`]),
+    /// over time where the fit was linearised ([`robust_covariance`]),
     /// else the Jacobian's. The rules that hold a parameter, call an
     /// effect idle or folds far keep the Jacobian's (their thresholds
     /// were set on them; the likelihood-ratio test of a hold checks them).
@@ -276,6 +280,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut params = params;
     let mut unseen = Vec::new();
     let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
+    let mut robust_cov = None;
     let (std_errors, robust_std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
             if last_jacobian.is_none() {
@@ -301,7 +306,20 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
                     free.column_mut(i).fill(0.0);
                 }
             }
-            let robust = robust_std_errors(problem, &linear, &free);
+            let covariance = robust_covariance(problem, &linear, &free);
+            let robust = match &covariance {
+                Some(v) => (0..params.len())
+                    .map(|i| {
+                        if v[(i, i)] >= 0.0 {
+                            v[(i, i)].sqrt()
+                        } else {
+                            f64::NAN
+                        }
+                    })
+                    .collect(),
+                None => vec![f64::NAN; params.len()],
+            };
+            robust_cov = covariance;
             (standard_errors(&free, 2.0 * cost), robust, Some(linear))
         }
         _ => (vec![f64::NAN; params.len()], Vec::new(), None),
@@ -319,6 +337,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         held: Vec::new(),
         linear,
         robust_std_errors,
+        robust_covariance: robust_cov,
     };
     (outcome, at)
 }
@@ -436,21 +455,21 @@ pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
     linearise_with(problem, p, true, None)
 }
 
-/// The standard errors of the fit linearised as `linear` (its Jacobian's
+/// The covariance of the fit linearised as `linear` (its Jacobian's
 /// columns of parameters on a bound zeroed: `free`), robust to residuals
-/// correlated over time: the block sandwich
-/// ([`sandwich_standard_errors`]) over blocks of each run's channel of
+/// correlated over time (its diagonal the standard errors reported): the block sandwich
+/// ([`sandwich_covariance`]) over blocks of each run's channel of
 /// twice the residuals' integrated autocorrelation time (Sokal 1997;
 /// [`tempering::Tempering`]), the prior's rows each a block of its own. A
 /// misfit that lasts a manoeuvre carries the evidence of `N/τ` samples,
 /// not of `N`: the Jacobian's standard errors, which count every sample
 /// as independent, are optimistic (3 to 4.5 times against the jackknife
 /// in `std_error_tests`, 23 times on the sedan analogue's axles).
-fn robust_std_errors<F: Fn(&[f64]) -> Augmented + Sync>(
+fn robust_covariance<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     linear: &Linearisation,
     free: &DMatrix<f64>,
-) -> Vec<f64> {
+) -> Option<DMatrix<f64>> {
     let n = problem.data_count();
     let tau = problem
         .tempering_of(&linear.residuals[..n])
@@ -467,7 +486,7 @@ fn robust_std_errors<F: Fn(&[f64]) -> Augmented + Sync>(
         }
         start += len;
     }
-    sandwich_standard_errors(free, &linear.residuals, &blocks)
+    sandwich_covariance(free, &linear.residuals, &blocks)
 }
 
 /// [`linearise`], the second derivatives left out (no columns) unless

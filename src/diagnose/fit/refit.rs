@@ -224,6 +224,7 @@ pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
                     held: full.held.clone(),
                     linear: None,
                     robust_std_errors: Vec::new(),
+                    robust_covariance: None,
                 };
             }
             doubted = true;
@@ -372,6 +373,7 @@ pub(super) mod tests {
             held: Vec::new(),
             linear: Some(linearise(&all, &start)),
             robust_std_errors: Vec::new(),
+            robust_covariance: None,
         };
         let fold = Problem::new(
             axle_model,
@@ -456,6 +458,7 @@ pub(super) mod tests {
             held: Vec::new(),
             linear: None,
             robust_std_errors: Vec::new(),
+            robust_covariance: None,
         };
         assert_eq!(to_hold(&f, &bounds, &off, 1), Some(2));
         f.held = vec![None, None, Some(5.0), None, None, None];
@@ -527,6 +530,7 @@ pub(super) mod tests {
             held: Vec::new(),
             linear: None,
             robust_std_errors: Vec::new(),
+            robust_covariance: None,
         };
         let at = |cost: f64| FitOutcome {
             cost,

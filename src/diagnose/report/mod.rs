@@ -14,6 +14,7 @@ pub(crate) mod parts;
 mod rank_warning;
 pub mod separating;
 pub(crate) mod summary;
+pub mod traded;
 pub(crate) mod trust;
 mod values;
 pub mod words;
@@ -36,7 +37,7 @@ pub use crate::diagnose::report::outcome::{
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{
-    jackknife, ParameterValue, Reduction, RunPart, Shrinkage, LIMIT_RESOLUTION, UNDERSTATED,
+    jackknife, ParameterValue, Reduction, RunPart, Shrinkage, Traded, LIMIT_RESOLUTION, UNDERSTATED,
 };
 use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;

@@ -61,6 +61,32 @@ pub struct ParameterValue {
     /// The degrees of freedom of that jackknife (Satterthwaite's count of
     /// the folds' unequal variances: 1 where one fold carries the rest).
     pub fold_noise_dof: Option<f64>,
+    /// It trades against an earlier parameter of its effect: the runs
+    /// determine their sum, not the split ([`Traded`]; absent: no such
+    /// pair).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub traded: Option<Traded>,
+}
+
+/// A parameter that trades against an earlier one of its effect
+/// (`traded.rs`: when, and why the sum is what the runs determine).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Traded {
+    /// The other parameter (`effect.parameter`), listed before this one.
+    pub with: String,
+    /// Their correlation, −1 to 0.
+    pub correlation: f64,
+    /// Their sum, in their common unit.
+    pub sum: f64,
+    /// Its standard error.
+    pub sum_std_error: f64,
+    /// The grouped jackknife of the sum over the fold refits (`null`: not
+    /// cross-validated).
+    pub sum_fold_std_error: Option<f64>,
+    /// Nor do the runs determine how the sum splits between the two: the
+    /// larger of either's standard error and fold scatter exceeds
+    /// `TRADED_SPLIT` of the sum (`traded.rs`).
+    pub split_undetermined: bool,
 }
 
 /// Folds below which no jackknife is given: with two, the spread of one
@@ -124,6 +150,7 @@ impl ParameterValue {
             fold_std_error: None,
             fold_noise_std_error: None,
             fold_noise_dof: None,
+            traded: None,
         }
     }
 

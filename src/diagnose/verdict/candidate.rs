@@ -11,6 +11,7 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::FitOutcome;
 use crate::diagnose::model::axles::AXLE_BOUNDS;
+use crate::diagnose::report::traded::traded;
 use crate::diagnose::report::ParameterValue;
 
 /// A set of effects on the base models, as a parameter vector.
@@ -88,7 +89,8 @@ pub(crate) fn parameter_values(
 ) -> Vec<ParameterValue> {
     let at = layout.effects().start;
     let reported = f.reported_std_errors();
-    layout
+    let groups: Vec<&str> = layout.parameters().map(|(g, _)| g).collect();
+    let mut values: Vec<ParameterValue> = layout
         .parameters()
         .enumerate()
         .map(|(i, (group, q))| {
@@ -104,5 +106,20 @@ pub(crate) fn parameter_values(
                 v
             }
         })
-        .collect()
+        .collect();
+    // A pair of one effect whose sum the runs determine far better than
+    // either ([`traded`]): said on the second of the two.
+    let Some(c) = &f.robust_covariance else {
+        return values;
+    };
+    for b in 0..values.len() {
+        for a in (0..b).filter(|&a| groups[a] == groups[b]) {
+            let sums: Vec<f64> = folds.iter().map(|p| p[at + a] + p[at + b]).collect();
+            if let Some(t) = traded(&values[a], &values[b], c[(at + a, at + b)], &sums) {
+                values[b].traded = Some(t);
+                break;
+            }
+        }
+    }
+    values
 }

@@ -339,6 +339,7 @@ mod tests {
             fold_std_error: None,
             fold_noise_std_error: None,
             fold_noise_dof: None,
+            traded: None,
         }
     }
 

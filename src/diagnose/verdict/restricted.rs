@@ -120,6 +120,7 @@ impl Context<'_> {
                 held: Vec::new(),
                 linear: None,
                 robust_std_errors: Vec::new(),
+                robust_covariance: None,
             },
             insample,
             heldout: ChannelErrors::default(),

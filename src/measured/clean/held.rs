@@ -18,41 +18,82 @@
 //! held samples are interpolated linearly in time between the updates (the
 //! value is taken as the measurement at its update instant); the last
 //! hold, with no next update, stays. Every such channel and the samples changed are reported.
+//!
+//! The holds are judged in time, not in samples: a log whose rate changes
+//! within a run (100 Hz, then 50 Hz) holds a 20 Hz steer for 5 samples,
+//! then for 2 or 3, and every hold is one update period, 0.05 s, within a
+//! sample interval of its stretch of the log.
+//!
+//! A held channel can stick too (a logger repeating its last update): a
+//! hold of at least [`MIN_STUCK_UPDATES`] update periods among holds of one
+//! period ([`REGULAR_SHARE`] of the [`STUCK_CONTEXT`] on each side, none
+//! of them slow), that ends with a step of at least half the channel's
+//! change over the hold (its neighbours' median change per update times
+//! the hold's updates) is stuck: a signal that moved at every update and
+//! then stopped, where a steer held on its stop or at a peak leaves its
+//! hold with an ordinary step. The stuck repeats are reported as stuck
+//! glitches, an input's repaired (interpolated between its updates) and a
+//! response's masked, and not counted as held samples.
 //! Units: the channel's SI unit; times in s.
 
 use super::repair::repair;
 use super::report::{CleaningReport, HeldChannel};
 use super::SEARCHED;
+use super::glitches::repair;
+use super::report::{CleaningReport, Glitch, GlitchKind, HeldChannel, Treatment};
+use super::{SEARCHED, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
 
 /// Fewest complete holds to call a channel held.
 const MIN_HOLDS: usize = 20;
 
-/// Share of the holds at least 2 samples long and within one sample of
-/// the median length.
+/// Share of the holds at least 2 samples long and within one sample
+/// interval of the median hold's duration.
 const REGULAR_SHARE: f64 = 0.8;
 
-/// The starts of the holds of `x` (the samples where its value changes,
-/// and the first) and the median length of the complete holds, when the
-/// channel is held at a lower rate.
-fn holds(x: &[f64]) -> Option<(Vec<usize>, usize)> {
+/// Fewest update periods a hold of a held channel lasts to be stuck.
+pub(crate) const MIN_STUCK_UPDATES: usize = 5;
+
+/// The holds of a held channel: where each starts (the samples where its
+/// value changes, and the first) and the median hold's duration, s.
+struct Holds {
+    starts: Vec<usize>,
+    period: f64,
+}
+
+impl Holds {
+    /// Hold `i`'s duration in update periods, at least 1.
+    fn updates(&self, t: &[f64], i: usize) -> usize {
+        let d = t[self.starts[i + 1]] - t[self.starts[i]];
+        (d / self.period).round().max(1.0) as usize
+    }
+}
+
+/// The holds of `x` (sampled at `t`), when the channel is held at a lower
+/// rate.
+fn holds(t: &[f64], x: &[f64]) -> Option<Holds> {
     let starts: Vec<usize> = (0..x.len())
         .filter(|&i| i == 0 || x[i] != x[i - 1])
         .collect();
-    let mut lengths: Vec<usize> = starts.windows(2).map(|w| w[1] - w[0]).collect();
-    if lengths.len() < MIN_HOLDS {
+    if starts.len() <= MIN_HOLDS {
         return None;
     }
-    lengths.sort_unstable();
-    let every = lengths[lengths.len() / 2];
-    let regular = lengths
-        .iter()
-        .filter(|&&l| l >= 2 && l.abs_diff(every) <= 1)
+    let mut durations: Vec<f64> = starts.windows(2).map(|w| t[w[1]] - t[w[0]]).collect();
+    durations.sort_by(f64::total_cmp);
+    let period = durations[durations.len() / 2];
+    // Within one sample interval of the hold's own stretch of the log (a
+    // hair more: the times are written to a few digits).
+    let regular = starts
+        .windows(2)
+        .filter(|w| {
+            let (len, d) = (w[1] - w[0], t[w[1]] - t[w[0]]);
+            len >= 2 && (d - period).abs() <= d / len as f64 * (1.0 + 1e-6)
+        })
         .count();
-    (every >= 2
-        && regular as f64 >= REGULAR_SHARE * lengths.len() as f64
+    (period > 0.0
+        && regular as f64 >= REGULAR_SHARE * durations.len() as f64
         && !by_resolution(x, &starts))
-    .then_some((starts, every))
+    .then_some(Holds { starts, period })
 }
 
 /// Whether `x`'s changes at the hold starts `starts` are, at
@@ -68,6 +109,50 @@ fn by_resolution(x: &[f64], starts: &[usize]) -> bool {
     one as f64 >= REGULAR_SHARE * steps.len() as f64
 }
 
+/// The stuck holds of a held channel (module doc): each as the index of
+/// its hold in `h.starts`.
+fn stuck_holds(t: &[f64], x: &[f64], h: &Holds, slow: &[bool]) -> Vec<usize> {
+    let complete = h.starts.len() - 1;
+    let c = STUCK_CONTEXT;
+    let step = |j: usize| (x[h.starts[j + 1]] - x[h.starts[j]]).abs();
+    let mut out = Vec::new();
+    for i in c..complete.saturating_sub(c) {
+        let k = h.updates(t, i);
+        if k < MIN_STUCK_UPDATES || slow[h.starts[i - c]..h.starts[i + c + 1]].contains(&true) {
+            continue;
+        }
+        let around: Vec<usize> = (i - c..i + c + 1).filter(|&j| j != i).collect();
+        let single = around.iter().filter(|&&j| h.updates(t, j) == 1).count();
+        if (single as f64) < REGULAR_SHARE * around.len() as f64 {
+            continue;
+        }
+        // The change per update between the neighbours (not into or out of
+        // the hold).
+        let mut per_update: Vec<f64> = (i - c..i - 1)
+            .chain(i + 1..i + c)
+            .map(|j| step(j) / h.updates(t, j) as f64)
+            .collect();
+        let m = super::median(&mut per_update);
+        if m > 0.0 && step(i) >= 0.5 * k as f64 * m {
+            out.push(i);
+        }
+    }
+    out
+}
+
+/// Samples over which [`rate_changes`] takes a local median interval.
+const RATE_BLOCK: usize = 100;
+
+/// Whether the log's rate changes within `t`: the median interval of a
+/// block of [`RATE_BLOCK`] samples differs from the whole log's `interval`
+/// by more than a tenth (a logger's jitter moves single intervals, not a
+/// block's median).
+fn rate_changes(t: &[f64], interval: f64) -> bool {
+    t.chunks(RATE_BLOCK)
+        .filter(|b| b.len() > RATE_BLOCK / 2)
+        .any(|b| (super::median_interval(b) / interval - 1.0).abs() > 0.1)
+}
+
 /// Interpolates `x` (sampled at `t`) between the hold starts `starts`, as
 /// a glitch is repaired ([`repair`]); returns the samples changed.
 fn interpolate(t: &[f64], x: &mut [f64], starts: &[usize]) -> usize {
@@ -80,31 +165,70 @@ fn interpolate(t: &[f64], x: &mut [f64], starts: &[usize]) -> usize {
 }
 
 /// Finds the held channels of `run`, interpolates them between their
-/// updates and reports each.
-pub fn treat_held(run: &mut MeasuredRun, report: &mut CleaningReport) {
+/// updates and reports each; the stuck holds among them (samples below
+/// `min_speed` are never judged stuck) are reported as stuck glitches, a
+/// response's masked.
+pub fn treat_held(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
     let t = run.t.clone();
+    let slow: Vec<bool> = run.speed.iter().map(|u| *u < min_speed).collect();
     let name = run.path.display().to_string();
+    let log_interval = super::median_interval(&t);
+    let mut masked = Vec::new();
     for ch in SEARCHED {
         let Some(x) = ch.of_mut(run) else { continue };
-        let Some((starts, every)) = holds(x) else {
+        let Some(h) = holds(&t, x) else {
             continue;
         };
-        let samples = interpolate(&t, x, &starts);
+        let mut stuck_samples = 0;
+        for i in stuck_holds(&t, x, &h, &slow) {
+            // The hold's first sample is the update; the repeats after it
+            // are the stuck ones.
+            let (s, e) = (h.starts[i] + 1, h.starts[i + 1]);
+            stuck_samples += e - s;
+            report.push_glitch(Glitch {
+                run: name.clone(),
+                t: t[s],
+                channel: ch,
+                kind: GlitchKind::Stuck,
+                value: x[s],
+                samples: e - s,
+                treatment: if ch.is_input() {
+                    Treatment::Repaired
+                } else {
+                    Treatment::Masked
+                },
+                dropped_with: None,
+            });
+            if ch.is_input() {
+                report.samples_repaired += e - s;
+            } else {
+                masked.extend(s..e);
+            }
+        }
+        let samples = interpolate(&t, x, &h.starts) - stuck_samples;
         report.samples_interpolated += samples;
-        let log_rate = 1.0 / super::median_interval(&t);
+        let log_rate = 1.0 / log_interval;
+        let every = (h.period / log_interval).round().max(1.0) as usize;
+        // The log's rate changes where its intervals do (beyond a tenth):
+        // a hold is then a different count of samples in each stretch.
+        let rate_changes = rate_changes(&t, log_interval);
         report.held.push(HeldChannel {
             run: name.clone(),
             channel: ch,
             every,
-            // The logger's rate, from its median hold: counting the changes
-            // misses the updates that repeat a quantised value (a steer
-            // held on a straight), and read a 20 Hz steer as 15.1 Hz beside
-            // "every 5 samples of the 100 Hz log".
-            update_rate: log_rate / every as f64,
+            // The logger's rate, from its median hold in time: counting the
+            // changes misses the updates that repeat a quantised value (a
+            // steer held on a straight), and read a 20 Hz steer as 15.1 Hz
+            // beside "every 5 samples of the 100 Hz log".
+            update_rate: 1.0 / h.period,
             log_rate,
+            log_rate_changes: rate_changes,
             samples,
         });
     }
+    run.masked.extend(masked);
+    run.masked.sort_unstable();
+    run.masked.dedup();
 }
 
 #[cfg(test)]
@@ -143,7 +267,7 @@ mod tests {
             masked: Vec::new(),
         };
         let mut report = CleaningReport::default();
-        treat_held(&mut run, &mut report);
+        treat_held(&mut run, 5.0, &mut report);
         let h = &report.held[0];
         assert_eq!(h.every, 5);
         assert!((h.update_rate - 20.0).abs() < 1e-9, "{}", h.update_rate);
@@ -162,8 +286,9 @@ mod tests {
         let mut x: Vec<f64> = (0..n)
             .map(|i| truth[i - i % 10] + noise[i - i % 10])
             .collect();
-        let (starts, every) = holds(&x).expect("held");
-        assert_eq!((every, starts.len()), (10, 200));
+        let h = holds(&t, &x).expect("held");
+        let starts = h.starts;
+        assert!((h.period - 0.1).abs() < 1e-9 && starts.len() == 200);
         let changed = interpolate(&t, &mut x, &starts);
         assert_eq!(changed, 199 * 9);
         // Between updates the value now follows the signal to its noise and
@@ -180,7 +305,8 @@ mod tests {
     #[test]
     fn noise_a_quantised_channel_and_a_constant_are_not_held() {
         let x = gauss_noise(3000, 0.01, 4);
-        assert!(holds(&x).is_none());
+        let t: Vec<f64> = (0..3000).map(|i| i as f64 * 0.01).collect();
+        assert!(holds(&t, &x).is_none());
         // A steer encoder of 0.001 rad on a slow irregular sine: holds of
         // every length.
         let q: Vec<f64> = (0..3000)
@@ -189,12 +315,13 @@ mod tests {
                 (0.02 * (0.3 * s).sin() * (1.0 + 0.5 * (0.07 * s).sin()) / 0.001).round() * 0.001
             })
             .collect();
-        assert!(holds(&q).is_none());
-        assert!(holds(&[0.5; 3000]).is_none());
+        assert!(holds(&t, &q).is_none());
+        assert!(holds(&t, &[0.5; 3000]).is_none());
     }
 
     #[test]
     fn a_smooth_channel_repeating_or_dithering_in_its_last_digit_is_not_held() {
+        let t: Vec<f64> = (0..3000).map(|i| i as f64 * 0.01).collect();
         // A slow ramp written to its last digit (1e-5), crossing one every
         // 2.2 samples or so: holds of 2 and 3 samples, as regular as a
         // channel updated every 2.
@@ -204,7 +331,7 @@ mod tests {
                 (0.45 * i + 40.0 * (i / 700.0).sin()).round() * 1e-5
             })
             .collect();
-        assert!(holds(&ramp).is_none());
+        assert!(holds(&t, &ramp).is_none());
         // A slow exponential so written: holds of 1, 2, 3 samples and more
         // (at 1 m/s, 83 % of a simulated sideslip's holds were within one
         // sample of 2, a third of them of 1 sample).
@@ -214,12 +341,106 @@ mod tests {
                 (v * 1e5).round() / 1e5
             })
             .collect();
-        assert!(holds(&slow).is_none());
+        assert!(holds(&t, &slow).is_none());
         // A steady value dithering by one unit of its last digit, 4 samples
         // a side: regular holds, every update a return.
         let dither: Vec<f64> = (0..3000)
             .map(|i| 0.003_138_641_3 + if (i / 4) % 2 == 0 { 0.0 } else { 1e-11 })
             .collect();
-        assert!(holds(&dither).is_none());
+        assert!(holds(&t, &dither).is_none());
+    }
+
+    /// A steer updated at 20 Hz in a log at 100 Hz for 30 s, then at
+    /// 50 Hz: holds of 5 samples, then of 2 and 3, every one 0.05 s.
+    #[test]
+    fn a_channel_held_at_20_hz_in_a_log_whose_rate_halves_is_held_throughout() {
+        let mut t: Vec<f64> = (0..3000).map(|i| i as f64 * 0.01).collect();
+        t.extend((0..1500).map(|i| 30.0 + i as f64 * 0.02));
+        // The update each sample holds: every 5th sample, then every 2.5th.
+        let update = |i: usize| {
+            if i < 3000 {
+                i / 5
+            } else {
+                600 + 2 * (i - 3000) / 5
+            }
+        };
+        let x: Vec<f64> = (0..t.len())
+            .map(|i| 0.05 * (0.6 * std::f64::consts::PI * update(i) as f64 * 0.05).sin())
+            .collect();
+        let h = holds(&t, &x).expect("held");
+        assert!((h.period - 0.05).abs() < 1e-9, "{}", h.period);
+        assert!(rate_changes(&t, super::super::median_interval(&t)));
+        assert!(!rate_changes(&t[..3000], 0.01));
+        let mut run = crate::measured::MeasuredRun {
+            path: "r.csv".into(),
+            t: t.clone(),
+            speed: vec![15.0; t.len()],
+            steer: x,
+            yaw_rate: vec![0.0; t.len()],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let mut report = CleaningReport::default();
+        treat_held(&mut run, 5.0, &mut report);
+        let h = &report.held[0];
+        assert!(h.log_rate_changes && (h.update_rate - 20.0).abs() < 1e-6);
+        // Interpolated in time between the samples where the value
+        // changes: update 900 read at 45.00 s, 901 first read at 45.06 s,
+        // so 45.02 s is a third of the way.
+        let k = 3000 + 750;
+        assert!((run.t[k] - 45.0).abs() < 1e-9);
+        let (a, b) = (
+            0.05 * (0.6 * std::f64::consts::PI * 45.0).sin(),
+            0.05 * (0.6 * std::f64::consts::PI * 45.05).sin(),
+        );
+        assert!((run.steer[k + 1] - (2.0 * a + b) / 3.0).abs() < 1e-12);
+    }
+
+    /// A steer at 20 Hz in a 100 Hz log (a 0.5 Hz sine of 0.05 rad,
+    /// clipped at ±0.04 rad: stops of 8 updates, left with an ordinary
+    /// step) stuck at its 20.00 s update for 8 updates: one stuck glitch,
+    /// the 39 repeats, repaired; the stops at the limit are none.
+    #[test]
+    fn a_held_steer_stuck_for_eight_updates_is_stuck_and_its_stops_at_a_limit_are_not() {
+        let n = 6000;
+        let t: Vec<f64> = (0..n).map(|i| i as f64 * 0.01).collect();
+        let at = |u: usize| {
+            let v = 0.05 * (std::f64::consts::PI * u as f64 * 0.05).sin();
+            (v.clamp(-0.04, 0.04) / 2e-4).round() * 2e-4
+        };
+        let mut steer: Vec<f64> = (0..n).map(|i| at(i / 5)).collect();
+        let frozen = steer[2000];
+        steer[2000..2040].iter_mut().for_each(|s| *s = frozen);
+        let mut run = crate::measured::MeasuredRun {
+            path: "r.csv".into(),
+            t: t.clone(),
+            speed: vec![15.0; n],
+            steer,
+            yaw_rate: vec![0.0; n],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let mut report = CleaningReport::default();
+        treat_held(&mut run, 5.0, &mut report);
+        assert_eq!(report.counts.stuck, 1, "{:?}", report.glitches);
+        let g = &report.glitches[0];
+        assert!((g.t - 20.01).abs() < 1e-9 && g.samples == 39, "{g:?}");
+        assert_eq!(g.treatment, Treatment::Repaired);
+        assert_eq!(report.samples_repaired, 39);
+        // The stuck repeats counted as repaired, not as held samples.
+        let mut x: Vec<f64> = (0..n).map(|i| at(i / 5)).collect();
+        x[2000..2040].iter_mut().for_each(|s| *s = frozen);
+        let h = holds(&t, &x).expect("held");
+        let all = interpolate(&t, &mut x, &h.starts);
+        assert_eq!(report.held[0].samples, all - 39);
+        assert_eq!(report.samples_interpolated, all - 39);
     }
 }

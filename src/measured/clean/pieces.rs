@@ -181,7 +181,7 @@ pub fn clean_run(
     let name = run.path.display().to_string();
     for (lo, hi) in parts {
         let mut part = slice(&run, lo, hi, "");
-        treat_held(&mut part, report);
+        treat_held(&mut part, settings.min_speed, report);
         treat_glitches(&mut part, settings.min_speed, report);
         let n = part.t.len();
         let slow_at = slow_samples(&part.speed, settings.min_speed);

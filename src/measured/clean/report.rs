@@ -275,8 +275,13 @@ pub struct HeldChannel {
     pub every: usize,
     /// Updates per second, Hz.
     pub update_rate: f64,
-    /// Samples per second of the log it is held in, Hz.
+    /// Samples per second of the log it is held in, Hz (at its median
+    /// interval).
     pub log_rate: f64,
+    /// The log's rate changes within the run: the hold is a different
+    /// count of samples in each stretch, and `every` is the median hold's
+    /// duration in median intervals.
+    pub log_rate_changes: bool,
     /// Held samples interpolated.
     pub samples: usize,
 }
@@ -456,6 +461,18 @@ impl CleaningReport {
     pub fn summary(&self, first: usize) -> Vec<String> {
         let mut out = vec![self.counts_line()];
         for h in &self.held {
+            if h.log_rate_changes {
+                out.push(format!(
+                    "held: {} in {} updates every {} s ({} Hz) in a log whose rate changes ({} Hz at its median interval): {} interpolated between its updates",
+                    h.channel.name(),
+                    h.run,
+                    crate::format::rounded(1.0 / h.update_rate, 2),
+                    crate::format::rounded(h.update_rate, 3),
+                    crate::format::rounded(h.log_rate, 3),
+                    plural(h.samples, "held sample", "held samples")
+                ));
+                continue;
+            }
             // The hold in samples alone reads as a rate of its own ("every
             // 2 samples (431.8 Hz)"): said against the log's rate, in time.
             out.push(format!(

@@ -38,6 +38,40 @@ pub fn parameter(p: &ParameterValue) -> String {
 /// the runs beyond their noise to claim (a no-effect campaign's candidates
 /// fit noise), only a standard error that understates.
 pub fn parameter_of(p: &ParameterValue, removes: bool) -> String {
+    let alone = parameter_alone(p, removes);
+    let Some(t) = &p.traded else {
+        return alone;
+    };
+    // A pair that trades: their sum is what the runs determine (a delay
+    // and a lag: the steer path's equivalent delay).
+    let unit = if p.unit == "-" { "" } else { p.unit };
+    let what = if p.unit == "s" {
+        "the equivalent delay, "
+    } else {
+        ""
+    };
+    let folds = t.sum_fold_std_error.map_or(String::new(), |j| {
+        format!(
+            "; the fold refits scatter the sum ± {} {unit}",
+            std_error(j)
+        )
+    });
+    format!(
+        "{alone} (correlation {:+.2} with {}: the runs determine their sum, {what}{} ± {} {unit}, {}{folds})",
+        t.correlation,
+        t.with,
+        value(t.sum),
+        std_error(t.sum_std_error),
+        if t.split_undetermined {
+            "not how it splits between them"
+        } else {
+            "better than either"
+        }
+    )
+}
+
+/// [`parameter_of`] without what a pair that trades adds.
+fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
     // A dimensionless parameter (unit `-`) is written without a unit.
     let unit = match p.unit {
         "rad/kN" => format!(" rad/kN ({} rad/N)", value(p.value * 1e-3)),

@@ -335,6 +335,7 @@ pub(super) fn fitted(
         fold_std_error: None,
         fold_noise_std_error: None,
         fold_noise_dof: None,
+        traded: None,
     }
 }
 

@@ -12,7 +12,6 @@ use crate::format::{exact, plural};
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
-use crate::identify::HeldFor;
 use crate::io::tir::TirDocument;
 use crate::jobs::tyre_eval::gives_none;
 use crate::report::plot::Figure;

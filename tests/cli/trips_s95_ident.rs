@@ -1,4 +1,4 @@
-//! Round 25's findings on `identify` (issue 41): a template's `FNOMIN`
+//! Findings on `identify`: a template's `FNOMIN`
 //! and missing `NOMPRES` outside the data, the curvature warning's
 //! reversal angle, the PAC89 two-stage writing line, and the cambers
 //! said pooled where the selection pools none.

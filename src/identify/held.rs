@@ -92,6 +92,30 @@ pub enum ConstantFrom {
         /// The data's highest pressure, Pa.
         hi: f64,
     },
+    /// The median load of the data, rounded to 10 N, in place of a
+    /// template's `FNOMIN` outside the data's loads (`FNOMIN`).
+    LoadOutsideData {
+        /// The template's `FNOMIN`, N.
+        template: f64,
+        /// The data's lowest load, N.
+        lo: f64,
+        /// The data's highest load, N.
+        hi: f64,
+    },
+    /// The median pressure of the data, rounded to 100 Pa, where the
+    /// template has no `NOMPRES` (0, its pressure terms off) and the data
+    /// have a `pressure` column (`NOMPRES`).
+    TemplateWithoutPressure,
+    /// The median pressure of the data, rounded to 100 Pa, in place of a
+    /// template's `INFLPRES` outside the data's pressures (`INFLPRES`).
+    InflationOutsideData {
+        /// The template's `INFLPRES`, Pa.
+        template: f64,
+        /// The data's lowest pressure, Pa.
+        lo: f64,
+        /// The data's highest pressure, Pa.
+        hi: f64,
+    },
 }
 
 impl fmt::Display for HeldFor {
@@ -140,7 +164,11 @@ impl fmt::Display for HeldFor {
             ),
             // (set in place of a template's, not for want of one)
             HeldFor::Constant {
-                from: from @ ConstantFrom::OutsideData { .. },
+                from:
+                    from @ (ConstantFrom::OutsideData { .. }
+                    | ConstantFrom::LoadOutsideData { .. }
+                    | ConstantFrom::TemplateWithoutPressure
+                    | ConstantFrom::InflationOutsideData { .. }),
             } => write!(f, "{from}"),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
         }
@@ -189,6 +217,36 @@ impl fmt::Display for ConstantFrom {
                      data's dpi only and reaching {t} Pa by extrapolation (the blocks these data \
                      do not fit keep the template's coefficients, read about this pressure); to \
                      keep the template's, give --hold NOMPRES={t}"
+                );
+            }
+            ConstantFrom::LoadOutsideData { template, lo, hi } => {
+                let (t, lo, hi) = (exact(*template), exact(*lo), exact(*hi));
+                return write!(
+                    f,
+                    "the median load of the data, rounded to 10 N, in place of the template's \
+                     {t} N, which lies outside the data's {lo} to {hi} N: the load terms are \
+                     polynomials in dfz = (Fz − FNOMIN)/FNOMIN, and about the template's every \
+                     coefficient at nominal load (PDY1, PKY1) would be the data's laws carried \
+                     to {t} N by extrapolation (the blocks these data do not fit keep the \
+                     template's coefficients, read about this load); to keep the template's, \
+                     give --hold FNOMIN={t}"
+                );
+            }
+            ConstantFrom::TemplateWithoutPressure => {
+                "the median pressure of the data, rounded to 100 Pa: the template has no \
+                 NOMPRES (0 turns the pressure terms off, as MF 5.2 has none), and the data \
+                 have a `pressure` column, which the pressure terms (PPX*, PPY*, PPZ*) are \
+                 fitted to about it; to keep them off, give --hold NOMPRES=0"
+            }
+            ConstantFrom::InflationOutsideData { template, lo, hi } => {
+                let (t, lo, hi) = (exact(*template), exact(*lo), exact(*hi));
+                return write!(
+                    f,
+                    "the median pressure of the data, rounded to 100 Pa, in place of the \
+                     template's {t} Pa, which lies outside the data's {lo} to {hi} Pa: INFLPRES \
+                     is the pressure a reader uses where the points give none, and the file \
+                     would be evaluated there by extrapolation; to keep the template's, give \
+                     --hold INFLPRES={t}"
                 );
             }
         };

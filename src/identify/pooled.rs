@@ -4,6 +4,7 @@
 //! diagnosis whose base tyre is fitted to rig data notes them. Units: the
 //! levels are counted, the probe loads in N and slip in rad.
 
+use crate::identify::data::Condition;
 use crate::identify::grouping::{GroupingReport, Variable};
 use crate::tyre::{SlipState, Tyre};
 
@@ -48,6 +49,36 @@ impl Pooled {
             } else {
                 0
             },
+        }
+    }
+
+    /// These counts over the levels `conditions` (the fit's, after a
+    /// selection) hold, not the file's: a camber that exists only at a
+    /// pressure not selected is not pooled into the fit. A count already
+    /// 0 (the model has the terms) stays 0.
+    pub fn among(self, conditions: &[Condition]) -> Self {
+        // The grouping's level tolerances: 10 N, 0.1°, 1 kPa.
+        let count = |n: usize, v: Vec<f64>, tol: f64| {
+            if n == 0 {
+                return 0;
+            }
+            let mut v = v;
+            v.sort_by(f64::total_cmp);
+            v.windows(2).filter(|w| w[1] - w[0] > tol).count() + usize::from(!v.is_empty())
+        };
+        let c = conditions;
+        Pooled {
+            loads: count(self.loads, c.iter().map(|c| c.fz).collect(), 10.0),
+            cambers: count(
+                self.cambers,
+                c.iter().map(|c| c.camber).collect(),
+                0.1f64.to_radians(),
+            ),
+            pressures: count(
+                self.pressures,
+                c.iter().filter_map(|c| c.pressure).collect(),
+                1000.0,
+            ),
         }
     }
 }

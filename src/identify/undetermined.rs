@@ -38,7 +38,8 @@
 //! (`spare.rs`); this module builds the channel's problems and refits.
 
 use super::parameters::{parameter_reports, EFFECT_FLOOR};
-use super::spare::{self, candidates, standard_errors_away, HoldFit, HoldWays, Spared, TieBreak};
+use super::spare::{self, candidates, held_value, standard_errors_away};
+use super::spare::{HoldFit, HoldWays, Spared, TieBreak};
 use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
 use super::{data::Condition, LocalMethod};
 use crate::optim::bounded::BoundedLm;
@@ -234,6 +235,8 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
     // Parameters (full index) whose hold the guard refused: left free,
     // with their warning, and not tried again (`spare.rs`).
     let mut refused: Vec<usize> = Vec::new();
+    // With the value each was tried at, for its warning.
+    let mut tried_at: Vec<(usize, f64)> = Vec::new();
     let mut evaluations = 0;
     while p.len() > 1 {
         let spread = Spread::at(&problem, &p);
@@ -252,6 +255,13 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
             settings.local,
         );
         evaluations += round.evaluations;
+        tried_at.extend(round.refused.iter().map(|&k| {
+            let i = problem.free[k];
+            (
+                i,
+                held_value(stated[i], p[k], spread.std_error(k), bounds[i]),
+            )
+        }));
         let Some(t) = round.kept else {
             if round.refused.is_empty() {
                 break;
@@ -278,7 +288,7 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
         p = t.p;
     }
     if held.is_empty() {
-        return fit;
+        return refusals_said(fit, &tried_at);
     }
     let tyre = problem.tyre(&p).canonical();
     let all = channel.parameters(&tyre);
@@ -295,7 +305,7 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
         parameters[i].held = Some(why);
     }
     let (s, rms) = sigma_of(channel, &tyre, &problem.points);
-    Fit {
+    let fit = Fit {
         curves: curves_of(channel, &tyre, conditions),
         parameters,
         free_sigma_percent: Some(fit.sigma_percent),
@@ -306,7 +316,31 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
         covariance: spread.covariance,
         tyre,
         ..fit
+    };
+    refusals_said(fit, &tried_at)
+}
+
+/// `fit` with the warning of each parameter (full index) whose hold the
+/// guard refused (`tried_at`, with the value tried) saying so: flagged as
+/// not determined, it met the rule, and a bare "not identified" would
+/// leave the reader asking why it was not held. The refit behind the
+/// refusal starts at the free optimum (no new swarm), so the words give
+/// the `--hold` that fits the rest from a new one (UniTire's aligning
+/// `c9` on the Hoosier file at 83.4 kPa and 0°: refused, σ 9.733 %; with
+/// `--hold aligning.c9=0`, 9.685 %).
+fn refusals_said(mut fit: Fit, tried_at: &[(usize, f64)]) -> Fit {
+    for &(i, value) in tried_at {
+        let p = &mut fit.parameters[i];
+        let (true, Some(w)) = (p.free, p.warning.as_mut()) else {
+            continue;
+        };
+        let v = crate::format::readable(value, 4);
+        w.push_str(&format!(
+            "; held at {v} with the rest refitted from this fit's optimum, it raised the channel's σ past what the rule lets a hold cost (5 % of itself, or 2.25 standard errors' worth), so it is left free: --hold {}={v} (or a value of your own) fits the rest from a new swarm instead",
+            p.name
+        ));
     }
+    fit
 }
 
 /// What the holds of a channel start from: the stated `values` and the

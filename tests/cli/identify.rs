@@ -26,7 +26,7 @@ pub(crate) fn assert_tidy_output(stdout: &str) {
         .lines()
         .filter(|l| l.contains("writing the two-stage result"))
     {
-        let chosen = text_between(line, "(σ over all points ", " %");
+        let chosen = text_between(line, "σ over all points ", " %");
         assert!(
             !line.contains(&format!("< direct {chosen} %")),
             "the two σ print alike: {line}"

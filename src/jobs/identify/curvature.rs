@@ -82,6 +82,11 @@ pub struct CurvatureExcess {
     /// The place of that reversal: load (N), camber (rad), slip sign, all
     /// in the frame of the points `tyre-eval` reads.
     pub reverses_at: Option<(f64, f64, f64)>,
+    /// The pressure of that reversal (Pa; `None` without a pressure
+    /// span): the scan runs at the data's pressures, as the file's own
+    /// `INFLPRES` may lie outside them, where the limit checks clip the
+    /// pressure and the force without them differs at every slip.
+    pub reverses_at_pressure: Option<f64>,
     /// The largest |slip| of that kind the data reach.
     pub data_slip: f64,
 }
@@ -103,10 +108,12 @@ impl CurvatureExcess {
         };
         let without = match self.reverses_beyond.zip(self.reverses_at) {
             Some((x, (fz, camber, sign))) => format!(
-                "with the checks off (mode 221) its {name} force changes sign beyond {symbol} = {} at fz {} N, camber {}°, {} {} ({} the data's {}), while with them it keeps its sign (signs as tyre-eval's points give them)",
+                "with the checks off (mode 221) its {name} force changes sign beyond {symbol} = {} at fz {} N, camber {}°{}, {} {} ({} the data's {}), while with them it keeps its sign (signs as tyre-eval's points give them)",
                 self.slip_text(x),
                 readable(fz, 4),
                 readable(camber.to_degrees(), 3),
+                self.reverses_at_pressure
+                    .map_or(String::new(), |p| format!(", pressure {} Pa", readable(p, 4))),
                 if sign > 0.0 { "positive" } else { "negative" },
                 self.curvature.slip(),
                 if x <= self.data_slip { "inside" } else { "outside" },
@@ -170,6 +177,15 @@ pub(crate) fn curvature_excess(
     };
     let gs_range =
         range("camber").map(|(lo, hi)| ((camber_flip * lo).sin(), (camber_flip * hi).sin()));
+    // The reversal is scanned at the data's pressures (their ends and the
+    // nominal between): `None`, the file's INFLPRES, may lie outside them.
+    let pressures: Vec<Option<f64>> = match range("pressure") {
+        Some((lo, hi)) => ends_and(Some((lo, hi)), lo, Some(c.NOMPRES))
+            .into_iter()
+            .map(Some)
+            .collect(),
+        None => vec![None],
+    };
     let mut out = Vec::new();
     if fitted.contains(&Stage::PureFy) {
         let mut places: Vec<(f64, Place)> = Vec::new();
@@ -185,7 +201,7 @@ pub(crate) fn curvature_excess(
                 }
             }
         }
-        out.extend(excess(t, Curvature::Ey, places, range("alpha")));
+        out.extend(excess(t, Curvature::Ey, places, range("alpha"), &pressures));
     }
     if fitted.contains(&Stage::PureFx) {
         let camber = range("camber").map_or(0.0, |r| r.0);
@@ -198,7 +214,7 @@ pub(crate) fn curvature_excess(
                 places.push((e, (s, fz0 * (1.0 + d), camber)));
             }
         }
-        out.extend(excess(t, Curvature::Ex, places, range("kappa")));
+        out.extend(excess(t, Curvature::Ex, places, range("kappa"), &pressures));
     }
     out
 }
@@ -211,14 +227,17 @@ fn excess(
     curvature: Curvature,
     places: Vec<(f64, Place)>,
     slips: Option<(f64, f64)>,
+    pressures: &[Option<f64>],
 ) -> Option<CurvatureExcess> {
     let above: Vec<(f64, Place)> = places.into_iter().filter(|p| p.0 > 1.0 + 1e-9).collect();
     let (largest, (s, fz, camber)) = *above.iter().max_by(|a, b| a.0.total_cmp(&b.0))?;
     // The earliest reversal may be where the curvature is not largest
-    // (the other slip sign, where the force's shifts differ).
+    // (the other slip sign, where the force's shifts differ), and at any
+    // of the data's pressures.
     let first = above
         .iter()
-        .filter_map(|(_, at)| reversal(t, curvature, *at).map(|x| (x, *at)))
+        .flat_map(|(_, at)| pressures.iter().map(move |p| (*at, *p)))
+        .filter_map(|(at, p)| reversal(t, curvature, at, p).map(|x| (x, at, p)))
         .min_by(|a, b| a.0.total_cmp(&b.0));
     Some(CurvatureExcess {
         curvature,
@@ -227,16 +246,22 @@ fn excess(
         camber,
         slip_sign: s,
         reverses_beyond: first.map(|f| f.0),
-        reverses_at: first.map(|(_, (s, fz, camber))| (fz, camber, s)),
+        reverses_at: first.map(|(_, (s, fz, camber), _)| (fz, camber, s)),
+        reverses_at_pressure: first.and_then(|f| f.2),
         data_slip: slips.map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs())),
     })
 }
 
-/// The smallest |slip| at `place` past which the pure force of `t`
+/// The smallest |slip| at `place` and `pressure` past which the pure force of `t`
 /// without the limit checks has the opposite sign to the force with them
 /// (the fit's), by a scan (quarter degrees to 90°; slip ratio steps of
 /// 0.0025 to 1) and bisection; `None` where it keeps the sign.
-fn reversal(t: &MagicFormula, curvature: Curvature, (s, fz, camber): Place) -> Option<f64> {
+fn reversal(
+    t: &MagicFormula,
+    curvature: Curvature,
+    (s, fz, camber): Place,
+    pressure: Option<f64>,
+) -> Option<f64> {
     let mut free = t.clone();
     free.options.limit_checks = false;
     let force = |tyre: &MagicFormula, x: f64| {
@@ -251,7 +276,7 @@ fn reversal(t: &MagicFormula, curvature: Curvature, (s, fz, camber): Place) -> O
             alpha,
             camber,
             speed: t.coefficients.LONGVL,
-            pressure: None,
+            pressure,
         });
         match curvature {
             Curvature::Ey => o.fy,

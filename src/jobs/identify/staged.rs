@@ -9,11 +9,9 @@ use super::level_names::LevelNames;
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::format::{exact, plural};
-use crate::identify::data::RigData;
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
-use crate::identify::{ConstantFrom, HeldFor};
 use crate::io::tir::TirDocument;
 use crate::jobs::tyre_eval::gives_none;
 use crate::report::plot::Figure;
@@ -248,9 +246,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t
     });
-    // A template's NOMPRES outside the data's pressures is replaced by
-    // theirs (`nompres.rs`), held as a `--hold` would hold it.
-    let recentred = super::nompres::recentred(template_tyre.as_ref(), &prepared.rows, &o.hold);
+    // A template's FNOMIN, NOMPRES, INFLPRES outside the data's (or no
+    // NOMPRES) is replaced by theirs (`nompres.rs`), held as by `--hold`.
+    let (rows, version) = (&prepared.rows, fit.version);
+    let recentred = super::nompres::recentred(version, template_tyre.as_ref(), rows, &o.hold);
     let mut given = o.hold.clone();
     given.extend(recentred.iter().map(|h| (h.name.clone(), h.value)));
     let settings = mf_staged::Settings {
@@ -294,7 +293,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let mut held = super::holds::holds_of(o, &given_names(o));
     held.extend(recentred);
     if o.template.is_none() {
-        held.extend(constants_held(&id.tyre, &data, o));
+        held.extend(super::nompres::constants_held(&id.tyre, &data, o));
     }
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
@@ -543,40 +542,6 @@ fn is_combined(r: &mf_staged::MfRow) -> bool {
 /// applied.
 fn given_names(o: &Options) -> Vec<String> {
     o.hold.iter().map(|(n, _)| n.clone()).collect()
-}
-
-/// The `.tir` constants a fit without a template sets (`FNOMIN`,
-/// `UNLOADED_RADIUS`, `NOMPRES`, `LONGVL`), each with where its value
-/// comes from; one given with `--hold` is said as such.
-fn constants_held(t: &MagicFormula, data: &RigData, o: &Options) -> Vec<super::holds::Held> {
-    let c = &t.coefficients;
-    let pressure = match data.pressure {
-        Some(_) => ConstantFrom::MedianPressure,
-        None => ConstantFrom::NoPressure,
-    };
-    let speed = match data.speed {
-        Some(_) => ConstantFrom::MedianSpeed,
-        None => ConstantFrom::DefaultSpeed,
-    };
-    [
-        ("FNOMIN", c.FNOMIN, ConstantFrom::MedianLoad),
-        (
-            "UNLOADED_RADIUS",
-            c.UNLOADED_RADIUS,
-            ConstantFrom::DefaultRadius,
-        ),
-        ("NOMPRES", c.NOMPRES, pressure),
-        ("LONGVL", c.LONGVL, speed),
-    ]
-    .into_iter()
-    .filter(|(name, ..)| !o.hold.iter().any(|(h, _)| h == name))
-    .map(|(name, value, from)| super::holds::Held {
-        name: name.into(),
-        value,
-        applied: true,
-        reason: HeldFor::Constant { from },
-    })
-    .collect()
 }
 
 /// The terminal's lines of a stage's parameters held for want of levels

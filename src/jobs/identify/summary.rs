@@ -84,10 +84,22 @@ impl SwarmReport {
                 3,
                 6,
             );
-            out.push(if differ {
-                format!("  writing the two-stage result (σ over all points {c} % < direct {d} %)")
+            let against = if differ {
+                format!("{c} % < direct {d} %")
             } else {
-                format!("  writing the two-stage result (σ over all points {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
+                format!("{c} %, the direct fit's {d} % to the printed precision, lower beyond it")
+            };
+            // The file holds the result with what the data do not
+            // determine held, whose σ is not the free one compared.
+            let held = self.undetermined_held();
+            out.push(if held.is_empty() || self.fit.sigma_percent == t.polished_overall_sigma_percent {
+                format!("  writing the two-stage result (σ over all points {against})")
+            } else {
+                format!(
+                    "  writing the two-stage result with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
+                    held.join(", "),
+                    self.fit.sigma_percent
+                )
             });
         }
         if let (Some(Written::Direct), Some(t)) = (self.written, &self.two_stage) {
@@ -104,12 +116,7 @@ impl SwarmReport {
             };
             // The file holds the fit with what the data do not determine
             // held, whose σ is not the free fit's the choice compared.
-            let held: Vec<String> = self
-                .held_in(Block::First)
-                .into_iter()
-                .filter(|h| h.reason != HeldFor::Given)
-                .map(|h| h.name)
-                .collect();
+            let held = self.undetermined_held();
             out.push(if held.is_empty() || self.fit.sigma_percent == t.direct_sigma_percent {
                 format!("  writing the direct fit (σ over all points {against})")
             } else {
@@ -184,6 +191,16 @@ enum Block {
 }
 
 impl SwarmReport {
+    /// The first channel's parameters held as undetermined: the holds
+    /// that part the σ written from the free one the routes compared.
+    fn undetermined_held(&self) -> Vec<String> {
+        self.held_in(Block::First)
+            .into_iter()
+            .filter(|h| matches!(h.reason, HeldFor::Undetermined { .. }))
+            .map(|h| h.name)
+            .collect()
+    }
+
     /// The held values said in `block`: a value held for another reason
     /// than `--hold` in the block of the later fit that has it.
     fn held_in(&self, block: Block) -> Vec<Held> {

@@ -64,7 +64,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let tyre0 = start_tyre_of(model, median_load)?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;
-    let pooled = Pooled::of(&tyre0, &grouped.report);
+    // Counted over the conditions fitted, not the file's levels.
+    let pooled = Pooled::of(&tyre0, &grouped.report).among(&conditions);
     // The two-stage identification fits every coefficient: with a
     // coefficient held with --hold it is not run (the summary says so).
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage

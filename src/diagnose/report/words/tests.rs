@@ -31,9 +31,11 @@ fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
         channel: crate::diagnose::model::channels::Channel::Ay,
         fitted,
         fitted_std_error: 0.005,
+        fitted_fold_std_error: None,
         measured: -0.6,
         measured_on: crate::diagnose::report::outcome::CalibrationSource::Standstills,
         measured_std_error: 0.001,
+        through_bank: None,
         agrees,
     };
     assert_eq!(

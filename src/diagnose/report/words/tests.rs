@@ -44,7 +44,6 @@ fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
     );
     assert!(evidence(&e(0.1, false)).starts_with("not confirmed: the ay offset fitted, 0.1000"));
 }
-
 #[test]
 fn an_explained_verdict_says_how_much_and_whether_part() {
     assert_eq!(

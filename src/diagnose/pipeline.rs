@@ -92,7 +92,7 @@ pub fn work_units(c: &Campaign) -> usize {
 /// column, a car parked on a bank (`g·sin θ`): it is not removed, or the
 /// banking it stood on would vanish from the estimate.
 fn offsets(calibrated: &Calibrated) -> SensorOffsets {
-    let of = |ch: Channel| calibrated[ch.index()].map_or(0.0, |(mean, _, _)| mean);
+    let of = |ch: Channel| calibrated[ch.index()].map_or(0.0, |(mean, ..)| mean);
     let ay = of(Channel::Ay);
     SensorOffsets {
         ay: if ay.abs() <= PLAUSIBLE_AY_OFFSET {
@@ -127,7 +127,13 @@ fn calibrated(c: &Campaign) -> Calibrated {
             SpanKind::Standstill => CalibrationSource::Standstills,
             SpanKind::Straight => CalibrationSource::Straights,
         };
-        Some((o.mean, o.std_error, on))
+        // The logged bank the standstills' ay was read through (its mean
+        // there): the verdict re-reads them through the bank it fits.
+        let bank = k
+            .bank
+            .filter(|_| on == CalibrationSource::Standstills)
+            .map(|b| (b.bank_term / crate::constants::G).clamp(-1.0, 1.0).asin());
+        Some((o.mean, o.std_error, on, bank))
     })
 }
 

@@ -8,6 +8,7 @@
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
 mod bank_degrees;
+mod bank_reversed;
 mod beta_sign;
 mod campaign_file;
 mod carried;
@@ -55,6 +56,7 @@ mod unstable_step;
 mod vehicle_limit;
 
 pub use bank_degrees::BankInDegrees;
+pub use bank_reversed::BankReversed;
 pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};

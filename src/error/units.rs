@@ -337,6 +337,9 @@ pub enum UnitSlip {
     /// A road bank in degrees (`bank_degrees.rs`).
     #[error(transparent)]
     BankInDegrees(#[from] super::bank_degrees::BankInDegrees),
+    /// A road bank logged in the other sign (`bank_reversed.rs`).
+    #[error(transparent)]
+    BankReversed(#[from] super::bank_reversed::BankReversed),
     /// A lateral acceleration logged in the other sign ([`AyReversed`]).
     #[error(transparent)]
     AyReversed(#[from] AyReversed),

@@ -7,8 +7,8 @@
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
 use super::run_ay_sign::check_ay_sign;
-use super::run_bank::check_bank_degrees;
-use super::run_slope::{check_beta_percent, check_slope, Lateral};
+use super::run_bank::{check_bank_degrees, check_slope_reading};
+use super::run_slope::{check_beta_percent, Lateral};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
     check_speed_by_ax, check_time_step, check_yaw_rate,
@@ -315,7 +315,7 @@ fn read_run_lacking(
         if let Some(bank) = &bank {
             check_bank_degrees(path, &c, &lateral, bank)?;
         }
-        check_slope(path, &c, &lateral)?;
+        check_slope_reading(path, &c, &lateral)?;
     }
     let run = MeasuredRun {
         path: path.to_path_buf(),

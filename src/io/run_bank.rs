@@ -55,9 +55,9 @@
 //! Units: SI, rad.
 
 use super::columns::Columns;
-use super::run_slope::{stretches, Lateral, MIN_BINS};
+use super::run_slope::{fit, slope_slip, stretches, Lateral, Stretch, MIN_BINS, MIN_R2, SI_RANGE};
 use crate::constants::G;
-use crate::error::{BankInDegrees, InputError, UnitSlip};
+use crate::error::{BankInDegrees, BankReversed, InputError, UnitSlip};
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
 use crate::measured::clean::median;
 use crate::measured::MeasuredRun;
@@ -125,8 +125,28 @@ pub(super) fn check_bank_degrees(
         .iter()
         .map(|r| r.e - G * r.bank.to_radians().sin())
         .collect();
+    let mut as_reversed: Vec<f64> = bins.iter().map(|r| r.e + r.term).collect();
     let (as_radians, as_degrees) = (median(&mut as_radians), median(&mut as_degrees));
-    if as_radians.abs() <= PLAUSIBLE_AY_OFFSET || as_degrees.abs() > PLAUSIBLE_AY_OFFSET {
+    let as_reversed = median(&mut as_reversed);
+    if as_radians.abs() <= PLAUSIBLE_AY_OFFSET {
+        return Ok(());
+    }
+    // A bank of the other sign implies the smallest offset read reversed:
+    // the sign, not the unit (a held bank in degrees or not acting implies
+    // about `e`, reversed `e + g·sin θ`).
+    if as_reversed.abs() <= PLAUSIBLE_AY_OFFSET && as_reversed.abs() < as_degrees.abs() {
+        let row = bank.iter().position(|b| b.abs() > 0.0).unwrap_or(0);
+        let slip = BankReversed::Held {
+            as_logged: as_radians,
+            as_degrees,
+            as_reversed,
+            plausible: PLAUSIBLE_AY_OFFSET,
+            bins: bins.len(),
+            with_beta: c.beta.is_some(),
+        };
+        return Err(cols.error_at(path, row, "bank", UnitSlip::from(slip).into()));
+    }
+    if as_degrees.abs() > PLAUSIBLE_AY_OFFSET {
         return Ok(());
     }
     let row = bank
@@ -144,6 +164,70 @@ pub(super) fn check_bank_degrees(
         with_beta: c.beta.is_some(),
     };
     Err(cols.error_at(path, row, "bank", UnitSlip::from(slip).into()))
+}
+
+/// The slope check (`run_slope.rs`) where the run logs a bank: a slope in
+/// a unit's band with the bank as logged is first read without the bank
+/// and reversed ([`bank_reading`]): a bank of the other sign (or one the
+/// car does not feel) pulls the slope into a unit's band, and is named in
+/// place of the unit.
+pub(super) fn check_slope_reading(
+    path: &Path,
+    cols: &Columns,
+    c: &Lateral,
+) -> Result<(), InputError> {
+    let Some((row, slip)) = slope_slip(c) else {
+        return Ok(());
+    };
+    match bank_reading(c) {
+        Err(reversed) => Err(cols.error_at(path, row, "bank", UnitSlip::from(reversed).into())),
+        Ok(true) => Ok(()),
+        Ok(false) => {
+            let column = slip.unit.column();
+            Err(cols.error_at(path, row, column, UnitSlip::from(slip).into()))
+        }
+    }
+}
+
+/// The fits of the slope check (`run_slope.rs`) with the bank as logged,
+/// without it and reversed, over the run's turning means: a
+/// [`BankReversed::Slope`] where the reversed bank fits best (the highest
+/// R², at least [`MIN_R2`]) with a car's slope ([`SI_RANGE`]); `Ok(true)`
+/// where the fit without the bank does (a logged bank the car does not
+/// feel, the diagnosis's `bank_profile` and the calibration's to judge:
+/// it names no unit); `Ok(false)` where the bank as logged fits best, or
+/// the run has none. Called where the slope as logged names a unit.
+pub(super) fn bank_reading(c: &Lateral) -> Result<bool, BankReversed> {
+    if c.bank.is_none() {
+        return Ok(false);
+    }
+    let means: Vec<&Stretch> = stretches(c)
+        .iter()
+        .filter(|s| s.turning())
+        .filter(|s| (s.speed_yaw + s.v_dot + s.bank_term).is_finite() && s.ay.is_finite())
+        .collect();
+    let with = |k: f64| {
+        fit(means
+            .iter()
+            .map(|s| (s.speed_yaw + s.v_dot + k * s.bank_term, s.ay)))
+    };
+    let ((slope, r2), (without, without_r2), (reversed, reversed_r2)) =
+        (with(1.0), with(0.0), with(-1.0));
+    let car = |k: f64| (SI_RANGE.0..=SI_RANGE.1).contains(&k);
+    if reversed_r2 >= MIN_R2 && reversed_r2 > r2.max(without_r2) && car(reversed) {
+        return Err(BankReversed::Slope {
+            slope,
+            r2,
+            without,
+            without_r2,
+            reversed,
+            reversed_r2,
+            range: SI_RANGE,
+            bins: means.len(),
+            with_beta: c.beta.is_some(),
+        });
+    }
+    Ok(without_r2 >= MIN_R2 && without_r2 > r2 && car(without))
 }
 
 /// A note where `run`'s bank, read in radians, passes

@@ -260,17 +260,8 @@ pub(super) fn slope_slip(c: &Lateral) -> Option<(usize, LateralSlope)> {
     Some((bins[0].first, slip))
 }
 
-/// Refuses a run whose slope names a unit slip ([`slope_slip`]), at the
-/// column it names and the first turning stretch's first sample.
-pub(super) fn check_slope(path: &Path, cols: &Columns, c: &Lateral) -> Result<(), InputError> {
-    match slope_slip(c) {
-        Some((row, slip)) => {
-            let column = slip.unit.column();
-            Err(cols.error_at(path, row, column, UnitSlip::from(slip).into()))
-        }
-        None => Ok(()),
-    }
-}
+// The refusal that names the unit is `run_bank::check_slope_reading`:
+// a bank of the other sign is tried first.
 
 /// The least sideslip change a pair of means judged for
 /// [`beta_factor`] carries, rad (0.3°: above a sideslip sensor's noise

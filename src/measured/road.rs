@@ -181,10 +181,7 @@ impl RoadGeometry {
             AngleSource::LateralKinematics | AngleSource::LateralKinematicsWithSideslip
         );
         let offsets = match self.offsets_removed {
-            Some(o) if lateral => format!(
-                " less the offsets the calibration measured (ay {:.3} m/s², yaw rate {:.4} rad/s)",
-                o.ay, o.yaw_rate
-            ),
+            Some(o) if lateral => super::road_words::removed(o.ay, o.yaw_rate),
             _ => String::new(),
         };
         let caveat = match p.source {

@@ -464,6 +464,7 @@ mod trips_s93_met;
 mod trips_s94_eq;
 mod trips_s94_lead;
 mod trips_s94_met;
+mod trips_s95_bank;
 mod trips_s95_ident;
 mod trips_s95_real;
 mod trips_s95_tyreval;

@@ -24,13 +24,24 @@ pub enum Evidence {
         fitted: f64,
         /// Its standard error.
         fitted_std_error: f64,
-        /// Measured on the standstills, else on the straights.
+        /// The fold refits' scatter where the standard error does not
+        /// cover it ([`ParameterValue::understated`]): the agreement is
+        /// judged on it in place of the standard error (None: it covers).
+        fitted_fold_std_error: Option<f64>,
+        /// Measured on the standstills, else on the straights; on
+        /// standstills where the verdict fits the road's bank, read
+        /// through that bank ([`ThroughBank`]).
         measured: f64,
         /// Where it was measured.
         measured_on: CalibrationSource,
         /// Its standard error.
         measured_std_error: f64,
-        /// Within three combined standard errors.
+        /// The standstills read through the verdict's fitted bank (None:
+        /// the verdict fits no bank, or the offset is the straights').
+        through_bank: Option<ThroughBank>,
+        /// Within [`CALIBRATION_AGREES`] combined standard errors (the
+        /// fitted value's trusted one: its fold scatter where that is
+        /// given).
         agrees: bool,
     },
     /// The base model alone is no tyre; fitted with the verdict's effects
@@ -156,6 +167,22 @@ pub enum CalibrationSource {
     Standstills,
     /// On straights at constant speed (no standstill measured it).
     Straights,
+}
+
+/// The standstills' `a_y` read through the bank a verdict fits
+/// (`bank_profile`'s `scale·θ + offset`, `road_bank`'s constant): the
+/// offset is `mean(a_y) − g·sin(θ_fitted)` there, where the calibration
+/// read it through the logged bank `θ` (or a flat road without a bank
+/// column). The verdict's sensor offset was fitted with the fitted bank,
+/// so only this reading is the same quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ThroughBank {
+    /// The fitted bank where the standstills stood, rad.
+    pub bank: f64,
+    /// The logged bank there (None: no bank column), rad.
+    pub logged_bank: Option<f64>,
+    /// The offset read through the logged bank (or a flat road), m/s².
+    pub as_logged: f64,
 }
 
 /// Combined standard errors within which a fitted and a measured offset

@@ -17,7 +17,8 @@ use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 pub use crate::diagnose::report::evidence::{
-    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, CALIBRATION_AGREES,
+    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, ThroughBank,
+    CALIBRATION_AGREES,
 };
 pub use crate::diagnose::report::lookalike::{InSet, Lookalike, Lookalikes, Window};
 use crate::diagnose::report::parts::Part;

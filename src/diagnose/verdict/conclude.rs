@@ -10,15 +10,15 @@
 
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::{same_effects, Bound, EffectKind};
-use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::above_noise;
-use crate::diagnose::report::outcome::{CALIBRATION_AGREES, EXPLAINS_MOST};
+use crate::diagnose::report::outcome::EXPLAINS_MOST;
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
     NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony, Part, RankWarning,
     Ranked, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::calibration::calibration_evidence;
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
 use crate::diagnose::verdict::score::{Calibrated, Scored};
 use crate::diagnose::verdict::search::Search;
@@ -209,31 +209,6 @@ fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
     )
 }
 
-/// The sensor offsets among a verdict's `parameters` against the ones the
-/// runs' standstills and straights measured.
-fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) -> Vec<Evidence> {
-    Channel::ALL
-        .into_iter()
-        .filter_map(|c| {
-            let (measured, measured_std_error, measured_on) = calibrated[c.index()]?;
-            let name = format!("{}.{}", EffectKind::SensorBias.name(), c.name());
-            let p = parameters
-                .iter()
-                .find(|p| p.name == name && p.std_error.is_finite())?;
-            let combined = p.std_error.hypot(measured_std_error);
-            Some(Evidence::Calibration {
-                channel: c,
-                fitted: p.value,
-                fitted_std_error: p.std_error,
-                measured,
-                measured_on,
-                measured_std_error,
-                agrees: (p.value - measured).abs() <= CALIBRATION_AGREES * combined,
-            })
-        })
-        .collect()
-}
-
 /// How many of the candidates whose axles are a tyre a not-identifiable
 /// verdict names.
 pub(crate) const CLOSEST: usize = 3;
@@ -323,7 +298,7 @@ pub(crate) fn left(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnose::report::CalibrationSource;
+    use crate::diagnose::model::channels::Channel;
 
     fn offset(name: &str, value: f64, std_error: f64) -> ParameterValue {
         ParameterValue {
@@ -341,37 +316,6 @@ mod tests {
             fold_noise_dof: None,
             traded: None,
         }
-    }
-
-    #[test]
-    fn a_fitted_offset_agrees_with_the_standstills_within_three_combined_standard_errors() {
-        let on = CalibrationSource::Standstills;
-        let calibrated: Calibrated = [None, Some((-0.600, 0.001, on)), Some((0.0, 0.001, on))];
-        // 3·√(0.004² + 0.001²) = 0.0124 m/s².
-        let params = [
-            offset("sensor_bias.ay", -0.612, 0.004),
-            offset("sensor_bias.yaw_rate", 0.01, 0.001),
-            offset("sensor_bias.beta", 0.02, f64::NAN),
-        ];
-        let e = calibration_evidence(&params, &calibrated);
-        // No yaw-rate calibration, no beta standard error: ay alone.
-        assert_eq!(e.len(), 1);
-        let Evidence::Calibration {
-            agrees, channel, ..
-        } = &e[0]
-        else {
-            panic!("{e:?}")
-        };
-        assert!(*agrees && *channel == Channel::Ay);
-        let e = calibration_evidence(&[offset("sensor_bias.ay", -0.613, 0.004)], &calibrated);
-        let Evidence::Calibration { agrees, .. } = &e[0] else {
-            panic!("{e:?}")
-        };
-        assert!(!agrees);
-        // Another effect's parameter is no offset.
-        assert!(
-            calibration_evidence(&[offset("road_bank.bank", -0.6, 0.001)], &calibrated).is_empty()
-        );
     }
 
     #[test]

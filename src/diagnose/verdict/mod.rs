@@ -10,6 +10,7 @@
 //! Units: SI, rad; held-out errors J dimensionless.
 
 pub(crate) mod baseline;
+pub(crate) mod calibration;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
 pub(crate) mod pairs;

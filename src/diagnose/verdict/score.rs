@@ -76,8 +76,10 @@ pub(crate) struct Context<'a> {
 }
 
 /// Each response channel's offset measured on the runs' standstills (else
-/// straights), with its standard error ([`crate::measured::calibration`]).
-pub(crate) type Calibrated = [Option<(f64, f64, CalibrationSource)>; 3];
+/// straights), with its standard error ([`crate::measured::calibration`]),
+/// and the logged bank the standstills' `ay` was read through, its mean
+/// there in rad (None: no bank column, or not `ay` on standstills).
+pub(crate) type Calibrated = [Option<(f64, f64, CalibrationSource, Option<f64>)>; 3];
 
 /// A candidate whose global stage is done ([`Context::started`]), its
 /// polish not yet: the setting, the polish's start, how it was searched.
@@ -494,7 +496,7 @@ impl<'a> Context<'a> {
             if self.calibrated.iter().any(Option::is_some) {
                 let mut q = from.clone();
                 for (slot, c) in q[s.layout.effect(i)].iter_mut().zip(&self.calibrated) {
-                    if let Some((mean, _, _)) = c {
+                    if let Some((mean, ..)) = c {
                         *slot = *mean;
                     }
                 }

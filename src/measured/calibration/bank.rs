@@ -164,13 +164,13 @@ mod tests {
         let refused = BankCheck::judge(0.20, term);
         let (standstill, straight) = (pooled(0.20 - term), pooled(0.21));
         // The straights' offset, not the standstills' 3.56 read with the bank.
-        let o = Offset::of(Some(&standstill), Some(&straight), Some(&refused)).unwrap();
+        let o = Offset::of(Some(&standstill), Some(&straight), Some(&refused), false).unwrap();
         assert_eq!((o.from, o.mean), (SpanKind::Straight, 0.21));
         // Without straights, none.
-        assert!(Offset::of(Some(&standstill), None, Some(&refused)).is_none());
+        assert!(Offset::of(Some(&standstill), None, Some(&refused), false).is_none());
         // A bank taken as logged: the standstills'.
         let taken = BankCheck::judge(0.20 - 0.3, -0.3);
-        let o = Offset::of(Some(&standstill), Some(&straight), Some(&taken)).unwrap();
+        let o = Offset::of(Some(&standstill), Some(&straight), Some(&taken), false).unwrap();
         assert_eq!(o.from, SpanKind::Standstill);
     }
 

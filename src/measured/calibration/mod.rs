@@ -331,12 +331,23 @@ fn channel_calibration(
             .any(|m| m.channel == channel && m.bank_term.is_some())
     });
     let bank = standstill.and_then(|p| bank_check(spans, channel, p.mean));
+    // Without a bank column the standstills' ay holds g·sin θ of the
+    // ground they stood on: beyond a mounted sensor's offset, that is it.
+    let unlogged_bank = channel == RunChannel::Ay
+        && !bank_removed
+        && standstill.is_some_and(|p| p.mean.abs() > PLAUSIBLE_AY_OFFSET);
     Some(ChannelCalibration {
         channel,
         unit: unit(channel),
         bank_removed,
         bank,
-        offset: Offset::of(standstill.as_ref(), straight.as_ref(), bank.as_ref()),
+        unlogged_bank,
+        offset: Offset::of(
+            standstill.as_ref(),
+            straight.as_ref(),
+            bank.as_ref(),
+            unlogged_bank,
+        ),
         standstill,
         straight,
         agreement,

@@ -275,9 +275,14 @@ pub struct ChannelCalibration {
     pub straight: Option<Pooled>,
     /// The two compared, when both are measured.
     pub agreement: Option<Agreement>,
+    /// The standstills' `ay` without a bank column reads beyond
+    /// [`super::PLAUSIBLE_AY_OFFSET`]: a slope or bank where they stood
+    /// (`g·sin θ`), not a mounted sensor's offset, so not taken.
+    pub unlogged_bank: bool,
     /// The offset the calibration gives (as evidence, and as the start of a
-    /// fitted offset): the standstills' where they are measured and their
-    /// bank reading is taken, else the straights'; None where neither is.
+    /// fitted offset): the standstills' where they are measured, their
+    /// bank reading is taken and no unlogged bank reads in them, else the
+    /// straights'; None where neither is.
     pub offset: Option<Offset>,
 }
 
@@ -296,13 +301,15 @@ impl Offset {
     /// The offset of a channel pooled over `standstill` and `straight`, the
     /// standstills' refused where a logged `bank` reading is not taken (an
     /// offset only a bank that does not act on the car, or acts with the
-    /// other sign, explains is none).
+    /// other sign, explains is none), and where `unlogged_bank` (one
+    /// beyond a mounted sensor's without a bank column).
     pub fn of(
         standstill: Option<&Pooled>,
         straight: Option<&Pooled>,
         bank: Option<&super::BankCheck>,
+        unlogged_bank: bool,
     ) -> Option<Self> {
-        let refused = bank.is_some_and(|b| !b.taken());
+        let refused = unlogged_bank || bank.is_some_and(|b| !b.taken());
         let (p, from) = match (standstill.filter(|_| !refused), straight) {
             (Some(p), _) => (p, SpanKind::Standstill),
             (None, Some(p)) => (p, SpanKind::Straight),
@@ -409,6 +416,16 @@ impl ChannelCalibration {
                 "{name}: {doubt}; read with the bank as logged{bank}: {}",
                 parts.join(", ")
             ),
+            None if self.unlogged_bank => {
+                let read = self.standstill.map_or(f64::NAN, |p| p.mean);
+                format!(
+                    "{name}: the standstills read {} {}: a slope or bank where they stood, not an offset (no bank column; beyond the {} m/s² a mounted sensor shows), so no offset taken from them, not used as evidence: {}",
+                    crate::format::fixed(read, 2),
+                    self.unit,
+                    super::PLAUSIBLE_AY_OFFSET,
+                    parts.join(", ")
+                )
+            }
             None => format!("{name} offset{bank} {}", parts.join(", ")),
         };
         if let Some(a) = &self.agreement {

@@ -37,9 +37,6 @@
 //! Units: the channel's SI unit; times in s.
 
 use super::repair::repair;
-use super::report::{CleaningReport, HeldChannel};
-use super::SEARCHED;
-use super::glitches::repair;
 use super::report::{CleaningReport, Glitch, GlitchKind, HeldChannel, Treatment};
 use super::{SEARCHED, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;

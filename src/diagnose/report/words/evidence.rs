@@ -8,7 +8,7 @@
 use super::{no_tyre_list, parameter, std_error};
 use crate::diagnose::effects::joined;
 use crate::diagnose::report::outcome::{
-    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony,
+    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, ThroughBank,
 };
 
 /// What the runs show beside a verdict's fit, in one line.
@@ -18,23 +18,36 @@ pub fn evidence(e: &Evidence) -> String {
             channel,
             fitted,
             fitted_std_error,
+            fitted_fold_std_error,
             measured,
             measured_on,
             measured_std_error,
+            through_bank,
             agrees,
-        } => format!(
-            "{}: the {} offset fitted, {fitted:.4} ± {} {unit}, {} the {}' {measured:.4} ± {} {unit}",
-            if *agrees { "confirmed" } else { "not confirmed" },
-            channel.name(),
-            std_error(*fitted_std_error),
-            if *agrees { "agrees with" } else { "differs from" },
-            match measured_on {
-                CalibrationSource::Standstills => "standstills",
-                CalibrationSource::Straights => "straights",
-            },
-            std_error(*measured_std_error),
-            unit = channel.unit(),
-        ),
+        } => {
+            let unit = channel.unit();
+            // The fold scatter the agreement was judged on, where the
+            // report says the standard error does not cover it.
+            let folds = fitted_fold_std_error.map_or_else(String::new, |j| {
+                format!(
+                    " (judged on the fold refits' scatter ± {}, which the standard error does not cover)",
+                    std_error(j)
+                )
+            });
+            format!(
+                "{}: the {} offset fitted, {fitted:.4} ± {} {unit}{folds}, {} the {}' {measured:.4} ± {} {unit}{}",
+                if *agrees { "confirmed" } else { "not confirmed" },
+                channel.name(),
+                std_error(*fitted_std_error),
+                if *agrees { "agrees with" } else { "differs from" },
+                match measured_on {
+                    CalibrationSource::Standstills => "standstills",
+                    CalibrationSource::Straights => "straights",
+                },
+                std_error(*measured_std_error),
+                through_bank.as_ref().map_or_else(String::new, |t| through(t, unit)),
+            )
+        }
         Evidence::AxlesRestored { no_tyre } => format!(
             "axles restored: the base model alone is no tyre ({}); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)",
             no_tyre_list(no_tyre)
@@ -84,6 +97,18 @@ fn fallback(f: &PairsFallback) -> String {
         joined(&f.pair, "+"),
         f.pair_reduction_percent,
         joined(&f.paired_from, ", "),
+    )
+}
+
+/// How the standstills' offset was read through the verdict's fitted bank.
+fn through(t: &ThroughBank, unit: &str) -> String {
+    let logged = match t.logged_bank {
+        Some(b) => format!("through the logged bank ({b:.4} rad there)"),
+        None => "on a flat road (no bank column)".to_string(),
+    };
+    format!(
+        " read through the bank the verdict fits ({:.4} rad where they stood: the offset was fitted with it); read {logged} they give {:.4} {unit}",
+        t.bank, t.as_logged
     )
 }
 

@@ -31,9 +31,11 @@ fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
         channel: crate::diagnose::model::channels::Channel::Ay,
         fitted,
         fitted_std_error: 0.005,
+        fitted_fold_std_error: None,
         measured: -0.6,
         measured_on: crate::diagnose::report::outcome::CalibrationSource::Standstills,
         measured_std_error: 0.001,
+        through_bank: None,
         agrees,
     };
     assert_eq!(
@@ -42,7 +44,6 @@ fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
     );
     assert!(evidence(&e(0.1, false)).starts_with("not confirmed: the ay offset fitted, 0.1000"));
 }
-
 #[test]
 fn an_explained_verdict_says_how_much_and_whether_part() {
     assert_eq!(

@@ -1,0 +1,32 @@
+//! The words of a road estimate's offsets ([`super::road`]): the sensor
+//! offsets removed from `ay` (m/s²) and the yaw rate (rad/s) before the
+//! bank was estimated from `ay − u·r` (ISO 8855), those not 0 only.
+
+/// The offsets removed, in words: those not 0 only (an offset the
+/// calibration did not take, as an `ay` beyond a mounted sensor's, is not
+/// removed, and is not said to be).
+pub(super) fn removed(ay: f64, yaw_rate: f64) -> String {
+    let mut parts = Vec::new();
+    if ay != 0.0 {
+        parts.push(format!("ay {ay:.3} m/s²"));
+    }
+    if yaw_rate != 0.0 {
+        // Four decimals, as the calibration's line; a smaller offset to
+        // two significant digits, not as 0.0000.
+        let r = if yaw_rate.abs() >= 1e-3 {
+            format!("{yaw_rate:.4}")
+        } else {
+            crate::format::readable(yaw_rate, 2)
+        };
+        parts.push(format!("yaw rate {r} rad/s"));
+    }
+    let what = if parts.len() == 1 {
+        "offset"
+    } else {
+        "offsets"
+    };
+    format!(
+        " less the {what} the calibration measured ({})",
+        parts.join(", ")
+    )
+}

@@ -115,6 +115,7 @@ mod tests {
             fold_std_error: None,
             fold_noise_std_error: None,
             fold_noise_dof: None,
+            traded: None,
         }
     }
 

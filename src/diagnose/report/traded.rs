@@ -98,9 +98,9 @@ mod tests {
         // The jackknife of 0.100, 0.101, 0.099: √(2/3·2e-6) = 0.001155.
         let j = t.sum_fold_std_error.expect("jackknife");
         assert!((j - (2.0f64 / 3.0 * 2e-6).sqrt()).abs() < 1e-12, "{j}");
-        assert!(traded(&a, &b, -0.5 * 0.0117 * 0.0114, &[]).is_none());
+        assert!(traded(&a, &b, -0.5 * 0.0006 * 0.0006, &[]).is_none());
         // A positive correlation determines the difference, not the sum.
-        assert!(traded(&a, &b, 0.99 * 0.0117 * 0.0114, &[]).is_none());
+        assert!(traded(&a, &b, 0.99 * 0.0006 * 0.0006, &[]).is_none());
     }
 
     #[test]

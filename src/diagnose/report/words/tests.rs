@@ -26,7 +26,6 @@ pub(super) fn explained(reduction_percent: f64) -> Verdict {
 
 #[test]
 fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
-    use crate::diagnose::report::outcome::Evidence;
     let e = |fitted: f64, agrees: bool| Evidence::Calibration {
         channel: crate::diagnose::model::channels::Channel::Ay,
         fitted,
@@ -574,7 +573,6 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
 
 #[test]
 fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
-    use crate::diagnose::report::outcome::VerdictWarning;
     let w = VerdictWarning::GapRemains {
         heldout_error_after: 1.366,
         noise_level: 1.0,

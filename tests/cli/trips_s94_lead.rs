@@ -154,12 +154,7 @@ fn identify_says_the_sigma_of_the_fit_it_writes() {
         return;
     };
     let said = at_pressure(&rig, "pac89", &out, &[]);
-    let sigma = said
-        .lines()
-        .find_map(|l| l.strip_prefix("  σ "))
-        .and_then(|l| l.split(' ').next())
-        .unwrap_or_else(|| panic!("{said}"))
-        .to_string();
+    let sigma = sigma_line(&said);
     let line = said
         .lines()
         .find(|l| l.starts_with("  writing the direct fit"))
@@ -175,4 +170,13 @@ fn identify_says_the_sigma_of_the_fit_it_writes() {
         file.contains(&format!("sigma {sigma} %")),
         "{sigma} not in {file}"
     );
+}
+
+/// The σ an `identify` terminal `said` on its "  σ " line, as printed.
+pub(crate) fn sigma_line(said: &str) -> String {
+    said.lines()
+        .find_map(|l| l.strip_prefix("  σ "))
+        .and_then(|l| l.split(' ').next())
+        .unwrap_or_else(|| panic!("{said}"))
+        .to_string()
 }

@@ -4,6 +4,7 @@
 //! said pooled where the selection pools none.
 
 use super::trips_s69_identify::{at_pressure, hoosier};
+use super::trips_s94_lead::sigma_line;
 use super::*;
 
 /// Pure lateral points (slip angles ±0.2 rad in 0.02 steps) at loads
@@ -229,12 +230,7 @@ fn the_pac89_two_stage_writing_line_says_the_sigma_written() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("h.toml");
     let said = at_pressure(&rig, "pac89", &out, &["--camber", "0"]);
-    let sigma = said
-        .lines()
-        .find_map(|l| l.strip_prefix("  σ "))
-        .and_then(|l| l.split(' ').next())
-        .unwrap_or_else(|| panic!("{said}"))
-        .to_string();
+    let sigma = sigma_line(&said);
     let line = said
         .lines()
         .find(|l| l.starts_with("  writing the "))

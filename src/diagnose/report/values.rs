@@ -154,6 +154,27 @@ impl ParameterValue {
         }
     }
 
+    /// `name` fitted to `value` in `unit` with standard error `std_error`,
+    /// determined, on no bound, nothing else known: the tests' parameter.
+    #[cfg(test)]
+    pub(crate) fn plain(name: &str, unit: &'static str, value: f64, std_error: f64) -> Self {
+        Self {
+            name: name.into(),
+            unit,
+            value,
+            std_error,
+            at_bound: false,
+            bound: None,
+            determined: true,
+            unseen: false,
+            held: None,
+            fold_std_error: None,
+            fold_noise_std_error: None,
+            fold_noise_dof: None,
+            traded: None,
+        }
+    }
+
     /// The same with the fold refits' jackknife ([`jackknife`]) and the one
     /// the runs' noise alone gives, `noise.0` standard errors with `noise.1`
     /// degrees of freedom (None: not known).

@@ -102,21 +102,7 @@ mod tests {
     use super::*;
 
     fn offset(name: &str, value: f64, std_error: f64) -> ParameterValue {
-        ParameterValue {
-            name: name.into(),
-            unit: "m/s²",
-            value,
-            std_error,
-            at_bound: false,
-            bound: None,
-            determined: true,
-            unseen: false,
-            held: None,
-            fold_std_error: None,
-            fold_noise_std_error: None,
-            fold_noise_dof: None,
-            traded: None,
-        }
+        ParameterValue::plain(name, "m/s²", value, std_error)
     }
 
     #[test]

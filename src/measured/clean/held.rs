@@ -233,6 +233,25 @@ mod tests {
     use super::super::test_signals::gauss_noise;
     use super::*;
 
+    /// A run at 15 m/s with `steer` over `t` and a still gyro, nothing else
+    /// logged.
+    fn straight_at_15(t: Vec<f64>, steer: Vec<f64>) -> MeasuredRun {
+        let n = t.len();
+        MeasuredRun {
+            path: "r.csv".into(),
+            t,
+            speed: vec![15.0; n],
+            steer,
+            yaw_rate: vec![0.0; n],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        }
+    }
+
     /// A steer held at 20 Hz in a 100 Hz log whose quantised value repeats
     /// across updates on a straight: its rate is the logger's, 20 Hz, as
     /// "every 5 samples" says, not the rate of its changes.
@@ -250,19 +269,7 @@ mod tests {
             };
             (v / 2e-4).round() * 2e-4
         };
-        let mut run = crate::measured::MeasuredRun {
-            path: "r.csv".into(),
-            t: t.clone(),
-            speed: vec![15.0; n],
-            steer: (0..n).map(update).collect(),
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let mut run = straight_at_15(t.clone(), (0..n).map(update).collect());
         let mut report = CleaningReport::default();
         treat_held(&mut run, 5.0, &mut report);
         let h = &report.held[0];
@@ -368,19 +375,7 @@ mod tests {
         assert!((h.period - 0.05).abs() < 1e-9, "{}", h.period);
         assert!(rate_changes(&t, super::super::median_interval(&t)));
         assert!(!rate_changes(&t[..3000], 0.01));
-        let mut run = crate::measured::MeasuredRun {
-            path: "r.csv".into(),
-            t: t.clone(),
-            speed: vec![15.0; t.len()],
-            steer: x,
-            yaw_rate: vec![0.0; t.len()],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let mut run = straight_at_15(t.clone(), x);
         let mut report = CleaningReport::default();
         treat_held(&mut run, 5.0, &mut report);
         let h = &report.held[0];
@@ -412,19 +407,7 @@ mod tests {
         let mut steer: Vec<f64> = (0..n).map(|i| at(i / 5)).collect();
         let frozen = steer[2000];
         steer[2000..2040].iter_mut().for_each(|s| *s = frozen);
-        let mut run = crate::measured::MeasuredRun {
-            path: "r.csv".into(),
-            t: t.clone(),
-            speed: vec![15.0; n],
-            steer,
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let mut run = straight_at_15(t.clone(), steer);
         let mut report = CleaningReport::default();
         treat_held(&mut run, 5.0, &mut report);
         assert_eq!(report.counts.stuck, 1, "{:?}", report.glitches);

@@ -323,19 +323,10 @@ pub(super) fn fitted(
     bound: Option<Bound>,
 ) -> ParameterValue {
     ParameterValue {
-        name: name.into(),
-        unit,
-        value: v,
-        std_error: f64::NAN,
         at_bound: bound.is_some(),
         bound,
         determined: false,
-        unseen: false,
-        held: None,
-        fold_std_error: None,
-        fold_noise_std_error: None,
-        fold_noise_dof: None,
-        traded: None,
+        ..ParameterValue::plain(name, unit, v, f64::NAN)
     }
 }
 

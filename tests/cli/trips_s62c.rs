@@ -64,12 +64,18 @@ fn identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data() {
         line.contains("signs as tyre-eval's points give them"),
         "{line}"
     );
+    // At the pressure of the reversal where the report names one (the scan
+    // runs at the data's pressures), else at the file's own.
+    let pressure = e["reverses_at_pressure"]
+        .as_f64()
+        .map_or(String::new(), |p| format!(",{p}"));
     let degrees: Vec<f64> = (1..=200).map(|k| 0.1 * k as f64).collect();
     let rows: String = degrees
         .iter()
-        .map(|d| format!("{fz},0,{},{camber},11.2\n", side * d.to_radians()))
+        .map(|d| format!("{fz},0,{},{camber},11.2{pressure}\n", side * d.to_radians()))
         .collect();
-    let points = format!("fz,kappa,alpha,camber,speed\n{rows}");
+    let header = if pressure.is_empty() { "" } else { ",pressure" };
+    let points = format!("fz,kappa,alpha,camber,speed{header}\n{rows}");
     let fy = |mode: &str| {
         let (o, written) = super::tyre_eval::eval(dir.path(), &out, &points, &["--mode", mode]);
         assert!(o.status.success(), "{}", stderr(&o));

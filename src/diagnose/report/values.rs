@@ -138,25 +138,16 @@ impl ParameterValue {
             physical(q.limits.0, value - lo <= near).or(physical(q.limits.1, hi - value <= near))
         });
         Self {
-            name: format!("{group}.{}", q.name),
-            unit: q.unit,
-            value,
-            std_error,
             at_bound: bound.is_some(),
             bound,
             determined: std_error.is_finite() && std_error <= hi - lo,
-            unseen: false,
-            held: None,
-            fold_std_error: None,
-            fold_noise_std_error: None,
-            fold_noise_dof: None,
-            traded: None,
+            ..Self::plain(&format!("{group}.{}", q.name), q.unit, value, std_error)
         }
     }
 
     /// `name` fitted to `value` in `unit` with standard error `std_error`,
-    /// determined, on no bound, nothing else known: the tests' parameter.
-    #[cfg(test)]
+    /// determined, on no bound, nothing else known ([`ParameterValue::of`]
+    /// finds its bound and whether the runs determine it).
     pub(crate) fn plain(name: &str, unit: &'static str, value: f64, std_error: f64) -> Self {
         Self {
             name: name.into(),

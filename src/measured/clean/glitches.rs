@@ -447,11 +447,7 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
                 kind: f.kind,
                 value: x[f.start],
                 samples: f.len,
-                treatment: if ch.is_input() {
-                    Treatment::Repaired
-                } else {
-                    Treatment::Masked
-                },
+                treatment: Treatment::of(ch),
                 dropped_with: None,
             });
         }

@@ -189,11 +189,7 @@ pub fn treat_held(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningRe
                 kind: GlitchKind::Stuck,
                 value: x[s],
                 samples: e - s,
-                treatment: if ch.is_input() {
-                    Treatment::Repaired
-                } else {
-                    Treatment::Masked
-                },
+                treatment: Treatment::of(ch),
                 dropped_with: None,
             });
             if ch.is_input() {

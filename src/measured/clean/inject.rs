@@ -71,11 +71,7 @@ pub fn inject_glitches(run: &mut MeasuredRun, seed: u64) -> Vec<Glitch> {
             kind,
             value,
             samples: len,
-            treatment: if ch.is_input() {
-                Treatment::Repaired
-            } else {
-                Treatment::Masked
-            },
+            treatment: Treatment::of(ch),
             dropped_with: None,
         });
     }

@@ -239,6 +239,18 @@ pub enum Treatment {
     Split,
 }
 
+impl Treatment {
+    /// What a glitch left in `channel` gets: an input is repaired (the
+    /// model needs it at every step), a response masked.
+    pub(crate) fn of(channel: RunChannel) -> Self {
+        if channel.is_input() {
+            Self::Repaired
+        } else {
+            Self::Masked
+        }
+    }
+}
+
 /// One glitch.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Glitch {

@@ -317,19 +317,12 @@ fn read_run_lacking(
         }
         check_slope_reading(path, &c, &lateral)?;
     }
-    let run = MeasuredRun {
-        path: path.to_path_buf(),
-        t,
-        speed,
-        steer,
-        yaw_rate,
-        ay,
-        beta,
-        roll,
-        bank,
-        ax,
-        masked: Vec::new(),
-    };
+    let run = MeasuredRun::new(path, t, speed, steer, yaw_rate)
+        .with_ay(ay)
+        .with_beta(beta)
+        .with_roll(roll)
+        .with_bank(bank)
+        .with_ax(ax);
     Ok((run, RunHeader { unread, slips }, absent))
 }
 

@@ -408,19 +408,7 @@ mod tests {
 
     fn run(t: Vec<f64>) -> MeasuredRun {
         let n = t.len();
-        MeasuredRun {
-            path: PathBuf::from("r.csv"),
-            speed: vec![20.0; n],
-            steer: vec![0.0; n],
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-            t,
-        }
+        MeasuredRun::new("r.csv", t, vec![20.0; n], vec![0.0; n], vec![0.0; n])
     }
 
     #[test]

@@ -278,7 +278,7 @@ impl Effect for AccelerometerPosition {
     /// A correction to the accelerometer's position the campaign states
     /// (`[sensors] accelerometer_x`, 0 where none).
     fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
-        e.sensors.accelerometer_x = e.sensors.accelerometer_x + p[0];
+        e.sensors.accelerometer_x += p[0];
     }
 }
 

@@ -121,14 +121,15 @@ mod tests {
     }
 
     /// Round 25B's road car stated as `truck`: the base 20.1 / 34.3 1/rad
-    /// (inside road's 8–35 only), fitted with `accelerometer_position`
+    /// (inside racing slicks' 12–50, largest |z| 0.93, and road's 8–35,
+    /// 1.91), fitted with `accelerometer_position`
     /// 14.1 / 19.9 (inside road's and racing slicks' 12–50, nearest road).
     #[test]
     fn axles_outside_the_stated_class_but_inside_another_name_that_class_nearest_first() {
         let truck = AxlePrior::of(TyreClass::Truck);
         assert_eq!(
             holding(TyreClass::Truck, [20.1, 34.3], None),
-            [TyreClass::Road]
+            [TyreClass::RacingSlick, TyreClass::Road]
         );
         assert_eq!(
             holding(TyreClass::Truck, [14.1, 19.9], None),
@@ -151,11 +152,14 @@ mod tests {
         let m = class_mismatch(&truck, Some((&base, &why)), std::iter::empty(), 30.0).unwrap();
         assert_eq!(
             (m.stated, m.holding.clone()),
-            (TyreClass::Truck, vec![TyreClass::Road])
+            (
+                TyreClass::Truck,
+                vec![TyreClass::RacingSlick, TyreClass::Road]
+            )
         );
         assert_eq!(
             (m.stated_cornering, m.holding_cornering),
-            ([4.0, 10.0], [8.0, 35.0])
+            ([4.0, 10.0], [12.0, 50.0])
         );
         assert!(m.effects.is_empty() && m.reduction_percent.is_none());
         // Axles also on a limit or peaking early: no class mends that.

@@ -174,8 +174,10 @@ impl Options {
             for (name, _) in &self.hold {
                 crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
             }
-            hold_rules::check_signs(None, &self.hold)?;
-            return holds::check_hold_values(None, &self.hold);
+            // The reader's own limits first (their words are the files'),
+            // then the sign rules only the fit's boxes encode.
+            holds::check_hold_values(None, &self.hold)?;
+            return hold_rules::check_signs(None, &self.hold);
         };
         let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
         for (name, _) in &self.hold {
@@ -188,8 +190,8 @@ impl Options {
                 .into());
             }
         }
-        hold_rules::check_signs(Some(model), &self.hold)?;
-        holds::check_hold_values(Some(model), &self.hold)
+        holds::check_hold_values(Some(model), &self.hold)?;
+        hold_rules::check_signs(Some(model), &self.hold)
     }
 }
 

@@ -5,7 +5,7 @@
 //! the scenario's words do not say ([`checks`]).
 
 pub(crate) mod checks;
-mod critical;
+pub(crate) mod critical;
 mod idle_effects;
 mod limits;
 pub(crate) mod nominal_load;
@@ -173,7 +173,9 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     // linear tyres always, on others where the run did not settle; its
     // "steady" values are no steady state's, so none are given.
     let unstable = match &sc.manoeuvre {
-        Manoeuvre::StepSteer(s) => critical::above_critical(&sc.model, s.speed),
+        Manoeuvre::StepSteer(s) => {
+            critical::above_critical(&sc.model, sc.integrator.friction, s.speed)
+        }
         _ => None,
     }
     .filter(|_| checks::gripless(&sc) || metrics.as_ref().is_some_and(|m| !m.settled));

@@ -23,12 +23,60 @@ use serde::Serialize;
 /// such runs of noise alone. Their replays are the candidates' all-run
 /// fits, so the scatter is an in-sample one: a floor on what a new run
 /// shows.
+///
+/// It widens the predictions only where the reference leaves a gap above
+/// the noise (its held-out error above the noise level: model-form error
+/// for the scatter to stand for). A campaign run's replays start from its
+/// first sample, whose noise starts both candidates off the car's state,
+/// and the transient that follows moves `χ²_B − χ²_A` by more than their
+/// difference (a sideslip a floor off is an ay several floors off for
+/// tenths of a second): on a car the reference matches to the noise (a
+/// linear car logged 60 ms late) that read as 4.7 times the noise's
+/// scatter and called a test "not recommended" that separated the pair on
+/// every run driven (5.8 ± 1.2 over eight seeds, the noise's ± 1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Calibration {
     /// The runs measured (D of at least [`CALIBRATING_D`]).
     pub runs: usize,
     /// RMS of their `z`, at least 1 (1 where no run is measured).
     pub inflation: f64,
+    /// Whether it widens the predictions: the reference leaves a gap above
+    /// the noise ([`ReferenceGap::model_form`]).
+    pub applied: bool,
+    /// The reference's held-out error and the noise level it is read
+    /// against.
+    pub reference: ReferenceGap,
+}
+
+impl Calibration {
+    /// The factor the noise's part of an uncertainty is widened by:
+    /// [`Calibration::inflation`] where applied, else 1.
+    pub fn widening(&self) -> f64 {
+        if self.applied {
+            self.inflation
+        } else {
+            1.0
+        }
+    }
+}
+
+/// The gap the reference leaves: its held-out error against the noise
+/// level (the diagnosis's J after and J_n).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ReferenceGap {
+    /// The reference's held-out error J.
+    pub heldout_error: f64,
+    /// The held-out J of the noise alone.
+    pub noise_level: f64,
+}
+
+impl ReferenceGap {
+    /// Whether the reference leaves a gap above the noise (J > J_n, the
+    /// diagnosis's "gap above noise" above 0): model-form error its
+    /// replays do not hold.
+    pub fn model_form(&self) -> bool {
+        self.heldout_error > self.noise_level
+    }
 }
 
 /// The least separation D of a campaign run whose measurement calibrates
@@ -36,8 +84,12 @@ pub struct Calibration {
 /// the candidates' difference.
 pub const CALIBRATING_D: f64 = 1.0;
 
-/// [`Calibration`] from each run's `(D², χ²_B − χ²_A)`.
-pub(crate) fn calibration(runs: impl Iterator<Item = (f64, f64)>) -> Calibration {
+/// [`Calibration`] from each run's `(D², χ²_B − χ²_A)`, for a reference
+/// that leaves `gap`.
+pub(crate) fn calibration(
+    runs: impl Iterator<Item = (f64, f64)>,
+    gap: ReferenceGap,
+) -> Calibration {
     let z: Vec<f64> = runs
         .filter(|(d2, m)| *d2 >= CALIBRATING_D * CALIBRATING_D && m.is_finite())
         .map(|(d2, m)| (m - d2) / (2.0 * d2.sqrt()))
@@ -46,6 +98,8 @@ pub(crate) fn calibration(runs: impl Iterator<Item = (f64, f64)>) -> Calibration
     Calibration {
         runs: z.len(),
         inflation: if z.is_empty() { 1.0 } else { rms.max(1.0) },
+        applied: gap.model_form(),
+        reference: gap,
     }
 }
 

@@ -137,6 +137,15 @@ pub struct Fitted {
     /// The noise floor of each channel by [`crate::diagnose::Channel`]
     /// index (0 where no run measures it).
     pub noise_floors: [f64; 3],
+    /// The noise of one sample of each channel, by the same index: its
+    /// high-frequency scatter (the median over runs), the white noise a
+    /// replay's start takes from the sample it starts at and an averaged
+    /// start shrinks by √n. It is the floor where the floor is the
+    /// scatter; an estimated output's floor (a sideslip estimate's 0.005
+    /// rad) is the uncertainty its residuals are weighed by, which may be
+    /// ten times its scatter and which averaging samples does not shrink,
+    /// so it is no start's noise ([`Fitted::start_noise_of`]).
+    pub start_noise: [f64; 3],
     /// The scale of each channel's residuals in the fits.
     pub scales: [f64; 3],
     /// The held-out J of the noise alone.
@@ -171,14 +180,17 @@ impl Fitted {
     pub fn of(d: &Diagnosis) -> Self {
         let mut noise_floors = [0.0; 3];
         let mut scales = [1.0; 3];
+        let mut start_noise = [0.0; 3];
         for n in &d.gap.noise {
             noise_floors[n.channel.index()] = n.noise_floor;
             scales[n.channel.index()] = n.scale;
+            start_noise[n.channel.index()] = Self::start_noise_of(n.noise_floor, Some(n.scatter));
         }
         Self {
             front: d.base.front.clone(),
             rear: d.base.rear.clone(),
             noise_floors,
+            start_noise,
             scales,
             noise_level: d.gap.noise_level,
             candidates: d
@@ -198,6 +210,16 @@ impl Fitted {
                     screen_percent: s.threshold_percent - s.margin_percent,
                 })
                 .collect(),
+        }
+    }
+
+    /// One sample's noise of a channel of noise floor `floor` and
+    /// high-frequency scatter `scatter` ([`Fitted::start_noise`]): the
+    /// scatter, at most the floor; the floor where no scatter is known.
+    pub fn start_noise_of(floor: f64, scatter: Option<f64>) -> f64 {
+        match scatter {
+            Some(s) if s.is_finite() && s > 0.0 => s.min(floor),
+            _ => floor,
         }
     }
 

@@ -33,7 +33,7 @@ pub mod separation;
 
 pub use advice::{Advised, AdvisedBest, Missing, Recommendation, Worth};
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
-pub use calibration::{Calibration, CALIBRATING_D};
+pub use calibration::{Calibration, ReferenceGap, CALIBRATING_D};
 pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
 pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
@@ -453,7 +453,16 @@ impl SetContext<'_> {
         ];
         let spread = separation::parameter_spread(members, self.base, &observe, floors, logging);
         let set = &self.c.settings;
-        let terms = separation::start_terms(&logged, pair, floors, set.step, set.sample_rate);
+        // The start is settled over the lead-in as a driven run's is
+        // ([`separation::settled_start`]): its noise is one sample's over √n.
+        let n = separation::settled_start(&logged).map_or(1, |(_, n)| n) as f64;
+        let start_sd = self.fitted.start_noise.map(|s| s / n.sqrt());
+        let terms = separation::start_terms(
+            &logged,
+            pair,
+            (floors, &start_sd),
+            (set.step, set.sample_rate),
+        );
         // χ²_B − χ²_A = D² + start + 2·D·(noise + parameters), its mean
         // D² plus the start's shift; the measured separation is its root.
         // The noise's and the start's parts widened by the scatter the
@@ -508,7 +517,7 @@ fn design_set(
     ranked.truncate(req.top.max(1));
     let (campaign_separation, calibration) = campaign_separation(cx);
     for s in ranked.iter_mut().map(|(s, _)| s).chain(&mut named) {
-        cx.complete(s, calibration.inflation, campaign_separation);
+        cx.complete(s, calibration.widening(), campaign_separation);
     }
     let best = ranked.first().map(|(_, p)| p.clone());
     let ranked: Vec<Scored> = ranked.into_iter().map(|(s, _)| s).collect();
@@ -550,20 +559,18 @@ fn campaign_separation(cx: &SetContext) -> (f64, Calibration) {
                 .collect()
         })
         .collect();
+    let gap = calibration::ReferenceGap {
+        heldout_error: cx.members[0].heldout_error,
+        noise_level: cx.fitted.noise_level,
+    };
     let total = |k: usize| per_run.iter().map(|d| d[k].0).sum::<f64>().sqrt();
     let Some(weakest) = (0..cx.models.len() - 1).min_by(|&a, &b| total(a).total_cmp(&total(b)))
     else {
-        return (
-            f64::NAN,
-            Calibration {
-                runs: 0,
-                inflation: 1.0,
-            },
-        );
+        return (f64::NAN, calibration(std::iter::empty(), gap));
     };
     (
         total(weakest),
-        calibration(per_run.iter().map(|d| d[weakest])),
+        calibration(per_run.iter().map(|d| d[weakest]), gap),
     )
 }
 

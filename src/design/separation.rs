@@ -153,33 +153,33 @@ pub const SETTLED_STEER: f64 = 0.1 * std::f64::consts::PI / 180.0;
 pub(crate) struct StartTerms {
     /// `χ²_B − χ²_A` on the reference's own noise-free response (D²).
     pub(crate) d2: f64,
-    /// Its expected change from the first sample's noise.
+    /// Its expected change from the noise of the start.
     pub(crate) shift: f64,
     /// The variance that noise adds to it.
     pub(crate) variance: f64,
 }
 
-/// How the noise of a driven run's first sample moves `χ²_B − χ²_A`: a
-/// replay starts from that sample, so its noise starts both candidates off
-/// the car's state, and a transient follows (a sideslip one noise floor
-/// off is a lateral acceleration several floors off for a few tenths of a
+/// How the noise of a driven run's start moves `χ²_B − χ²_A`: a replay
+/// starts from the measured start, so its noise starts both candidates off
+/// the car's state, and a transient follows (a sideslip one noise floor off
+/// is a lateral acceleration several floors off for a few tenths of a
 /// second, and a delayed sensor holds it for its delay). Each start
-/// channel the run measures is moved by ±1 noise floor on the reference's
-/// own noise-free response; the change `e(±)` is taken as quadratic in the
-/// start's error `x` (in floors, standard normal):
-/// `e = b·x + a·x²` with `a = (e₊ + e₋)/2`, `b = (e₊ − e₋)/2`, so its mean is
-/// `a` and its variance `b² + 2a²`, summed over the channels.
+/// channel the run measures is moved by ±`start_sd` (its standard
+/// deviation, by channel index: one sample's noise, [`Fitted::start_noise`],
+/// over √n for a start averaged over n samples — not the floor, which for
+/// an estimated sideslip is ten times its noise) on the reference's own
+/// noise-free response; the change `e(±)` is taken as quadratic in the
+/// start's error `x` (in standard deviations, standard normal):
+/// `e = b·x + a·x²` with `a = (e₊ + e₋)/2`, `b = (e₊ − e₋)/2`, so its mean
+/// is `a` and its variance `b² + 2a²`, summed over the channels.
+///
+/// [`Fitted::start_noise`]: super::Fitted::start_noise
 pub(crate) fn start_terms(
     template: &MeasuredRun,
     models: [&Augmented; 2],
-    floors: &[f64; 3],
-    step: f64,
-    rate: f64,
+    (floors, start_sd): (&[f64; 3], &[f64; 3]),
+    (step, rate): (f64, f64),
 ) -> StartTerms {
-    // The start is settled over the lead-in as a measured run's is
-    // ([`settled_start`]): its noise is the floor over √n.
-    let n = settled_start(template).map_or(1, |(_, n)| n);
-    let start_noise = 1.0 / (n as f64).sqrt();
     // At every sample: a run without a sideslip scores from later on.
     let clean = Prepared::new(template, step, 1e6).observe_at(models[0], &template.t);
     let mut car = template.clone();
@@ -194,20 +194,24 @@ pub(crate) fn start_terms(
         let p = Prepared::new(r, step, rate);
         chi_square(&p, models[1], floors) - chi_square(&p, models[0], floors)
     };
-    let d2 = diff(&car);
+    let base = diff(&car);
+    // The replay starts at the first sample not masked.
+    let first = (0..car.t.len())
+        .find(|i| !car.masked.contains(i))
+        .unwrap_or(0);
     let (mut shift, mut variance) = (0.0, 0.0);
     for ch in [Channel::YawRate, Channel::Beta] {
-        let f = floors[ch.index()] * start_noise;
+        let f = start_sd[ch.index()];
         if f <= 0.0 || (ch == Channel::Beta && car.beta.is_none()) {
             continue;
         }
         let moved = |sign: f64| {
             let mut r = car.clone();
             match ch {
-                Channel::YawRate => r.yaw_rate[0] += sign * f,
-                _ => r.beta.as_mut().expect("measured")[0] += sign * f,
+                Channel::YawRate => r.yaw_rate[first] += sign * f,
+                _ => r.beta.as_mut().expect("measured")[first] += sign * f,
             }
-            diff(&r) - d2
+            diff(&r) - base
         };
         let (up, down) = (moved(1.0), moved(-1.0));
         let (a, b) = (0.5 * (up + down), 0.5 * (up - down));
@@ -217,7 +221,7 @@ pub(crate) fn start_terms(
         }
     }
     StartTerms {
-        d2,
+        d2: base,
         shift,
         variance,
     }

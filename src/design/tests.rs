@@ -5,6 +5,7 @@
 //! the output are the same response), and runs of a car that behaves as
 //! the reference measure the separation expected, within its uncertainty.
 
+use super::calibration::ReferenceGap;
 use super::*;
 use crate::diagnose::campaign::DiagnoseSettings;
 use crate::diagnose::{diagnose, Diagnosis};
@@ -328,13 +329,39 @@ fn a_separation_expected_near_zero_has_a_finite_uncertainty_and_a_large_one_the_
 fn the_calibration_is_the_rms_of_the_runs_z_over_those_that_separate_by_a_noise_floor() {
     // Runs measuring D² + 2D·z: z = +2 and −2 give an RMS of 2; a run
     // below one noise floor is left out, whatever it measures.
-    let c = calibration([(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0), (0.25, 90.0)].into_iter());
+    let c = calibration(
+        [(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0), (0.25, 90.0)].into_iter(),
+        GAP,
+    );
     assert_eq!(c.runs, 2);
     assert!((c.inflation - 2.0).abs() < 1e-12, "{c:?}");
     // Runs that measure their prediction: no widening below the noise's.
-    let c = calibration([(16.0, 16.0), (4.0, 4.5)].into_iter());
+    let c = calibration([(16.0, 16.0), (4.0, 4.5)].into_iter(), GAP);
     assert_eq!(c.inflation, 1.0);
-    assert_eq!(calibration(std::iter::empty()).runs, 0);
+    assert_eq!(calibration(std::iter::empty(), GAP).runs, 0);
+}
+
+/// A reference that leaves a gap above the noise (J 1.073 against 0.941,
+/// the book's proving ground).
+const GAP: ReferenceGap = ReferenceGap {
+    heldout_error: 1.073,
+    noise_level: 0.941,
+};
+
+#[test]
+fn the_scatter_widens_only_where_the_reference_leaves_a_gap_above_the_noise() {
+    let runs = [(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0)];
+    let c = calibration(runs.into_iter(), GAP);
+    assert!(c.applied && (c.widening() - 2.0).abs() < 1e-12, "{c:?}");
+    // The residuals at the noise (J 0.817 against 0.970, a linear car
+    // logged late): the same scatter measured, said, and not applied.
+    let matched = ReferenceGap {
+        heldout_error: 0.817,
+        noise_level: 0.970,
+    };
+    let c = calibration(runs.into_iter(), matched);
+    assert!((c.inflation - 2.0).abs() < 1e-12, "{c:?}");
+    assert!(!c.applied && c.widening() == 1.0, "{c:?}");
 }
 
 #[test]

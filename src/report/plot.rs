@@ -100,6 +100,23 @@ pub fn tick_label(v: f64, span: f64) -> String {
     s
 }
 
+/// How many x tick labels fit across a plot area `width` px wide without
+/// running together: each as wide as the wider of the axis's end labels
+/// (written as [`tick_label`] writes them) and one character more (a
+/// tick between the ends may be a digit longer, 90000 to 130000), plus two
+/// characters of space, a character taken as 0.6 of the font's size; at
+/// most plotters' 10, at least 2. Six-digit stiffnesses in N/rad on a map
+/// 500 px wide ran together at 10 (`100000110000120000`).
+pub fn x_label_count(width: u32, (x0, x1): (f64, f64)) -> usize {
+    let chars = [x0, x1]
+        .map(|v| tick_label(v, x1 - x0).chars().count())
+        .into_iter()
+        .max()
+        .unwrap_or(1);
+    let per = (chars + 3) as f64 * 0.6 * f64::from(LABEL_PX);
+    ((f64::from(width) / per).floor() as usize).clamp(2, 10)
+}
+
 /// A stack of panels (or a grid with `columns` > 1).
 #[derive(Debug, Clone)]
 pub struct Figure {
@@ -300,6 +317,8 @@ where
         x: (x0, x1),
         y: (y0, y1),
     } = panel.axes();
+    // The x axis's width: the plot's less its margins and the y labels.
+    let axis_width = plot.dim_in_pixel().0.saturating_sub(2 * 8 + 64);
     let mut chart = ChartBuilder::on(&plot)
         .margin(8)
         .x_label_area_size(36)
@@ -307,6 +326,7 @@ where
         .build_cartesian_2d(x0..x1, y0..y1)?;
     chart
         .configure_mesh()
+        .x_labels(x_label_count(axis_width, (x0, x1)))
         .x_desc(&panel.x_label)
         .y_desc(&panel.y_label)
         .label_style(("sans-serif", LABEL_PX))

@@ -240,3 +240,15 @@ fn a_long_panel_title_stays_inside_its_panel() {
         }
     }
 }
+
+#[test]
+fn six_digit_tick_labels_are_spaced_to_fit_the_axis() {
+    // 90000–130000 N/rad: labels of up to 6 digits, (6 + 1 + 2)·0.6·13 =
+    // 70.2 px each: 7 across 500 px, and none of them closer than a label.
+    let n = x_label_count(500, (85000.0, 135000.0));
+    assert_eq!(n, 7);
+    assert!(500.0 / n as f64 >= 6.0 * 0.6 * f64::from(LABEL_PX), "{n}");
+    // Short labels on a wide axis keep plotters' 10; a narrow one 2.
+    assert_eq!(x_label_count(1200, (0.0, 10.0)), 10);
+    assert_eq!(x_label_count(40, (85000.0, 135000.0)), 2);
+}

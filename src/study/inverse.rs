@@ -26,6 +26,12 @@ impl Map {
         metric.of_sample(&self.samples[i * self.rear.len() + j])
     }
 
+    /// The metric at grid point (i, j) as the step measures it
+    /// ([`Metric::measured`]: no overshoot below the threshold).
+    pub fn measured(&self, metric: Metric, i: usize, j: usize) -> f64 {
+        metric.measured_of_sample(&self.samples[i * self.rear.len() + j])
+    }
+
     /// Points (k1, k2) where `metric` equals `target`, by linear interpolation
     /// along rear lines and along front lines, sorted by k1.
     pub(crate) fn iso_curve(&self, metric: Metric, target: f64) -> Vec<(f64, f64)> {

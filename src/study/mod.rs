@@ -211,15 +211,35 @@ impl Metric {
             Metric::AyTotalVariance => m.ay_total_variance,
             Metric::YawRateResponseTime => Some(m.yaw_rate_response_time),
             Metric::AyResponseTime => m.ay_response_time,
-            // A map or a design target reads a response without a peak as
-            // no overshoot: 0, so that its contours close over the
-            // well-damped cars.
+            // The inverse reads a response without a peak (an overshoot
+            // below the threshold) as 0, so that its contours close over
+            // the well-damped cars; study.csv and maps.png do not
+            // ([`Metric::measured`]).
             Metric::YawRateOvershoot => Some(m.yaw_rate_overshoot.unwrap_or(0.0)),
             Metric::YawRatePeakTime => m.yaw_rate_peak_time,
             Metric::YawRateGain => Some(m.yaw_rate_gain),
             Metric::BetaSteady => m.beta_steady,
             Metric::Tb => m.tb,
         }
+    }
+
+    /// The metric as the step measures it: [`Metric::of`], except that an
+    /// overshoot below the peak threshold (no peak) is `None`, not a
+    /// measured 0 (the metrics chapter) — `study.csv`'s cells and
+    /// `maps.png`'s, where the inverse's contours read it as 0.
+    pub fn measured(self, m: &StepMetrics) -> Option<f64> {
+        match self {
+            Metric::YawRateOvershoot => m.yaw_rate_overshoot,
+            _ => self.of(m),
+        }
+    }
+
+    /// [`Metric::measured`] of a sample, NaN where it has none, as
+    /// [`Metric::of_sample`].
+    pub(crate) fn measured_of_sample(self, s: &Sample) -> f64 {
+        s.handling_metrics()
+            .and_then(|m| self.measured(&m))
+            .unwrap_or(f64::NAN)
     }
 
     /// The metric of a sample, NaN where it has none or where its response

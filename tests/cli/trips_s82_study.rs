@@ -65,9 +65,10 @@ fn study_csv_never_writes_nan_and_says_why_a_cell_is_empty() {
     let row = csv.lines().find(|l| l.starts_with("500,320,")).unwrap();
     let cells: Vec<&str> = row.split(',').collect();
     assert_eq!(cells[8], "", "peak time of {row}");
-    assert_eq!(cells[9], "0", "overshoot of {row}");
+    // Below the peak threshold (its own column), not a measured 0.
+    assert_eq!(cells[9], "", "overshoot of {row}");
     assert!(
-        row.ends_with(",handling,\"yaw_rate_peak_time, tb empty: the yaw rate has no peak above its steady value (0 % overshoot)\""),
+        row.ends_with(",1,handling,\"yaw_rate_peak_time, yaw_rate_overshoot, tb empty: no yaw-rate maximum stands more than 1 % above the steady value (the peak threshold, yaw_rate_peak_threshold): an overshoot below it, not a measured 0\""),
         "{row}"
     );
 }

@@ -55,6 +55,9 @@ struct NoiseFile {
     channel: String,
     noise_floor: f64,
     scale: f64,
+    /// Absent from diagnoses older than session 96: the floor stands in.
+    #[serde(default)]
+    scatter: Option<f64>,
 }
 
 #[derive(Deserialize)]
@@ -164,16 +167,19 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, Diagnosed), Error> {
     })?;
     let mut noise_floors = [0.0; 3];
     let mut scales = [1.0; 3];
+    let mut start_noise = [0.0; 3];
     for n in &f.gap.noise {
         if let Some(c) = Channel::ALL.into_iter().find(|c| c.name() == n.channel) {
             noise_floors[c.index()] = n.noise_floor;
             scales[c.index()] = n.scale;
+            start_noise[c.index()] = Fitted::start_noise_of(n.noise_floor, n.scatter);
         }
     }
     let fitted = Fitted {
         front: f.base.front,
         rear: f.base.rear,
         noise_floors,
+        start_noise,
         scales,
         noise_level: f.gap.noise_level,
         candidates: f

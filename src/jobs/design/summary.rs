@@ -37,6 +37,18 @@ impl DesignReport {
             let cal = &set.calibration;
             let measured = match cal.runs {
                 0 => "; none by one noise floor, so none measures the predictions' scatter".into(),
+                // A scatter with no model-form error to stand for (the
+                // reference's residuals at the noise) widens nothing.
+                n if !cal.applied => format!(
+                    "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, but {} leaves no gap above the noise (held-out error {:.3} against a noise level of {:.3}), so no model-form error for that scatter to stand for (the noise of the first sample each run's replays start from makes such a scatter alone), and the uncertainties below are the noise's",
+                    cal.inflation,
+                    set.members[0],
+                    cal.reference.heldout_error,
+                    cal.reference.noise_level
+                ),
+                n if cal.inflation <= 1.0 => format!(
+                    "; the {n} that separate them by a noise floor or more measure it within the noise's scatter, so the uncertainties below are the noise's"
+                ),
                 n => format!(
                     "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
                     cal.inflation

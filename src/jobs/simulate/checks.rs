@@ -41,6 +41,7 @@ use crate::io::fitted_ranges::{past_by, FittedRanges, RangePoint, SLACK};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
+use crate::metrics::{Settling, StepMetrics};
 use crate::sim::TimeHistory;
 use crate::tyre::mf::{MagicFormula, TyreSide};
 use crate::tyre::Tyre;
@@ -156,22 +157,48 @@ pub(crate) fn per_axle_tir(front: Option<String>, rear: Option<String>) -> Vec<S
 pub(super) const ASKED_AY_MISS: f64 = 0.02;
 
 /// A step steer sized for a steady lateral acceleration `asked` (m/s²)
-/// whose run settles at `reached` (the metrics' steady change) beyond
-/// [`ASKED_AY_MISS`] of it: the steady state its steer was solved from is
+/// whose run ends beyond [`ASKED_AY_MISS`] of it (the metrics' steady
+/// change, `m.ay_steady`): the steady state its steer was solved from is
 /// not the one the step reaches (past an axle's peak it is unstable and
-/// the car settles on another branch, or slides on).
-pub(super) fn asked_ay_missed(asked: f64, reached: Option<f64>) -> Option<String> {
-    let reached = reached?;
+/// the car settles on another branch, or slides on). A run whose steady
+/// window has not settled ([`StepMetrics::settled`]) settles nowhere yet:
+/// its window's mean is said as that, with where its trend heads where the
+/// metrics know it, never as where "the run settles".
+pub(super) fn asked_ay_missed(asked: f64, m: &StepMetrics) -> Option<String> {
+    let reached = m.ay_steady?;
     let miss = (reached - asked) / asked.abs().max(1e-12);
-    (miss.abs() > ASKED_AY_MISS).then(|| {
-        format!(
-            "the step was sized for a steady lateral acceleration of {} m/s² (`lateral_acceleration`), but the run settles at {} m/s² ({} %): the steady state its steer was solved from is not the one the step reaches (an unstable one past an axle's peak, where the car settles on another, or a slide); the metrics describe the run, not {} m/s²",
-            crate::format::exact(asked),
-            crate::format::fixed(reached, 2),
-            crate::format::signed(100.0 * miss, 0),
-            crate::format::exact(asked)
-        )
-    })
+    if miss.abs() <= ASKED_AY_MISS {
+        return None;
+    }
+    let why = "the steady state its steer was solved from is not the one the step reaches (an unstable one past an axle's peak, where the car settles on another, or a slide)";
+    let (asked_text, reached_text, miss_text) = (
+        crate::format::exact(asked),
+        crate::format::fixed(reached, 2),
+        crate::format::signed(100.0 * miss, 0),
+    );
+    if m.settled {
+        return Some(format!(
+            "the step was sized for a steady lateral acceleration of {asked_text} m/s² (`lateral_acceleration`), but the run settles at {reached_text} m/s² ({miss_text} %): {why}; the metrics describe the run, not {asked_text} m/s²"
+        ));
+    }
+    // Still moving: where the ay's trend heads beyond the window's mean,
+    // where the metrics measured one.
+    let heads = match m.settling.ay {
+        Some(Settling::Drifting { heads, .. }) | Some(Settling::Approaching { heads, .. }) => {
+            Some(heads)
+        }
+        _ => None,
+    };
+    let moving = match heads {
+        Some(h) => format!(
+            "still moving: its trend heads {} m/s² beyond that mean",
+            crate::format::fixed(h * reached.abs(), 2)
+        ),
+        None => "still moving at the end of the run".into(),
+    };
+    Some(format!(
+        "the step was sized for a steady lateral acceleration of {asked_text} m/s² (`lateral_acceleration`), but the run has not settled: its lateral acceleration averages {reached_text} m/s² ({miss_text} %) over the steady window and is {moving}, so it reaches no steady state within the run; {why}; the metrics describe a run still moving, not a steady turn at {asked_text} m/s² (a longer `end` shows where it goes)"
+    ))
 }
 
 /// Where `x` goes beyond `limit` in magnitude: its largest value, the

@@ -6,6 +6,7 @@
 
 pub(crate) mod checks;
 pub(crate) mod critical;
+mod grid_peak;
 mod idle_effects;
 mod limits;
 pub(crate) mod nominal_load;
@@ -271,14 +272,17 @@ fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
     warnings.extend(
         metrics.and_then(|m| m.variance_window_before_response(sc.metrics.variance_window)),
     );
+    // A peak read on the rows (RK4, or a low-pass), said to its
+    // resolution as `metrics` says a log's.
+    warnings.extend(metrics.and_then(|m| grid_peak::on_the_rows(sc, m)));
     // A step no steering can drive (an instant one, at rise_time = 0).
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));
     }
     // A step sized for a steady lateral acceleration that settles at
-    // another.
+    // another, or settles nowhere within the run.
     if let (Some(asked), Some(m)) = (sc.asked_ay, metrics) {
-        warnings.extend(checks::asked_ay_missed(asked, m.ay_steady));
+        warnings.extend(checks::asked_ay_missed(asked, m));
     }
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

@@ -14,7 +14,10 @@ const MAPPED: [(Metric, &str); 6] = [
     (Metric::YawRateTotalVariance, "E_r [s]"),
     (Metric::AyTotalVariance, "E_ay [s]"),
     (Metric::YawRateResponseTime, "yaw-rate response time [s]"),
-    (Metric::YawRateOvershoot, "yaw-rate overshoot [%]"),
+    (
+        Metric::YawRateOvershoot,
+        "yaw-rate overshoot [%] (grey: below the peak threshold)",
+    ),
     (Metric::Tb, "TB [s·deg]"),
 ];
 
@@ -35,11 +38,14 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
             for (j, kr) in map.rear.iter().enumerate() {
                 x.push(kf / k);
                 y.push(kr / k);
-                v.push(map.value(metric, i, j));
+                // An overshoot below the peak threshold is no value (grey),
+                // not a measured 0 (the darkest cell).
+                v.push(map.measured(metric, i, j));
             }
         }
         // The scale follows the values (log over decades, quantile where a
-        // few cells are extreme); TB's cells without a value stay grey.
+        // few cells are extreme); cells without a value (TB's and the overshoot's
+        // without a peak) stay grey.
         let mut series = vec![Series::heat(&x, &y, v, (dx, dy), label)];
         if metric == Metric::Er {
             for (n, (target, c)) in curves.iter().enumerate() {

@@ -2,7 +2,9 @@
 //! no value is empty — never `NaN`, which half the readers of a CSV take for
 //! a number — and the row's `response` and `note` say why: a response that
 //! is no handling response ([`crate::study::Response`]) has every metric empty, a handling
-//! response without a yaw-rate peak has no peak time and no TB.
+//! response without a yaw-rate peak has no peak time, no overshoot (it is
+//! below the peak threshold, the column `yaw_rate_peak_threshold`: not a
+//! measured 0) and no TB.
 
 use super::numbers::csv_number;
 use super::StudySummary;
@@ -19,7 +21,7 @@ pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Res
     let (kf, kr) = (format!("k_front_{name}"), format!("k_rear_{name}"));
     let mut header = vec![kf.as_str(), kr.as_str(), "k_front", "k_rear"];
     header.extend(METRICS);
-    header.extend(["response", "note"]);
+    header.extend(["yaw_rate_peak_threshold", "response", "note"]);
     let rows = samples.iter().map(|x| {
         let response = x.response();
         let note = match (response.note(), x.handling_metrics()) {
@@ -27,9 +29,13 @@ pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Res
             (None, Some(m)) => empty_cells(&m),
             (None, None) => String::new(),
         };
+        let threshold = x
+            .handling_metrics()
+            .map_or(f64::NAN, |m| m.yaw_rate_peak_threshold);
         [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
             .into_iter()
-            .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
+            .chain(Metric::ALL.iter().map(|m| m.measured_of_sample(x)))
+            .chain([threshold])
             .map(cell)
             .chain([response.word().to_string(), note])
     });
@@ -51,7 +57,7 @@ fn cell(v: f64) -> String {
 fn empty_cells(m: &StepMetrics) -> String {
     let empty: Vec<&str> = Metric::ALL
         .iter()
-        .filter(|metric| metric.of(m).is_none())
+        .filter(|metric| metric.measured(m).is_none())
         .map(|metric| metric.name())
         .collect();
     if empty.is_empty() {
@@ -59,13 +65,16 @@ fn empty_cells(m: &StepMetrics) -> String {
     }
     let mut why = Vec::new();
     if m.yaw_rate_peak_time.is_none() {
-        why.push("the yaw rate has no peak above its steady value (0 % overshoot)");
+        why.push(format!(
+            "no yaw-rate maximum stands more than {} % above the steady value (the peak threshold, yaw_rate_peak_threshold): an overshoot below it, not a measured 0",
+            crate::format::rounded(m.yaw_rate_peak_threshold, 3)
+        ));
     }
     if m.ay_steady.is_none() {
-        why.push("no lateral acceleration");
+        why.push("no lateral acceleration".into());
     }
     if m.beta_steady.is_none() {
-        why.push("no sideslip");
+        why.push("no sideslip".into());
     }
     format!("{} empty: {}", empty.join(", "), why.join("; "))
 }
@@ -100,30 +109,46 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
             .largest_sideslip
             .map_or_else(String::new, |b| format!(", up to {:.1}°", b.to_degrees()));
         kinds.push(format!(
-            "{} slide (steady sideslip beyond 10°{most})",
-            s.sliding
+            "{} {} (steady sideslip beyond 10°{most})",
+            s.sliding,
+            verb(s.sliding, "slides", "slide")
         ));
     }
     if s.large_sideslip > 0 {
         kinds.push(format!(
-            "{} turn at a steady sideslip beyond 10° on tyres with no friction limit (far outside a linear tyre's range)",
-            s.large_sideslip
+            "{} {} at a steady sideslip beyond 10° on tyres with no friction limit (far outside a linear tyre's range)",
+            s.large_sideslip,
+            verb(s.large_sideslip, "turns", "turn")
         ));
     }
     if s.not_settled > 0 {
         kinds.push(format!(
-            "{} do not settle by the end of the step (slower than the step is long, or diverging from a steady turn: a longer step tells them apart)",
-            s.not_settled
+            "{} {} by the end of the step (slower than the step is long, or diverging from a steady turn: a longer step tells them apart)",
+            s.not_settled,
+            verb(s.not_settled, "does not settle", "do not settle")
         ));
     }
     if s.without_steady_state > 0 {
-        kinds.push(format!("{} have no steady state", s.without_steady_state));
+        kinds.push(format!(
+            "{} {} no steady state",
+            s.without_steady_state,
+            verb(s.without_steady_state, "has", "have")
+        ));
     }
     Some(format!(
         "  {total} of {} combinations are no handling response: {}; their metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
         s.combinations,
         kinds.join(", ")
     ))
+}
+
+/// `one` for a count of 1, else `many`: "1 does not settle", "2 do not".
+fn verb(n: usize, one: &'static str, many: &'static str) -> &'static str {
+    if n == 1 {
+        one
+    } else {
+        many
+    }
 }
 
 /// The terminal's line on the combinations still converging at the end
@@ -166,6 +191,6 @@ mod tests {
             largest_sideslip: Some(-1.0),
         };
         let line = not_handling_line(&s).unwrap();
-        assert!(line.starts_with("  7 of 47 combinations are no handling response: 6 slide (steady sideslip beyond 10°, up to -57.3°), 1 do not settle"), "{line}");
+        assert!(line.starts_with("  7 of 47 combinations are no handling response: 6 slide (steady sideslip beyond 10°, up to -57.3°), 1 does not settle"), "{line}");
     }
 }

@@ -505,19 +505,9 @@ mod tests {
             beta: vec![0.0; 3],
             ..TimeHistory::default()
         };
-        let run = MeasuredRun {
-            path: "run.csv".into(),
-            t,
-            speed: vec![20.0; 3],
-            steer: vec![0.0; 3],
-            yaw_rate: vec![0.0, 0.11, 0.19],
-            ay: Some(vec![0.0, 1.1, 1.9]),
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let yaw_rate = vec![0.0, 0.11, 0.19];
+        let run = MeasuredRun::new("run.csv", t, vec![20.0; 3], vec![0.0; 3], yaw_rate)
+            .with_ay(vec![0.0, 1.1, 1.9]);
         let f = history_figure("replay", &h, Some(&run));
         let drawn: Vec<Vec<(&str, Style)>> = f
             .panels

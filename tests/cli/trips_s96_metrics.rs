@@ -8,7 +8,7 @@
 //! 0.1° read to four digits, and a step from a turn measured silently.
 
 use super::trips_s90_met::{measured, tester_step};
-use super::trips_s94_met::{history_rows, on_grid, rewritten, written};
+use super::trips_s94_met::{history_rows, millis, on_grid, rewritten, written};
 use super::*;
 
 /// The closed form's overshoot of the tester's step, %.
@@ -99,8 +99,7 @@ fn a_short_hole_in_time_is_counted_and_filtered_on_the_grid() {
         |c| on_grid(c, 10),
         cells,
     );
-    let hole =
-        |c: &[f64]| on_grid(c, 10) && !(1365..=1405).contains(&(c[0] * 1000.0).round() as i64);
+    let hole = |c: &[f64]| on_grid(c, 10) && !(1365..=1405).contains(&millis(c));
     let holey = rewritten(&history, dir.path(), "hole.csv", HEADER, hole, cells);
     let (i, _) = measured(&intact, &[]);
     let (h, w) = measured(&holey, &[]);

@@ -447,6 +447,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  yaw-rate overshoot       {:>10} %",
             match m.yaw_rate_overshoot {
                 Some(percent) => format!("{percent:.2}"),
+                // Withheld: a warning says why; no bound is known.
+                None if m.yaw_rate_peak_unmeasured => "—".into(),
                 None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
             }
         ),
@@ -483,7 +485,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             m.yaw_rate_noise_text()
         ));
     }
-    if m.yaw_rate_peak_time.is_none() {
+    // A withheld peak's warning says why; it is no overshoot below a bound.
+    if m.yaw_rate_peak_time.is_none() && !m.yaw_rate_peak_unmeasured {
         let why = match m.yaw_rate_filter_ringing {
             0.0 => "the larger of min_overshoot and what the noise and the steady scatter allow".to_string(),
             // The filter's own overshoot on the steer step: a maximum

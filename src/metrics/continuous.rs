@@ -299,5 +299,6 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_peak_time_spread: None,
         yaw_rate_peak_found_share: None,
         yaw_rate_overshoot_spread: None,
+        yaw_rate_peak_unmeasured: false,
     })
 }

@@ -1,18 +1,18 @@
 //! Step-steer metrics of a measured run as a logger wrote it: the run is
 //! cleaned ([`crate::measured::clean`]: standstills, crawling and glitches),
 //! and of its moving pieces, longest first, the first that holds a steer
-//! step is measured ([`step_metrics`], on one uniform grid: `uniform.rs`): a
+//! step is measured (`step_metrics`, on one uniform grid: `uniform.rs`): a
 //! step held still over the initial window and after (not a sweep:
-//! [`check_step_shape`]); the others are listed with why they were left
+//! `check_step_shape`); the others are listed with why they were left
 //! out. A run without `ay` gets the yaw-rate metrics only. The steer's
 //! 10–90 % rise is checked against ISO 7401's 0.15 s. Units: SI, rad, s.
 
-use super::step_shape::{check_steer_is_a_step, check_step_shape, last_crossing};
-use super::{step_metrics, MetricSettings, StepMetrics};
-use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
+use super::step_shape::last_crossing;
+use super::{MetricSettings, StepMetrics};
+use crate::error::{InputError, InputProblem, RefusedPiece};
 use crate::measured::clean::{
-    clean_single_reported, fill_masked_by_channel, median, median_interval, quantile,
-    CleanSettings, CleaningReport, GlitchKind,
+    clean_single_reported, median, median_interval, quantile, CleanSettings, CleaningReport,
+    GlitchKind,
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -359,6 +359,8 @@ pub struct MeasuredMetrics {
 }
 
 mod ay_check;
+mod coarse_grid;
+mod piece;
 mod steady_advice;
 mod uniform;
 pub(crate) use ay_check::AY_METRICS;
@@ -476,29 +478,9 @@ pub fn measured_step_metrics(
         run,
         &CleanSettings::single(min_speed),
         &mut cleaning,
-        |piece, found| {
-            let p = uniform::uniform(fill_masked_by_channel(piece, &found.glitches));
-            check_steer_is_a_step(&p.t, &p.steer)
-                .and_then(|()| {
-                    step_metrics(
-                        &p.t,
-                        &p.steer,
-                        &p.yaw_rate,
-                        p.ay.as_deref(),
-                        p.beta.as_deref(),
-                        settings,
-                    )
-                })
-                .and_then(|m| {
-                    check_step_shape(&p.t, &p.steer, &m, settings)
-                        .map(|()| m)
-                        .map_err(|e| steady_advice::with_advice(e, &p, settings))
-                })
-                .map(|m| (m, p))
-                .map_err(PieceRefusal::NoStepMetrics)
-        },
+        |piece, found| piece::measure(piece, found, settings),
     );
-    let Some((piece, (metrics, filled))) = found else {
+    let Some((piece, (metrics, filled, said))) = found else {
         let problem = if cleaning.dropped_pieces.is_empty() {
             InputProblem::NoMovingSamples {
                 min_speed,
@@ -531,7 +513,7 @@ pub fn measured_step_metrics(
         return Err(InputError::problem(&path, problem));
     };
     let steer_rise_time = steer_rise(&filled, &metrics, settings);
-    let mut warnings = Vec::new();
+    let mut warnings = said;
     warnings.extend(uniform::said(&piece.t));
     warnings.extend(rise_said(steer_rise_time, median_interval(&piece.t)));
     // The piece's median speed: a crawl is said, as a slide is.

@@ -52,6 +52,10 @@ pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
 pub mod applicability;
 pub(crate) mod continuous;
 mod divergence;
+mod filter;
+mod variance;
+pub(crate) use filter::zero_phase_low_pass;
+use variance::total_variance;
 
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
@@ -65,7 +69,8 @@ mod peak;
 mod pulse;
 mod settling;
 mod steady_inside;
-use noise::{noise_deviation, noise_gain};
+pub(crate) use noise::HeldEvery;
+use noise::{held_noise_scale, noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
 mod variance_said;
@@ -272,6 +277,11 @@ pub struct StepMetrics {
     /// deviation over the same copies, percentage points of the step.
     #[serde(default)]
     pub yaw_rate_overshoot_spread: Option<f64>,
+    /// The yaw rate's largest value lies where the log does not measure it
+    /// (samples masked and filled, a clipped flat top): peak time,
+    /// overshoot and TB withheld, not below the threshold.
+    #[serde(default)]
+    pub yaw_rate_peak_unmeasured: bool,
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).
@@ -354,17 +364,18 @@ struct Normalised {
 
 /// `x` (raw: `raw`) normalised from its mean over the initial window,
 /// ending at `pre_end` ([`initial::initial_end`]), to its mean over the
-/// steady window.
+/// steady window; its noise read on `raw` times `scale` (a held channel's,
+/// [`held_noise_scale`]).
 fn normalise(
     t: &[f64],
-    (raw, x): (&[f64], &[f64]),
+    (raw, x, scale): (&[f64], &[f64], f64),
     pre_end: f64,
     s: &MetricSettings,
     name: &'static str,
 ) -> Result<Normalised, MetricsError> {
     let (t_first, t_last) = (t[0], t[t.len() - 1]);
     let (x0, _) = window_mean(t, x, t_first, pre_end);
-    let sd0 = noise_deviation(raw);
+    let sd0 = scale * noise_deviation(raw);
     let (xs, sd) = window_mean(t, x, t_last - s.steady_window, t_last);
     let step = xs - x0;
     let in_window = |from: f64, to: f64| t.iter().filter(|&&v| v >= from && v <= to).count();
@@ -386,54 +397,6 @@ fn normalise(
     })
 }
 
-/// ∫ (a − b)² dt over [from, to] (trapezoid, partial end intervals
-/// interpolated).
-fn total_variance(t: &[f64], a: &[f64], b: &[f64], from: f64, to: f64) -> f64 {
-    let mut e = 0.0;
-    for i in 1..t.len() {
-        let (lo, hi) = (t[i - 1].max(from), t[i].min(to));
-        if hi <= lo {
-            continue;
-        }
-        let h = t[i] - t[i - 1];
-        let at = |x: f64| {
-            let w = (x - t[i - 1]) / h;
-            (a[i - 1] - b[i - 1]) * (1.0 - w) + (a[i] - b[i]) * w
-        };
-        let (d0, d1) = (at(lo), at(hi));
-        e += 0.5 * (d0 * d0 + d1 * d1) * (hi - lo);
-    }
-    e
-}
-
-/// Zero-phase low-pass: a second-order Butterworth section (bilinear
-/// transform, pre-warped) run forward then backward, each pass started in
-/// the steady state of its first sample so the ends do not ring.
-pub(crate) fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
-    let k = (std::f64::consts::PI * cutoff_hz * dt).tan();
-    let norm = 1.0 / (1.0 + std::f64::consts::SQRT_2 * k + k * k);
-    let b0 = k * k * norm;
-    let (b1, b2) = (2.0 * b0, b0);
-    let a1 = 2.0 * (k * k - 1.0) * norm;
-    let a2 = (1.0 - std::f64::consts::SQRT_2 * k + k * k) * norm;
-    let pass = |v: &mut Vec<f64>| {
-        let Some(&first) = v.first() else { return };
-        let (mut x1, mut x2, mut y1, mut y2) = (first, first, first, first);
-        for s in v.iter_mut() {
-            let x0 = *s;
-            let y0 = b0 * x0 + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
-            (x2, x1, y2, y1) = (x1, x0, y1, y0);
-            *s = y0;
-        }
-    };
-    let mut y = x.to_vec();
-    pass(&mut y);
-    y.reverse();
-    pass(&mut y);
-    y.reverse();
-    y
-}
-
 /// Step-steer metrics of one record.
 pub(crate) fn step_metrics(
     t: &[f64],
@@ -442,6 +405,20 @@ pub(crate) fn step_metrics(
     ay: Option<&[f64]>,
     beta: Option<&[f64]>,
     s: &MetricSettings,
+) -> Result<StepMetrics, MetricsError> {
+    step_metrics_held(t, steer, yaw_rate, ay, beta, s, HeldEvery::default())
+}
+
+/// Step-steer metrics of one record whose channels `held` were held
+/// between updates and interpolated (their noise read on the updates).
+pub(crate) fn step_metrics_held(
+    t: &[f64],
+    steer: &[f64],
+    yaw_rate: &[f64],
+    ay: Option<&[f64]>,
+    beta: Option<&[f64]>,
+    s: &MetricSettings,
+    every: HeldEvery,
 ) -> Result<StepMetrics, MetricsError> {
     let n = t.len();
     if n < 10
@@ -475,18 +452,38 @@ pub(crate) fn step_metrics(
         None => x.to_vec(),
     };
     let gain = filter_hz.map_or(1.0, |f| noise_gain(dt, f));
+    let scale = |k: usize| held_noise_scale(k, dt, filter_hz);
     let (steer_f, yaw_rate_f) = (filtered(steer), filtered(yaw_rate));
     let ay_f = ay.map(filtered);
     let beta_f = beta.map(filtered);
     let no_step = || pulse::no_step(t, steer, &steer_f, s);
     let pre_end = initial::initial_end(t, steer, s);
-    let d = normalise(t, (steer, &steer_f), pre_end, s, "steer").map_err(|_| no_step())?;
+    let d = normalise(
+        t,
+        (steer, &steer_f, scale(every.steer)),
+        pre_end,
+        s,
+        "steer",
+    )
+    .map_err(|_| no_step())?;
     if d.steady.abs() < MIN_STEP {
         return Err(no_step());
     }
-    let r = normalise(t, (yaw_rate, &yaw_rate_f), pre_end, s, "yaw rate")?;
+    let r = normalise(
+        t,
+        (yaw_rate, &yaw_rate_f, scale(every.yaw_rate)),
+        pre_end,
+        s,
+        "yaw rate",
+    )?;
     let a = match (ay, ay_f.as_deref()) {
-        (Some(raw), Some(f)) => Some(normalise(t, (raw, f), pre_end, s, "lateral acceleration")?),
+        (Some(raw), Some(f)) => Some(normalise(
+            t,
+            (raw, f, scale(every.ay)),
+            pre_end,
+            s,
+            "lateral acceleration",
+        )?),
         _ => None,
     };
     let r_noise = gain * r.noise;
@@ -497,7 +494,7 @@ pub(crate) fn step_metrics(
     let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
     // A yaw rate growing exponentially once the steer is held: refused.
     let held = first_crossing(t, &d.values, 0.9, onset).unwrap_or(onset);
-    let sd_r = noise_deviation(yaw_rate);
+    let sd_r = every.yaw_rate.max(1) as f64 * noise_deviation(yaw_rate);
     divergence::refuse(t, &yaw_rate_f, held, sd_r, r.steady)?;
     let tr =
         first_crossing(t, &r.values, 0.9, onset).ok_or(MetricsError::NoCrossing("yaw rate"))?;
@@ -526,7 +523,7 @@ pub(crate) fn step_metrics(
     let spread = peak_at.and(peak::peak_spread(t, v, (tr, level), r.noise, &filtered));
     let beta_n = beta
         .zip(beta_f.as_deref())
-        .map(|(raw, b)| normalise(t, (raw, b), pre_end, s, "sideslip").ok());
+        .map(|(raw, b)| normalise(t, (raw, b, scale(every.beta)), pre_end, s, "sideslip").ok());
     let beta_steady = beta_n
         .as_ref()
         .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
@@ -573,6 +570,7 @@ pub(crate) fn step_metrics(
         yaw_rate_peak_time_spread: spread.map(|s| s.sd),
         yaw_rate_peak_found_share: spread.map(|s| s.found),
         yaw_rate_overshoot_spread: spread.map(|s| 100.0 * s.overshoot_sd),
+        yaw_rate_peak_unmeasured: false,
     })
 }
 

@@ -1,7 +1,7 @@
 //! The white-noise deviation of a channel and its gain through the
 //! zero-phase low-pass. Units: the channel's own; s; Hz.
 
-use super::zero_phase_low_pass;
+use super::filter::zero_phase_low_pass;
 
 /// White-noise deviation of `x`, from the median absolute difference of
 /// neighbours (insensitive to the step and to slow trends), and at least
@@ -49,4 +49,41 @@ pub(super) fn noise_gain(dt: f64, cutoff_hz: f64) -> f64 {
         .map(|h| h * h)
         .sum::<f64>()
         .sqrt()
+}
+
+/// Samples per update of each channel a logger held between updates (a
+/// 50 Hz gyro in a 100 Hz log), which cleaning interpolated between them;
+/// 0 or 1: a channel read at every sample.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct HeldEvery {
+    pub steer: usize,
+    pub yaw_rate: usize,
+    pub ay: usize,
+    pub beta: usize,
+}
+
+/// The factor that turns the noise read on the samples of a channel held
+/// for `every` samples of `dt` s and interpolated between its updates into
+/// the noise it carries, per sample of white noise of equal effect after
+/// the low-pass at `filter_hz`. Interpolation divides each update's change
+/// among `every` samples, so their neighbours' differences, the noise's
+/// reading, are `every` times smaller than the updates' (a 50 Hz yaw rate
+/// in a 100 Hz log read 0.61 % for the 1.74 % of the same data at 50 Hz);
+/// and the interpolated noise is no white noise at `dt`: the low-pass
+/// passes it as it passes white noise at the update interval `every·dt`
+/// (its noise gain √Σh² at that interval). Unfiltered, each update's own
+/// deviation.
+pub(super) fn held_noise_scale(every: usize, dt: f64, filter_hz: Option<f64>) -> f64 {
+    if every <= 1 {
+        return 1.0;
+    }
+    let k = every as f64;
+    let filtered = filter_hz.map_or(1.0, |f| {
+        let at_updates = match f < 0.4 / (k * dt) {
+            true => noise_gain(k * dt, f),
+            false => 1.0,
+        };
+        at_updates / noise_gain(dt, f)
+    });
+    k * filtered
 }

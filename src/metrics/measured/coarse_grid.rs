@@ -1,0 +1,130 @@
+//! Responses written on a grid coarse against the step they measure, and
+//! steps that start from a turn.
+//!
+//! A logger that writes a channel in steps of q (its resolution, or the
+//! digits of the file: a sideslip written in degrees to 0.1°) rounds each
+//! sample by up to q/2, a deviation of q/√12 (Widrow & Kollár 2008) that
+//! the noise read from neighbouring differences does not show where most
+//! neighbours repeat. Where q/√12 exceeds [`COARSE_SHARE`] of the step, a
+//! steady value held between two codes reads one of them: a sideslip step
+//! of −0.2135° read −0.2000° (−6.3 %) and TB 0.0680 for 0.0729, said
+//! nowhere. The channel, its q and the bound ±q/2 on its steady change
+//! and on what is derived from it are said.
+//!
+//! ISO 7401 starts the step from straight running: a step from a steady
+//! turn gives changes from that turn (the table's steady ay is the
+//! change), which is said. Units: SI, rad, s; sideslip and steer said in
+//! degrees.
+
+use super::super::StepMetrics;
+use crate::measured::MeasuredRun;
+
+/// Share of the step above which the rounding's deviation q/√12 is said.
+const COARSE_SHARE: f64 = 0.05;
+
+/// Most steps of its resolution a logger's channel spans (as `noise.rs`).
+const GRID_LEVELS: f64 = 65536.0;
+
+/// Share of its step that the yaw rate and ay must both read before the
+/// step for it to start from a turn: offsets of a gyro and an
+/// accelerometer are a few % of a step, each on its own.
+const FROM_TURN: f64 = 0.2;
+
+/// The resolution q of `x`: its smallest non-zero change, where its range
+/// spans at most [`GRID_LEVELS`] of it.
+fn resolution(x: &[f64]) -> Option<f64> {
+    let q = x
+        .windows(2)
+        .map(|w| (w[1] - w[0]).abs())
+        .filter(|d| *d > 0.0 && d.is_finite())
+        .fold(f64::INFINITY, f64::min);
+    let (lo, hi) = x
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    (q.is_finite() && (hi - lo) / q <= GRID_LEVELS).then_some(q)
+}
+
+/// The warnings of `piece`'s channels written coarsely against their
+/// steps in `m`.
+pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
+    let deg = 180.0 / std::f64::consts::PI;
+    // Responses only: a noise-free steer ramp takes few values, each a
+    // multiple of its sample's change, and is no logger's grid.
+    let channels: [(&str, Option<&[f64]>, Option<f64>, f64, &str, &str); 3] = [
+        (
+            "yaw_rate",
+            Some(&piece.yaw_rate),
+            Some(m.yaw_rate_steady),
+            1.0,
+            "rad/s",
+            "the yaw-rate gain and the overshoot",
+        ),
+        (
+            "ay",
+            piece.ay.as_deref(),
+            m.ay_steady,
+            1.0,
+            "m/s²",
+            "the steady ay",
+        ),
+        (
+            "beta",
+            piece.beta.as_deref(),
+            m.beta_steady,
+            deg,
+            "deg",
+            "the steady sideslip and TB",
+        ),
+    ];
+    channels
+        .into_iter()
+        .filter_map(|(name, x, step, scale, unit, derived)| {
+            let (q, step) = (resolution(x?)?, step?.abs());
+            let share = q / 12f64.sqrt() / step;
+            (share > COARSE_SHARE && step > 0.0).then(|| {
+                format!(
+                    "{name} is written in steps of {} {unit} and its step is {} {unit}, {} of them: the rounding's deviation q/√12 is {} % of the step, so its steady change is known only within ±q/2 = ±{} % (where noise does not dither it), and {derived} with it; log it finer",
+                    crate::format::rounded(q * scale, 3),
+                    crate::format::readable(step * scale, 4),
+                    crate::format::readable(step / q, 2),
+                    crate::format::readable(100.0 * share, 2),
+                    crate::format::readable(50.0 * q / step, 2),
+                )
+            })
+        })
+        .collect()
+}
+
+/// The warning of a step that starts from a steady turn: the yaw rate and
+/// ay both read at least [`FROM_TURN`] of their steps before it (over the
+/// first `pre_window` s of `piece`).
+pub(super) fn from_turn(piece: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> Option<String> {
+    let ay = piece.ay.as_deref()?;
+    let ay_step = m.ay_steady?;
+    let t0 = piece.t.first()?;
+    let before = |x: &[f64]| {
+        let v: Vec<f64> = piece
+            .t
+            .iter()
+            .zip(x)
+            .filter(|(t, x)| **t <= t0 + pre_window && x.is_finite())
+            .map(|(_, x)| *x)
+            .collect();
+        v.iter().sum::<f64>() / v.len().max(1) as f64
+    };
+    let (r0, a0) = (before(&piece.yaw_rate), before(ay));
+    let turning =
+        r0.abs() >= FROM_TURN * m.yaw_rate_steady.abs() && a0.abs() >= FROM_TURN * ay_step.abs();
+    turning.then(|| {
+        format!(
+            "the step starts from a turn (before it: yaw rate {} rad/s, ay {} m/s²), not from straight running as ISO 7401 asks: the steady values are changes from that turn (ay ends at {} m/s², the table's {} m/s² is the change), and the response is the car's about its turning state, not from straight ahead",
+            crate::format::readable(r0, 3),
+            crate::format::readable(a0, 3),
+            crate::format::readable(a0 + ay_step, 3),
+            crate::format::readable(ay_step, 4),
+        )
+    })
+}

@@ -36,6 +36,7 @@ mod further;
 mod holds;
 pub use holds::Held;
 mod staged;
+mod standstill;
 mod two_stage;
 mod unused_columns;
 pub use two_stage::{TwoStageReport, Written};

@@ -1,6 +1,6 @@
 //! Sample statistics the crate's checks share: the centred sums of a pair of
-//! series and their Pearson correlation. Dimensionless; a series' units
-//! cancel in the correlation.
+//! series, their Pearson correlation and the least-squares slope of one on
+//! the other. Dimensionless; a series' units cancel in the correlation.
 //!
 //! Sums, not the correlation alone, are what is kept: runs judged one by one
 //! pool by adding their sums (each centred on its own means, so an offset
@@ -26,7 +26,6 @@ impl CentredSums {
     pub fn of(x: &[f64], y: &[f64]) -> Self {
         let n = x.len().min(y.len());
         let (x, y) = (&x[..n], &y[..n]);
-        let mean = |v: &[f64]| v.iter().sum::<f64>() / n.max(1) as f64;
         let (mx, my) = (mean(x), mean(y));
         let mut s = CentredSums {
             n,
@@ -62,6 +61,17 @@ impl CentredSums {
     pub fn x_rms(&self) -> f64 {
         (self.xx / self.n.max(1) as f64).sqrt()
     }
+
+    /// The least-squares slope of `y` on `x` (a line with an intercept):
+    /// `Σ(x − x̄)(y − ȳ) / Σ(x − x̄)²`; not finite where `x` is constant.
+    pub fn slope(&self) -> f64 {
+        self.xy / self.xx
+    }
+}
+
+/// The mean of `v` (0 for no values): the centre [`CentredSums`] sums about.
+pub fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
 #[cfg(test)]

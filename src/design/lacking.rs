@@ -317,24 +317,14 @@ mod tests {
     fn run(steer: impl Fn(f64) -> f64, speed: impl Fn(f64) -> f64) -> MeasuredRun {
         let t: Vec<f64> = (0..1000).map(|i| i as f64 * 0.01).collect();
         let n = t.len();
-        MeasuredRun {
-            path: "r.csv".into(),
-            speed: t.iter().map(|&x| speed(x)).collect(),
-            // A logger's steer noise, ±0.02°, alternating.
-            steer: t
-                .iter()
-                .enumerate()
-                .map(|(i, &x)| steer(x) + 3.5e-4 * if i % 2 == 0 { 1.0 } else { -1.0 })
-                .collect(),
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-            t,
-        }
+        let speed = t.iter().map(|&x| speed(x)).collect();
+        // A logger's steer noise, ±0.02°, alternating.
+        let steer = t
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| steer(x) + 3.5e-4 * if i % 2 == 0 { 1.0 } else { -1.0 })
+            .collect();
+        MeasuredRun::new("r.csv", t, speed, steer, vec![0.0; n])
     }
 
     /// Each kind read from its inputs: a step rising in 0.4 s, a ramp

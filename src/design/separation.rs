@@ -26,7 +26,6 @@ use crate::diagnose::pipeline::observed_channel;
 use crate::diagnose::{Channel, Prepared};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
-use std::path::PathBuf;
 
 /// What a campaign logs: the sample interval and which channels.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,21 +69,16 @@ impl Logging {
             .collect();
         let zero = vec![0.0; t.len()];
         let on = |c: Channel| self.channels[c.index()].then(|| zero.clone());
-        MeasuredRun {
-            path: PathBuf::from(format!("{name}.csv")),
-            speed: t.iter().map(|&x| m.speed(x)).collect(),
-            steer: t.iter().map(|&x| m.steer(x)).collect(),
-            yaw_rate: zero.clone(),
-            ay: on(Channel::Ay),
-            beta: on(Channel::Beta),
-            roll: None,
-            bank: self.bank.then(|| zero.clone()),
-            ax: self
-                .ax
-                .then(|| t.iter().map(|&x| m.speed_rate(x)).collect()),
-            masked: Vec::new(),
-            t,
-        }
+        let speed = t.iter().map(|&x| m.speed(x)).collect();
+        let steer = t.iter().map(|&x| m.steer(x)).collect();
+        let ax = self
+            .ax
+            .then(|| t.iter().map(|&x| m.speed_rate(x)).collect::<Vec<f64>>());
+        MeasuredRun::new(format!("{name}.csv"), t, speed, steer, zero.clone())
+            .with_ay(on(Channel::Ay))
+            .with_beta(on(Channel::Beta))
+            .with_bank(self.bank.then(|| zero.clone()))
+            .with_ax(ax)
     }
 }
 

@@ -347,19 +347,7 @@ fn a_driven_runs_start_is_the_mean_of_its_lead_in_until_the_steer_moves() {
     let yaw_rate: Vec<f64> = (0..300)
         .map(|i| if i % 2 == 0 { 0.003 } else { -0.001 })
         .collect();
-    let run = MeasuredRun {
-        path: "r.csv".into(),
-        speed: vec![20.0; 300],
-        steer,
-        yaw_rate,
-        ay: None,
-        beta: None,
-        roll: None,
-        bank: None,
-        ax: None,
-        masked: Vec::new(),
-        t,
-    };
+    let run = MeasuredRun::new("r.csv", t, vec![20.0; 300], steer, yaw_rate);
     let ((beta, r), n) = separation::settled_start(&run).unwrap();
     // 0–0.49 s: 50 samples, alternating +0.003 and −0.001.
     assert_eq!(n, 50);

@@ -17,6 +17,7 @@ mod effect_limit;
 mod file_kind;
 mod fit;
 mod foreign_format;
+mod hold_rule;
 mod input;
 mod lateral_slope;
 mod level_slip;
@@ -67,6 +68,7 @@ pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
 pub use foreign_format::ForeignFormat;
+pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
 pub use lateral_slope::{BetaInPercent, LateralSlope, SlopeUnit};

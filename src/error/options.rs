@@ -252,6 +252,9 @@ pub enum OptionsError {
         /// The second.
         second: f64,
     },
+    /// A `--hold` value the model's sign rules refuse.
+    #[error("{0}")]
+    HoldAgainstRule(Box<super::HoldAgainstRule>),
     /// A shard K of N outside 1 ≤ K ≤ N.
     #[error("shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8")]
     ShardOutOfRange {

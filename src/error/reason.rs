@@ -448,6 +448,9 @@ pub enum Limit {
     /// The upper end of a prior's 95 % range.
     #[error("a range's upper end must lie above its lower end")]
     PriorRange,
+    /// A sensor's position on the car, m ahead of its centre of gravity.
+    #[error("a sensor on a car lies within 5 m of its centre of gravity; the key is in m ahead of it (negative behind)")]
+    SensorPosition,
     /// A prior's cornering coefficients beyond what the axle identification represents.
     #[error("the axles identified from the runs have cornering coefficients of 0.4–4000 1/rad (a softer or stiffer axle is no tyre)")]
     PriorCornering,

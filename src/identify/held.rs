@@ -304,6 +304,13 @@ pub(crate) fn value_in(t: &Tyre, name: &str) -> Option<f64> {
     c.parameters(t).get(i).copied()
 }
 
+/// The search box a fit keeps parameter `name` of `t` in (any block a
+/// fit fits), in the tyre file's units; `None` when no block of `t` has it.
+pub(crate) fn bounds_in(t: &Tyre, name: &str) -> Option<(f64, f64)> {
+    let (c, i) = place_of(t, name)?;
+    c.bounds(t).get(i).copied()
+}
+
 /// `t` with its parameter `name` (any block a fit fits) set to `v`;
 /// `None` when no block of `t` has it.
 pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {

@@ -38,7 +38,7 @@ mod undetermined;
 pub(crate) use undetermined::hold_undetermined;
 use undetermined::Spread;
 
-pub(crate) use held::{value_in, with_value};
+pub(crate) use held::{bounds_in, value_in, with_value};
 pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 

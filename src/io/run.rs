@@ -5,7 +5,7 @@
 //! column ([`super::run_units`]), as is an `ay` of the other sign
 //! ([`super::run_ay_sign`]).
 
-use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::columns::{read_columns_with_slips, Columns, Layout, Slip};
 use super::run_ay_sign::check_ay_sign;
 use super::run_bank::{check_bank_degrees, check_slope_reading};
 use super::run_slope::{check_beta_percent, Lateral};
@@ -160,7 +160,7 @@ pub fn read_run_reading(
 /// (`lacking` false) or left out and returned ([`read_run_declared`]).
 fn read_run_lacking(
     path: &Path,
-    (degrees, by): (&[AngleColumn], DeclaredBy),
+    declared_by: (&[AngleColumn], DeclaredBy),
     optional: &[&str],
     lacking: bool,
 ) -> Result<(MeasuredRun, RunHeader, Vec<AbsentColumn>), InputError> {
@@ -175,6 +175,43 @@ fn read_run_lacking(
         also_read: Some(&others),
     };
     let (mut c, slips) = read_columns_with_slips(path, layout)?;
+    let (declared, absent) = declared_columns(path, &c, declared_by, optional, lacking)?;
+    let unread: Vec<&'static str> = OPTIONAL_CHANNELS
+        .into_iter()
+        .filter(|n| !optional.contains(n) && c.header.iter().any(|h| h == n))
+        .collect();
+    for a in &declared {
+        c.scale(a.name(), std::f64::consts::PI / 180.0);
+    }
+    let t = c.take("t");
+    check_times(path, &c, &t)?;
+    let steer = c.take("steer");
+    check_steer(path, &c, &steer)?;
+    let (speed, yaw_rate) = (c.take("speed"), c.take("yaw_rate"));
+    let run = MeasuredRun::new(path, t, speed, steer, yaw_rate)
+        .with_ay(c.take_optional("ay"))
+        .with_ax(c.take_optional("ax"))
+        .with_roll(c.take_optional("roll"))
+        .with_bank(c.take_optional("bank"))
+        .with_beta(c.take_optional("beta"));
+    // The checks read the columns' positions and lines only, not their
+    // values: every channel is taken first and checked on the run.
+    check_speed_and_rates(path, &c, &run)?;
+    check_angles(path, &c, &run, declared.contains(&AngleColumn::Beta))?;
+    check_lateral(path, &c, &run)?;
+    Ok((run, RunHeader { unread, slips }, absent))
+}
+
+/// The columns `degrees` declares in degrees that the file has, each once,
+/// with those it lacks and their refusals (refused here unless `lacking`);
+/// a declaration of a column the job does not read is refused first.
+fn declared_columns(
+    path: &Path,
+    c: &Columns,
+    (degrees, by): (&[AngleColumn], DeclaredBy),
+    optional: &[&str],
+    lacking: bool,
+) -> Result<(Vec<AngleColumn>, Vec<AbsentColumn>), InputError> {
     // A column named twice is converted once: it is in degrees or not.
     let mut declared: Vec<AngleColumn> = Vec::new();
     for a in degrees {
@@ -218,14 +255,12 @@ fn read_run_lacking(
     if !lacking && !absent.is_empty() {
         return Err(absent.swap_remove(0).1);
     }
-    let unread: Vec<&'static str> = OPTIONAL_CHANNELS
-        .into_iter()
-        .filter(|n| !optional.contains(n) && c.header.iter().any(|h| h == n))
-        .collect();
-    for a in &declared {
-        c.scale(a.name(), std::f64::consts::PI / 180.0);
-    }
-    let t = c.take("t");
+    Ok((declared, absent))
+}
+
+/// Times strictly increasing, at least two of them, at a step that is a
+/// time in seconds.
+fn check_times(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
     for i in 1..t.len() {
         if t[i] <= t[i - 1] {
             return Err(c.error_at(
@@ -242,13 +277,15 @@ fn read_run_lacking(
     if t.len() < 2 {
         return Err(InputError::problem(path, InputProblem::TooFewSamples));
     }
-    check_time_step(path, &c, &t)?;
-    // A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged
-    // on the 99th percentile so that a logger's spike (repaired later) does
-    // not refuse the file.
-    let steer = c.take("steer");
-    if let Some((i, p99)) = beyond(&steer, std::f64::consts::FRAC_PI_2) {
-        return Err(c.error_at(
+    check_time_step(path, c, t)
+}
+
+/// A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged on
+/// the 99th percentile so that a logger's spike (repaired later) does not
+/// refuse the file.
+fn check_steer(path: &Path, c: &Columns, steer: &[f64]) -> Result<(), InputError> {
+    match beyond(steer, std::f64::consts::FRAC_PI_2) {
+        Some((i, p99)) => Err(c.error_at(
             path,
             i,
             "steer",
@@ -256,81 +293,91 @@ fn read_run_lacking(
                 value: steer[i],
                 p99,
             },
-        ));
+        )),
+        None => Ok(()),
     }
-    let (speed, yaw_rate, ay) = (c.take("speed"), c.take("yaw_rate"), c.take_optional("ay"));
-    check_speed(path, &c, &speed)?;
-    check_yaw_rate(path, &c, &yaw_rate)?;
-    let ax = c.take_optional("ax");
-    match (&ay, &ax) {
-        (Some(ay), _) => check_ay(path, &c, &speed, &yaw_rate, ay)?,
+}
+
+/// The speed's and the yaw rate's units, and `ay`'s against them (else the
+/// speed's against `ax`).
+fn check_speed_and_rates(path: &Path, c: &Columns, run: &MeasuredRun) -> Result<(), InputError> {
+    let (speed, yaw_rate) = (&run.speed, &run.yaw_rate);
+    check_speed(path, c, speed)?;
+    check_yaw_rate(path, c, yaw_rate)?;
+    match (&run.ay, &run.ax) {
+        (Some(ay), _) => check_ay(path, c, speed, yaw_rate, ay),
         // No lateral accelerometer to judge the speed's unit by: the
         // longitudinal one, against the speed's change.
-        (None, Some(ax)) => check_speed_by_ax(path, &c, &t, &speed, ax)?,
-        (None, None) => {}
+        (None, Some(ax)) => check_speed_by_ax(path, c, &run.t, speed, ax),
+        (None, None) => Ok(()),
     }
-    let (roll, bank) = (c.take_optional("roll"), c.take_optional("bank"));
-    let beta = c.take_optional("beta");
-    if let (Some(ay), Some(beta)) = (&ay, &beta) {
+}
+
+/// The angles' units: a sideslip in percent, then roll, bank and sideslip
+/// in degrees (`beta_declared`: the file said its sideslip is in degrees).
+fn check_angles(
+    path: &Path,
+    c: &Columns,
+    run: &MeasuredRun,
+    beta_declared: bool,
+) -> Result<(), InputError> {
+    if let (Some(ay), Some(beta)) = (&run.ay, &run.beta) {
         // Before the size checks, which would name degrees.
         let lateral = Lateral {
-            t: &t,
-            speed: &speed,
-            steer: &steer,
-            yaw_rate: &yaw_rate,
-            ay,
             beta: None,
             bank: None,
-            means: Default::default(),
+            ..lateral(run, ay)
         };
-        check_beta_percent(path, &c, &lateral, beta)?;
+        check_beta_percent(path, c, &lateral, beta)?;
     }
-    for (column, v) in [("roll", &roll), ("bank", &bank), ("beta", &beta)] {
+    for (column, v) in [
+        ("roll", &run.roll),
+        ("bank", &run.bank),
+        ("beta", &run.beta),
+    ] {
         if let Some(v) = v {
-            check_roll_or_bank(path, &c, column, v)?;
+            check_roll_or_bank(path, c, column, v)?;
         }
     }
-    if let Some(beta) = &beta {
-        check_beta(path, &c, &speed, &yaw_rate, beta)?;
-        if declared.contains(&AngleColumn::Beta) {
-            check_beta_declared(path, &c, &speed, &yaw_rate, beta)?;
+    if let Some(beta) = &run.beta {
+        check_beta(path, c, &run.speed, &run.yaw_rate, beta)?;
+        if beta_declared {
+            check_beta_declared(path, c, &run.speed, &run.yaw_rate, beta)?;
         }
     }
-    if let Some(ay) = &ay {
-        // Over the whole run, where single samples scatter on a transient.
-        let lateral = Lateral {
-            t: &t,
-            speed: &speed,
-            steer: &steer,
-            yaw_rate: &yaw_rate,
-            ay,
-            beta: beta.as_deref(),
-            bank: bank.as_deref(),
-            means: Default::default(),
-        };
-        // Before the bank and the slope, which an `ay` of the other sign
-        // distorts.
-        check_ay_sign(path, &c, &lateral)?;
-        // Before the slope, which a bank in degrees distorts.
-        if let Some(bank) = &bank {
-            check_bank_degrees(path, &c, &lateral, bank)?;
-        }
-        check_slope_reading(path, &c, &lateral)?;
-    }
-    let run = MeasuredRun {
-        path: path.to_path_buf(),
-        t,
-        speed,
-        steer,
-        yaw_rate,
-        ay,
-        beta,
-        roll,
-        bank,
-        ax,
-        masked: Vec::new(),
+    Ok(())
+}
+
+/// `ay` against the kinematic lateral acceleration over the whole run
+/// (where single samples scatter on a transient): its sign, the bank's
+/// unit, the slope's.
+fn check_lateral(path: &Path, c: &Columns, run: &MeasuredRun) -> Result<(), InputError> {
+    let Some(ay) = &run.ay else {
+        return Ok(());
     };
-    Ok((run, RunHeader { unread, slips }, absent))
+    let lateral = lateral(run, ay);
+    // Before the bank and the slope, which an `ay` of the other sign
+    // distorts.
+    check_ay_sign(path, c, &lateral)?;
+    // Before the slope, which a bank in degrees distorts.
+    if let Some(bank) = &run.bank {
+        check_bank_degrees(path, c, &lateral, bank)?;
+    }
+    check_slope_reading(path, c, &lateral)
+}
+
+/// The run's channels as the lateral checks take them, with its `ay`.
+fn lateral<'a>(run: &'a MeasuredRun, ay: &'a [f64]) -> Lateral<'a> {
+    Lateral {
+        t: &run.t,
+        speed: &run.speed,
+        steer: &run.steer,
+        yaw_rate: &run.yaw_rate,
+        ay,
+        beta: run.beta.as_deref(),
+        bank: run.bank.as_deref(),
+        means: Default::default(),
+    }
 }
 
 #[cfg(test)]

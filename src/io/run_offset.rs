@@ -13,6 +13,8 @@
 //! named: the offset is the replay's and the diagnosis's to say (as the
 //! channel's mean difference from the model).
 
+use crate::stats::{mean, CentredSums};
+
 /// The least spread (5th to 95th percentile) of the kinematic lateral
 /// acceleration that fixes a slope with an intercept, m/s²: five times a
 /// lateral accelerometer's noise (0.1 m/s²), half of the turning level of
@@ -26,25 +28,18 @@ const MIN_PAIRS: usize = 6;
 /// acceleration, y `ay`): the slope `k` and intercept `c`, with the
 /// spread of `x`; None with fewer than [`MIN_PAIRS`] finite pairs.
 pub(super) fn line(pairs: impl Iterator<Item = (f64, f64)>) -> Option<(f64, f64, f64)> {
-    let pts: Vec<(f64, f64)> = pairs
+    let (xs, ys): (Vec<f64>, Vec<f64>) = pairs
         .filter(|(x, y)| x.is_finite() && y.is_finite())
-        .collect();
-    if pts.len() < MIN_PAIRS {
+        .unzip();
+    if xs.len() < MIN_PAIRS {
         return None;
     }
-    let n = pts.len() as f64;
-    let (mx, my) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
-    let (sxx, sxy) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + (x - mx) * (x - mx), b + (x - mx) * (y - my))
-    });
-    let mut xs: Vec<f64> = pts.iter().map(|p| p.0).collect();
+    let k = CentredSums::of(&xs, &ys).slope();
+    let c = mean(&ys) - k * mean(&xs);
+    let mut xs = xs;
     xs.sort_by(f64::total_cmp);
     let at = |q: f64| xs[((q * (xs.len() - 1) as f64).round() as usize).min(xs.len() - 1)];
-    let spread = at(0.95) - at(0.05);
-    let k = sxy / sxx;
-    Some((k, my - k * mx, spread))
+    Some((k, c, at(0.95) - at(0.05)))
 }
 
 /// Whether `ay` against the kinematic lateral acceleration is a car's
@@ -83,5 +78,66 @@ mod tests {
         assert!((k - 1.0 / 2.23694).abs() < 1e-12 && c.abs() < 1e-12);
         assert!(!an_offset(x.iter().map(|v| (v * 2.23694, v + 0.2)), SI));
         assert!(!an_offset((0..100).map(|_| (1.83, 1.08)), SI));
+    }
+
+    /// The line as it was written before it was built on `CentredSums`
+    /// (means summed as Σ(x/n), where `CentredSums` divides Σx by n).
+    fn by_hand(pts: &[(f64, f64)]) -> (f64, f64) {
+        let n = pts.len() as f64;
+        let (mx, my) = pts
+            .iter()
+            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
+        let (sxx, sxy) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+            (a + (x - mx) * (x - mx), b + (x - mx) * (y - my))
+        });
+        let k = sxy / sxx;
+        (k, my - k * mx)
+    }
+
+    /// The line on the shared centred sums is the one written out by
+    /// hand, on a step, a noisy ramp, a scaled and shifted sine and a ramp
+    /// with a gap (non-finite pairs dropped): bit for bit where the means
+    /// are exact (multiples of 1/8 over 64 pairs, the closed form
+    /// y = 4x − 3), else to the rounding of the two ways of summing the
+    /// means (a few parts in 10¹⁵).
+    #[test]
+    fn the_line_on_centred_sums_is_the_line_by_hand() {
+        let eighths = (0..64).map(|i| (0.125 * i as f64, 0.5 * i as f64 - 3.0));
+        let (k, c, _) = line(eighths).unwrap();
+        assert_eq!(
+            (k.to_bits(), c.to_bits()),
+            (4.0f64.to_bits(), (-3.0f64).to_bits())
+        );
+        let step: Vec<(f64, f64)> = (0..100)
+            .map(|i| if i < 20 { (0.75, 0.0) } else { (1.83, 1.08) })
+            .collect();
+        let ramp: Vec<(f64, f64)> = (0..257)
+            .map(|i| {
+                let x = 0.013 * i as f64;
+                (
+                    x,
+                    0.9 * x - 0.31 + 0.02 * ((i * 7919 % 101) as f64 / 101.0 - 0.5),
+                )
+            })
+            .collect();
+        let sine: Vec<(f64, f64)> = (0..1000)
+            .map(|i| {
+                let x = 4.0 * (0.01 * i as f64).sin();
+                (x, x / 2.23694 + 0.17)
+            })
+            .collect();
+        let mut gap = ramp.clone();
+        gap[3].1 = f64::NAN;
+        gap[40].0 = f64::INFINITY;
+        for pts in [step, ramp, sine, gap] {
+            let (k, c, _) = line(pts.iter().copied()).unwrap();
+            let finite: Vec<(f64, f64)> = pts
+                .into_iter()
+                .filter(|(x, y)| x.is_finite() && y.is_finite())
+                .collect();
+            let (k0, c0) = by_hand(&finite);
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-14 * b.abs();
+            assert!(close(k, k0) && close(c, c0), "{k} {c} against {k0} {c0}");
+        }
     }
 }

@@ -260,19 +260,9 @@ mod tests {
     #[test]
     fn a_run_with_ax_keeps_it() {
         let t: Vec<f64> = (0..200).map(|k| k as f64 * 0.01).collect();
-        let mut run = MeasuredRun {
-            path: "r.csv".into(),
-            speed: t.iter().map(|&x| 10.0 + 2.0 * x).collect(),
-            steer: vec![0.0; t.len()],
-            yaw_rate: vec![0.0; t.len()],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: Some(vec![-3.0; t.len()]),
-            masked: Vec::new(),
-            t,
-        };
+        let (speed, n) = (t.iter().map(|&x| 10.0 + 2.0 * x).collect(), t.len());
+        let mut run =
+            MeasuredRun::new("r.csv", t, speed, vec![0.0; n], vec![0.0; n]).with_ax(vec![-3.0; n]);
         assert_eq!(run.longitudinal_acceleration(), vec![-3.0; 200]);
         run.ax = None;
         for a in run.longitudinal_acceleration() {

@@ -73,6 +73,72 @@ impl DeadChannel {
 }
 
 impl MeasuredRun {
+    /// A run of the required channels only (the optional ones absent, no
+    /// sample masked): the one way to build a run; the `with_*` methods add
+    /// the optional channels.
+    pub fn new(
+        path: impl Into<PathBuf>,
+        t: Vec<f64>,
+        speed: Vec<f64>,
+        steer: Vec<f64>,
+        yaw_rate: Vec<f64>,
+    ) -> Self {
+        MeasuredRun {
+            path: path.into(),
+            t,
+            speed,
+            steer,
+            yaw_rate,
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        }
+    }
+
+    /// The run with lateral acceleration `ay` (m/s²; a `Vec` or an `Option`).
+    pub fn with_ay(self, ay: impl Into<Option<Vec<f64>>>) -> Self {
+        MeasuredRun {
+            ay: ay.into(),
+            ..self
+        }
+    }
+
+    /// The run with sideslip `beta` (rad; a `Vec` or an `Option`).
+    pub fn with_beta(self, beta: impl Into<Option<Vec<f64>>>) -> Self {
+        MeasuredRun {
+            beta: beta.into(),
+            ..self
+        }
+    }
+
+    /// The run with body roll `roll` (rad; a `Vec` or an `Option`).
+    pub fn with_roll(self, roll: impl Into<Option<Vec<f64>>>) -> Self {
+        MeasuredRun {
+            roll: roll.into(),
+            ..self
+        }
+    }
+
+    /// The run with road bank `bank` (rad; a `Vec` or an `Option`).
+    pub fn with_bank(self, bank: impl Into<Option<Vec<f64>>>) -> Self {
+        MeasuredRun {
+            bank: bank.into(),
+            ..self
+        }
+    }
+
+    /// The run with longitudinal acceleration `ax` (m/s²; a `Vec` or an
+    /// `Option`).
+    pub fn with_ax(self, ax: impl Into<Option<Vec<f64>>>) -> Self {
+        MeasuredRun {
+            ax: ax.into(),
+            ..self
+        }
+    }
+
     /// The response channels (yaw rate, `ay`, `beta`) that hold one finite
     /// value over the whole run (samples that are not numbers aside), in
     /// that order: the one rule of a dead channel, for every job.

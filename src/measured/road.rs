@@ -336,7 +336,6 @@ fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AnglePr
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::path::PathBuf;
 
     #[test]
     fn an_angle_that_rounds_to_zero_is_said_without_a_sign() {
@@ -359,22 +358,12 @@ mod tests {
         let grade = 0.03f64.atan();
         let speed: Vec<f64> = t.iter().map(|&t| 25.0 + t).collect();
         let r = 0.2;
-        let ay = (0..n).map(|k| speed[k] * r + G * bank[k].sin()).collect();
+        let ay: Vec<f64> = (0..n).map(|k| speed[k] * r + G * bank[k].sin()).collect();
         let ax = vec![1.0 + G * grade.sin(); n];
         (
-            MeasuredRun {
-                path: PathBuf::from("turn.csv"),
-                t,
-                yaw_rate: vec![r; n],
-                steer: vec![0.02; n],
-                speed,
-                ay: Some(ay),
-                beta: None,
-                roll: None,
-                bank: None,
-                ax: Some(ax),
-                masked: Vec::new(),
-            },
+            MeasuredRun::new("turn.csv", t, speed, vec![0.02; n], vec![r; n])
+                .with_ay(ay)
+                .with_ax(ax),
             bank,
         )
     }
@@ -531,19 +520,9 @@ mod tests {
                     }
             })
             .collect();
-        let mut run = MeasuredRun {
-            path: PathBuf::from("step.csv"),
-            t,
-            yaw_rate: r,
-            steer: vec![0.0; n],
-            speed: vec![u; n],
-            ay: Some(ay),
-            beta: Some(beta),
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let mut run = MeasuredRun::new("step.csv", t, vec![u; n], vec![0.0; n], r)
+            .with_ay(ay)
+            .with_beta(beta);
         let with = RoadGeometry::of("step", &run, SensorOffsets::default());
         let b = with.bank.unwrap();
         assert_eq!(b.source, AngleSource::LateralKinematicsWithSideslip);

@@ -86,7 +86,6 @@ use crate::diagnose::model::Augmented;
 use crate::identify::data::gauss;
 use crate::measured::MeasuredRun;
 use rand_chacha::ChaCha8Rng;
-use std::path::PathBuf;
 
 /// Step of the closed-loop integration, s (divides every logging interval).
 const STEP: f64 = 0.002;
@@ -400,19 +399,10 @@ fn logged(plan: &Plan, run: &Run, truth: &Augmented, rng: &mut ChaCha8Rng) -> Me
             plan.steering.logged(q)
         })
         .collect();
-    MeasuredRun {
-        path: PathBuf::from(format!("{}.csv", run.name)),
-        t,
-        speed: speed_log,
-        steer,
-        yaw_rate,
-        ay: lg.ay.then_some(ay),
-        beta: Some(beta),
-        ax: Some(ax_log),
-        bank: None,
-        roll: None,
-        masked: Vec::new(),
-    }
+    MeasuredRun::new(format!("{}.csv", run.name), t, speed_log, steer, yaw_rate)
+        .with_ay(lg.ay.then_some(ay))
+        .with_beta(beta)
+        .with_ax(ax_log)
 }
 
 /// Puts into `truth` what an analogue's car has built in (the racing

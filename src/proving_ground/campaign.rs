@@ -81,6 +81,7 @@ impl Synthetic {
             tyres,
             prior: Default::default(),
             uncertainty: Default::default(),
+            sensors: Default::default(),
             source,
             run_files: self.runs.len(),
             runs,

@@ -23,7 +23,6 @@ use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use std::path::PathBuf;
 
 /// A manoeuvre to drive, with the name of the run it makes.
 #[derive(Debug, Clone, PartialEq)]
@@ -123,19 +122,13 @@ fn driven_run(models: &TruthModels, spec: &SynthSpec, truth: Truth, r: &DrivenRu
             .collect();
         with_noise(&bank, BANK_NOISE, &mut rng)
     });
-    MeasuredRun {
-        path: PathBuf::from(format!("{}.csv", r.name)),
-        speed: times.iter().map(|&t| m.speed(t)).collect(),
-        steer: times.iter().map(|&t| m.steer(t)).collect(),
-        yaw_rate,
-        ay: p.logs_ay().then_some(ay),
-        beta,
-        roll: None,
-        bank,
-        ax,
-        masked: Vec::new(),
-        t: times,
-    }
+    let speed = times.iter().map(|&t| m.speed(t)).collect();
+    let steer = times.iter().map(|&t| m.steer(t)).collect();
+    MeasuredRun::new(format!("{}.csv", r.name), times, speed, steer, yaw_rate)
+        .with_ay(p.logs_ay().then_some(ay))
+        .with_beta(beta)
+        .with_bank(bank)
+        .with_ax(ax)
 }
 
 /// What a driven run of `programme` leaves out of the replay `m` of the

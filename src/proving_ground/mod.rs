@@ -67,7 +67,6 @@ use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::{Vehicle, VehicleModel};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use std::path::PathBuf;
 
 mod analogues;
 mod campaign;
@@ -280,19 +279,13 @@ fn generate_from(
                     .collect();
                 let (yaw_rate, ay, beta) = models.measure(truth, &m, &times);
                 let mut noisy = |v: &[f64], s: f64| with_noise(v, s, &mut rng);
-                MeasuredRun {
-                    path: PathBuf::from(format!("{name}.csv")),
-                    speed: times.iter().map(|&t| m.speed(t)).collect(),
-                    steer: times.iter().map(|&t| m.steer(t)).collect(),
-                    yaw_rate: noisy(&yaw_rate, n.yaw_rate),
-                    ay: Some(noisy(&ay, n.ay)),
-                    beta: Some(noisy(&beta, n.beta)),
-                    roll: None,
-                    bank: None,
-                    ax: None,
-                    masked: Vec::new(),
-                    t: times,
-                }
+                let speed = times.iter().map(|&t| m.speed(t)).collect();
+                let steer = times.iter().map(|&t| m.steer(t)).collect();
+                // The noise drawn in this order: yaw rate, ay, beta.
+                let yaw_rate = noisy(&yaw_rate, n.yaw_rate);
+                MeasuredRun::new(format!("{name}.csv"), times, speed, steer, yaw_rate)
+                    .with_ay(noisy(&ay, n.ay))
+                    .with_beta(noisy(&beta, n.beta))
             })
             .collect()
     };
@@ -392,17 +385,16 @@ fn logged_run(
         Programme::SlowOvalEstimatedBeta => Some(estimator::estimated(&p.t, &beta, rng)),
         _ => Some(with_noise(&beta, noise.beta, rng)),
     };
-    MeasuredRun {
-        path: PathBuf::from(format!("{}.csv", p.name)),
-        speed: p.speed.clone(),
-        steer: p.steer.clone(),
+    let path = format!("{}.csv", p.name);
+    MeasuredRun::new(
+        path,
+        p.t.clone(),
+        p.speed.clone(),
+        p.steer.clone(),
         yaw_rate,
-        ay: programme.logs_ay().then_some(ay),
-        ax: Some(ax),
-        bank: Some(bank),
-        beta,
-        roll: None,
-        masked: Vec::new(),
-        t: p.t.clone(),
-    }
+    )
+    .with_ay(programme.logs_ay().then_some(ay))
+    .with_ax(ax)
+    .with_bank(bank)
+    .with_beta(beta)
 }

@@ -64,10 +64,13 @@ impl<T: Scalar> AtSlip<T> {
     }
 
     /// A wheel's lateral force at load `fz`.
-    // Inlined (as `axle` and `Balance::eval`): the load-transfer loop calls
-    // them for every load it tries, and a per-load tyre's force is then two
-    // products, cheaper than the calls. Inlining changes no operation.
-    #[inline]
+    // Inlined, always (as `axle`, `front` and `Balance::eval`): the
+    // load-transfer loop calls them for every load it tries (about twice a
+    // right-hand side with per-load tyres), a per-load tyre's force is then
+    // two products, and the calls, left out of line by the compiler, took a
+    // sixth of the Putnam campaign's replays (profiled, session 96).
+    // Inlining changes no operation: the same numbers.
+    #[inline(always)]
     fn wheel(&self, tyres: &impl AxleTyres<T>, fz: T, road: Road<T>) -> T {
         match self.per_load {
             Some(k) if fz > 0.0 => k * fz,
@@ -96,7 +99,7 @@ impl<T: Scalar> AtSlip<T> {
     /// Axle force on wheel loads `fz`, plus camber thrust `thrust` per
     /// unit load (roll camber); with a longitudinal force `fx` per wheel
     /// (combined slip), each wheel's force reduced on its friction circle.
-    #[inline]
+    #[inline(always)]
     fn axle(
         &self,
         tyres: &impl AxleTyres<T>,
@@ -117,7 +120,7 @@ impl<T: Scalar> AtSlip<T> {
 
 /// An axle's force `y` of its wheels plus camber thrust `thrust` per unit
 /// of its loads `fz`.
-#[inline]
+#[inline(always)]
 fn with_thrust<T: Scalar>(y: T, fz: [T; 2], thrust: T) -> T {
     if off(thrust) {
         y
@@ -200,6 +203,7 @@ impl<T: Scalar> Balance<T> {
     /// The front slip angle and axle force on wheel loads `fz`; `re` the
     /// plain balance a compliant front's slip is solved in when `T` carries
     /// derivatives.
+    #[inline(always)]
     fn front(&self, tyres: &impl AxleTyres<T>, re: Option<&Balance<f64>>, fz: [T; 2]) -> (T, T) {
         if let Some(at) = &self.front_at {
             let fx = self.fx.map(|f| f[0]);
@@ -246,7 +250,7 @@ impl<T: Scalar> Balance<T> {
     }
 
     /// `Y(ay)/m` and the axles at lateral acceleration `ay`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn eval(
         &self,
         tyres: &impl AxleTyres<T>,
@@ -270,7 +274,7 @@ impl<T: Scalar> Balance<T> {
 
     /// `Y/m` and the axles of axle forces `fy_front`, `fy_rear` (N) on
     /// wheel loads `fz` with the front at slip angle `alpha_front`.
-    #[inline]
+    #[inline(always)]
     fn at_forces(
         &self,
         alpha_front: T,

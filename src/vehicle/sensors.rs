@@ -11,6 +11,10 @@
 //!   acceleration, `ay + x·ṙ`, and a sideslip it measures (a GNSS/INS or
 //!   optical sensor at the unit) is the velocity angle there,
 //!   `β + x·r/u` (the lateral velocity at x is `v + x·r`; small angles);
+//! - `beta_at` (m ahead of the centre of gravity, or None): where a
+//!   campaign states that the sideslip is measured by a sensor of its own
+//!   (`[sensors] beta_x`), its point: the sideslip is `β + x·r/u` there,
+//!   whatever the accelerometer's position (None: at the inertial unit);
 //! - `roll_gradient` (rad per m/s²): the body rolls by φ = k·ay (ISO 8855:
 //!   positive φ puts the right side down, outward in a left turn) and a
 //!   body-fixed accelerometer reads `ay·cos φ + g·sin φ`.
@@ -37,6 +41,10 @@ pub struct Sensors<T = f64> {
     pub accelerometer_x: T,
     /// Body roll per unit lateral acceleration, rad per m/s².
     pub roll_gradient: T,
+    /// The sideslip's own measurement point ahead of the centre of
+    /// gravity, m, where stated (None: at the inertial unit,
+    /// `accelerometer_x`). Stated, never fitted: a plain number.
+    pub beta_at: Option<f64>,
 }
 
 impl<T: Copy> Sensors<T> {
@@ -49,6 +57,7 @@ impl<T: Copy> Sensors<T> {
             beta_bias: f(self.beta_bias),
             accelerometer_x: f(self.accelerometer_x),
             roll_gradient: f(self.roll_gradient),
+            beta_at: self.beta_at,
         }
     }
 }
@@ -77,7 +86,8 @@ impl<T: Scalar> Sensors<T> {
     /// What a sideslip measured at the inertial unit adds to the centre of
     /// gravity's at yaw rate `r` and speed `u`: `x·r/u`.
     pub fn sideslip_offset(&self, r: T, u: f64) -> T {
-        self.accelerometer_x * r / u.max(SIDESLIP_MIN_SPEED)
+        let x = self.beta_at.map_or(self.accelerometer_x, T::from);
+        x * r / u.max(SIDESLIP_MIN_SPEED)
     }
 
     /// What the sensors record of a response (yaw rate, `ay` and sideslip
@@ -111,7 +121,8 @@ impl<T: Scalar> Sensors<T> {
                     .collect()
             }
         };
-        let beta_seen = if off(self.beta_bias) && off(self.accelerometer_x) {
+        let at_cg = self.beta_at.map_or(off(self.accelerometer_x), |x| x == 0.0);
+        let beta_seen = if off(self.beta_bias) && at_cg {
             late(beta)
         } else {
             let b: Vec<T> = beta
@@ -178,6 +189,15 @@ mod tests {
         // The unit's sideslip: the velocity angle 0.5 m ahead, at 20 m/s.
         assert!((ahead[2][i] - beta[i] - 0.5 * r[i] / 20.0).abs() < 1e-15);
         assert_eq!(ahead[0], r);
+        // A sideslip sensor of its own 1.5 m ahead: the sideslip is taken
+        // there, the accelerometer's ay still 0.5 m ahead.
+        let apart = measure(&Sensors {
+            accelerometer_x: 0.5,
+            beta_at: Some(1.5),
+            ..Default::default()
+        });
+        assert!((apart[2][i] - beta[i] - 1.5 * r[i] / 20.0).abs() < 1e-15);
+        assert_eq!(apart[1], ahead[1]);
         let rolled = measure(&Sensors {
             roll_gradient: 0.01,
             ..Default::default()

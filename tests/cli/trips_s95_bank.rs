@@ -33,7 +33,7 @@ fn road_bank(t: f64, phase: f64) -> f64 {
 /// `ay_offset` m/s² high, and where `logged_error` is given the run logs
 /// a `bank` column that error off the road's. 50 Hz, noise 0.002 rad/s,
 /// 0.05 m/s², 0.002 rad.
-fn banked_run(
+pub(super) fn banked_run(
     dir: &Path,
     k: usize,
     banked: bool,
@@ -133,7 +133,7 @@ fn banked_run(
 }
 
 /// A campaign of four [`banked_run`]s diagnosed with `effects`.
-fn banked_campaign(dir: &Path, effects: &str, runs: impl Fn(&Path, usize)) -> PathBuf {
+pub(super) fn banked_campaign(dir: &Path, effects: &str, runs: impl Fn(&Path, usize)) -> PathBuf {
     for k in 0..4 {
         runs(dir, k);
     }

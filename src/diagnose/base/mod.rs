@@ -84,6 +84,10 @@ pub(super) fn base_models(
     let make = |f: Tyre, r: Tyre| {
         let mut m = Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction);
         m.effects_mut().roll = c.roll;
+        // Outputs taken where the campaign states they are measured.
+        let sensors = &mut m.effects_mut().sensors;
+        sensors.accelerometer_x = c.sensors.accelerometer_x.unwrap_or(0.0);
+        sensors.beta_at = c.sensors.beta_x;
         m
     };
     // Tyres not fitted to the runs: one model for all runs and every fold.

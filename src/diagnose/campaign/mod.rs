@@ -84,6 +84,47 @@ pub struct StatedUncertainty {
     pub beta: Option<f64>,
 }
 
+/// The `[sensors]` table: where the campaign states its measurements are
+/// taken, m ahead of the centre of gravity (ISO 8855 x, negative behind).
+/// Every replay, the base model's and every candidate's, takes its outputs
+/// at the stated points: the accelerometer's `ay + x·ṙ`, the sideslip's
+/// `β + x·r/u` (`crate::vehicle::Sensors`). Without `beta_x` the sideslip
+/// is taken at the accelerometer (an inertial unit's); the
+/// `accelerometer_position` candidate then fits a correction to the stated
+/// `accelerometer_x`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SensorPositions {
+    /// The accelerometer's position, m ahead of the centre of gravity.
+    pub accelerometer_x: Option<f64>,
+    /// The sideslip sensor's position, m ahead of the centre of gravity.
+    pub beta_x: Option<f64>,
+}
+
+impl SensorPositions {
+    /// The report's note of the positions used, where any is stated.
+    pub fn note(&self) -> Option<String> {
+        let at = |x: f64| {
+            format!(
+                "{} m ahead of the centre of gravity",
+                crate::format::exact(x)
+            )
+        };
+        let ay = self.accelerometer_x.map_or_else(
+            || "at the centre of gravity (no accelerometer_x stated)".to_string(),
+            at,
+        );
+        let beta = match (self.beta_x, self.accelerometer_x) {
+            (Some(b), _) => at(b),
+            (None, Some(_)) => "at the accelerometer (no beta_x stated)".to_string(),
+            (None, None) => return None,
+        };
+        Some(format!(
+            "[sensors]: every replay, the base model's and each candidate's, takes ay {ay} (ay + x·dr/dt) and beta {beta} (beta + x·r/u); accelerometer_position fits a correction to the accelerometer's stated position"
+        ))
+    }
+}
+
 /// A road friction a campaign states, and the line it is stated on: a
 /// scale on the tyres' grip that a verdict on the axles names.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -140,6 +181,8 @@ pub struct Campaign {
     /// The measurement uncertainty the user trusts per channel
     /// (`[channels]`).
     pub uncertainty: StatedUncertainty,
+    /// Where the measurements are taken (`[sensors]`).
+    pub sensors: SensorPositions,
     /// The runs (after splitting at gaps and into segments).
     pub runs: Vec<MeasuredRun>,
     /// The run files (or logs) the runs were read from.

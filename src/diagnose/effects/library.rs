@@ -275,8 +275,10 @@ impl Effect for AccelerometerPosition {
     const NEEDS: Needs = Needs::Nothing;
     const USES_ROLL: bool = false;
     const TRUTH: &'static [f64] = &[0.8];
+    /// A correction to the accelerometer's position the campaign states
+    /// (`[sensors] accelerometer_x`, 0 where none).
     fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
-        e.sensors.accelerometer_x = p[0];
+        e.sensors.accelerometer_x += p[0];
     }
 }
 

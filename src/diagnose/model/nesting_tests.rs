@@ -37,19 +37,10 @@ fn run(name: &str, speed: impl Fn(f64) -> f64, slope: f64, with_ax: bool) -> Mea
         .collect();
     let speed = t.iter().map(|&x| speed(x) + 0.03 * gauss()).collect();
     let ax = with_ax.then(|| (0..n).map(|_| slope + 0.05 * gauss()).collect());
-    MeasuredRun {
-        path: name.into(),
-        t,
-        speed,
-        steer,
-        yaw_rate: vec![0.01; n],
-        ay: Some(vec![0.0; n]),
-        beta: Some(vec![0.002; n]),
-        roll: None,
-        bank: None,
-        ax,
-        masked: Vec::new(),
-    }
+    MeasuredRun::new(name, t, speed, steer, vec![0.01; n])
+        .with_ay(vec![0.0; n])
+        .with_beta(vec![0.002; n])
+        .with_ax(ax)
 }
 
 /// Constant speed and braking, each without and with `ax`.

@@ -471,19 +471,8 @@ pub(crate) mod tests {
                 .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
                 .collect()
         };
-        let run = MeasuredRun {
-            path: format!("run{k}.csv").into(),
-            speed: at(&h.speed),
-            steer: at(&h.steer),
-            yaw_rate: at(&h.yaw_rate),
-            ay: Some(at(&h.ay)),
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-            t,
-        };
+        let (speed, steer, yaw_rate, ay) = (at(&h.speed), at(&h.steer), at(&h.yaw_rate), at(&h.ay));
+        let run = MeasuredRun::new(format!("run{k}.csv"), t, speed, steer, yaw_rate).with_ay(ay);
         Prepared::new(&run, 0.01, 25.0)
     }
 
@@ -507,19 +496,7 @@ pub(crate) mod tests {
     /// A run of constant steer at `speed`, `ax` logged or not.
     fn run(t: Vec<f64>, speed: Vec<f64>, ax: Option<Vec<f64>>) -> MeasuredRun {
         let n = t.len();
-        MeasuredRun {
-            path: "r.csv".into(),
-            t,
-            speed,
-            steer: vec![0.01; n],
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax,
-            masked: Vec::new(),
-        }
+        MeasuredRun::new("r.csv", t, speed, vec![0.01; n], vec![0.0; n]).with_ax(ax)
     }
 
     use crate::identify::data::{rms, white_noise as noise};

@@ -241,19 +241,8 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     let t: Vec<f64> = (0..500).map(|i| 0.04 * i as f64).collect();
     let speed: Vec<f64> = t.iter().map(|&t| 6.0 + 24.0 * (t / 20.0).powi(2)).collect();
     let steer: Vec<f64> = t.iter().map(|&t| 0.05 * (0.8 * t).sin()).collect();
-    let run = MeasuredRun {
-        path: "stiff.csv".into(),
-        yaw_rate: vec![0.0; t.len()],
-        beta: Some(vec![0.0; t.len()]),
-        ay: None,
-        roll: None,
-        bank: None,
-        ax: None,
-        masked: Vec::new(),
-        t: t.clone(),
-        speed,
-        steer,
-    };
+    let run = MeasuredRun::new("stiff.csv", t.clone(), speed, steer, vec![0.0; t.len()])
+        .with_beta(vec![0.0; t.len()]);
     let prepared = Prepared::new(&run, 0.02, 25.0);
     let drive = prepared.drive_for(&model);
     assert_eq!((drive.method, drive.step), (FixedStep::RosenbrockW, 0.02));
@@ -306,19 +295,10 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
 /// A 20 s run at 25 Hz, 20 m/s, with a weaving steer (for the steer path).
 fn weave_run() -> crate::measured::MeasuredRun {
     let t: Vec<f64> = (0..500).map(|i| 0.04 * i as f64).collect();
-    crate::measured::MeasuredRun {
-        path: "weave.csv".into(),
-        yaw_rate: vec![0.0; t.len()],
-        beta: Some(vec![0.0; t.len()]),
-        ay: Some(vec![0.0; t.len()]),
-        roll: None,
-        bank: None,
-        ax: None,
-        masked: Vec::new(),
-        speed: vec![20.0; t.len()],
-        steer: t.iter().map(|&t| 0.03 * (1.3 * t).sin()).collect(),
-        t,
-    }
+    let (steer, n) = (t.iter().map(|&t| 0.03 * (1.3 * t).sin()).collect(), t.len());
+    crate::measured::MeasuredRun::new("weave.csv", t, vec![20.0; n], steer, vec![0.0; n])
+        .with_beta(vec![0.0; n])
+        .with_ay(vec![0.0; n])
 }
 
 #[test]

@@ -7,10 +7,13 @@
 use crate::diagnose::campaign::{Campaign, StatedFriction};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::{
-    Confounded, Evidence, InSet, MassAlike, ParameterValue, Ranked, Shrinkage, Verdict,
+    Confounded, Evidence, InSet, MassAlike, NotIdentifiable, OutsideLibrary, ParameterValue,
+    Ranked, Shrinkage, Verdict,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::class::class_mismatch;
 use crate::diagnose::verdict::conclude::verdict;
+use crate::diagnose::verdict::rules::ACCEPT;
 use crate::diagnose::verdict::score::{Context, Scored};
 use crate::diagnose::verdict::search::{lookalikes_alone, Search};
 use crate::diagnose::verdict::twins::{confounded_with, in_set};
@@ -63,6 +66,20 @@ pub(super) fn conclude(
             value: c.friction,
             line,
         });
+    }
+    // Axles outside the stated tyre class but inside another's: the class
+    // to check, not a model-form error outside the library.
+    if let Verdict::NotIdentifiable(NotIdentifiable { tyre_class, .. })
+    | Verdict::OutsideLibrary(OutsideLibrary { tyre_class, .. }) = &mut verdict
+    {
+        let identified = ctx.bases.identification.as_ref();
+        let rows = order.iter().map(|&i| base.rank(&singles[i]));
+        *tyre_class = class_mismatch(
+            &c.prior,
+            identified.map(|i| (&i.parameters[..], &i.no_tyre[..])),
+            rows.chain(found.combinations.iter().cloned()),
+            100.0 * ACCEPT,
+        );
     }
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {

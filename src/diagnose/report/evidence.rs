@@ -183,6 +183,11 @@ pub struct ThroughBank {
     pub logged_bank: Option<f64>,
     /// The offset read through the logged bank (or a flat road), m/s².
     pub as_logged: f64,
+    /// The fitted bank's standard error there, rad: its parameters'
+    /// (trusted) standard errors combined, with the correlation of a
+    /// traded scale and offset. It enters the reading's uncertainty as
+    /// `g·cos θ·σ_bank`.
+    pub bank_std_error: f64,
 }
 
 /// Combined standard errors within which a fitted and a measured offset

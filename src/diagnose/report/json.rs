@@ -10,7 +10,8 @@ use crate::diagnose::base::TyreSource;
 use crate::diagnose::campaign::StatedFriction;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
-    Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
+    ClassMismatch, Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind,
+    VerdictWarning,
 };
 use crate::diagnose::report::{
     words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Shrinkage,
@@ -43,10 +44,12 @@ enum Details<'a> {
         threshold_percent: f64,
         closest: &'a [Closest],
         road_friction: Option<&'a StatedFriction>,
+        tyre_class: Option<&'a ClassMismatch>,
     },
     OutsideLibrary {
         refused: Option<&'a Refused>,
         threshold_percent: f64,
+        tyre_class: Option<&'a ClassMismatch>,
     },
 }
 
@@ -100,6 +103,7 @@ impl Serialize for Verdict {
                     threshold_percent: n.threshold_percent,
                     closest: &n.closest,
                     road_friction: n.road_friction.as_ref(),
+                    tyre_class: n.tyre_class.as_ref(),
                 },
             ),
             Verdict::OutsideLibrary(o) => (
@@ -108,6 +112,7 @@ impl Serialize for Verdict {
                 Details::OutsideLibrary {
                     refused: o.refused.as_ref(),
                     threshold_percent: o.threshold_percent,
+                    tyre_class: o.tyre_class.as_ref(),
                 },
             ),
         };

@@ -16,6 +16,7 @@ pub mod separating;
 pub(crate) mod summary;
 pub mod traded;
 pub(crate) mod trust;
+pub mod tyre_class;
 mod values;
 pub mod words;
 pub mod worth;
@@ -30,10 +31,10 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence,
-    Explained, GapFinding, InSet, Lookalike, Lookalikes, MassAlike, NoSignificantGap,
-    NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused,
-    ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
+    above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, ClassMismatch,
+    Closest, Evidence, Explained, GapFinding, InSet, Lookalike, Lookalikes, MassAlike,
+    NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning,
+    Refusal, Refused, ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

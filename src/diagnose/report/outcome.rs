@@ -23,6 +23,7 @@ pub use crate::diagnose::report::evidence::{
 pub use crate::diagnose::report::lookalike::{InSet, Lookalike, Lookalikes, Window};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
+pub use crate::diagnose::report::tyre_class::ClassMismatch;
 use crate::diagnose::report::values::{ParameterValue, Shrinkage, SteadyOffset};
 use serde::{Deserialize, Serialize};
 
@@ -194,6 +195,8 @@ pub struct NotIdentifiable {
     pub closest: Vec<Closest>,
     /// The road friction the campaign states, which trades off with them.
     pub road_friction: Option<crate::diagnose::campaign::StatedFriction>,
+    /// Axles another tyre class's ranges hold (None: none does).
+    pub tyre_class: Option<ClassMismatch>,
 }
 
 /// A candidate whose jointly fitted axles are a tyre, and the share of the
@@ -218,6 +221,8 @@ pub struct OutsideLibrary {
     pub refused: Option<Refused>,
     /// The share of the gap a candidate must remove, %.
     pub threshold_percent: f64,
+    /// Axles another tyre class's ranges hold (None: none does).
+    pub tyre_class: Option<ClassMismatch>,
 }
 
 /// A candidate that is not the verdict, and why.

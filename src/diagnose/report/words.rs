@@ -9,6 +9,8 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
+mod class;
+use class::{NO_VERDICT, OUTSIDE};
 mod evidence;
 mod gap;
 mod lookalikes;
@@ -93,7 +95,9 @@ pub fn statement(v: &Verdict) -> String {
 }
 
 fn not_identifiable(n: &NotIdentifiable) -> String {
-    let closest = if n.closest.is_empty() {
+    let closest = if let Some(c) = &n.tyre_class {
+        class::class_mismatch(c)
+    } else if n.closest.is_empty() {
         "no candidate fitted with it makes the axles a tyre: what bent them is outside the library"
             .to_string()
     } else {
@@ -153,17 +157,23 @@ fn removal(percent: f64) -> String {
 /// other rule it fails. Where it removes enough but fails another rule,
 /// the sentence says which, and never that nothing explains the gap.
 fn outside(o: &OutsideLibrary) -> String {
+    class::with_class(outside_alone(o), o.tyre_class.as_ref())
+}
+
+fn outside_alone(o: &OutsideLibrary) -> String {
     let gap = format!(
         "a gap (held-out error {:.3}, noise level {:.3})",
         o.heldout_error, o.noise_level
     );
     let Some(best) = &o.refused else {
-        return format!("{gap} that no candidate effect explains: no candidate was scored — a model-form error outside the library");
+        return format!(
+            "{gap} that no candidate effect explains: no candidate was scored{OUTSIDE}"
+        );
     };
     let name = joined(&best.effects, "+");
     if let [Refusal::BelowAcceptance { threshold_percent }] = best.why[..] {
         return format!(
-            "{gap} that no candidate effect explains: the best, {name}, {} (acceptance needs {threshold_percent:.0} %) — a model-form error outside the library",
+            "{gap} that no candidate effect explains: the best, {name}, {} (acceptance needs {threshold_percent:.0} %){OUTSIDE}",
             removal(best.reduction_percent)
         );
     }
@@ -174,14 +184,14 @@ fn outside(o: &OutsideLibrary) -> String {
     if best.why.iter().any(below) {
         let rest: Vec<String> = best.why.iter().filter(|r| !below(r)).map(refusal).collect();
         return format!(
-            "{gap} that no candidate effect explains: the best, {name}, {}, less than the {:.0} % acceptance needs, and besides {} — a model-form error outside the library",
+            "{gap} that no candidate effect explains: the best, {name}, {}, less than the {:.0} % acceptance needs, and besides {}{OUTSIDE}",
             removal(best.reduction_percent),
             o.threshold_percent,
             rest.join("; ")
         );
     }
     format!(
-        "{gap} for which no candidate effect is accepted: the best, {name}, {} (acceptance needs {:.0} %) but is refused: {} — no verdict from the library",
+        "{gap} for which no candidate effect is accepted: the best, {name}, {} (acceptance needs {:.0} %) but is refused: {}{NO_VERDICT}",
         removal(best.reduction_percent),
         o.threshold_percent,
         refusals(best)

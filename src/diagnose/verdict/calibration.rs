@@ -38,8 +38,12 @@ pub(crate) fn calibration_evidence(
             let standstill_ay = c == Channel::Ay && measured_on == CalibrationSource::Standstills;
             let through_bank =
                 through_fitted_bank(parameters, measured, logged_bank).filter(|_| standstill_ay);
+            let mut measured_std_error = measured_std_error;
             if let Some(t) = &through_bank {
                 measured = t.as_logged + G * (t.logged_bank.unwrap_or(0.0).sin() - t.bank.sin());
+                // The reading moves by −g·cos θ per radian of the fitted
+                // bank: the bank's own uncertainty is the reading's too.
+                measured_std_error = measured_std_error.hypot(G * t.bank.cos() * t.bank_std_error);
             }
             let fitted_fold_std_error = p.fold_std_error.filter(|_| p.understated());
             let combined = trusted_std_error(p).hypot(measured_std_error);
@@ -81,20 +85,49 @@ fn through_fitted_bank(
     as_logged: f64,
     logged_bank: Option<f64>,
 ) -> Option<ThroughBank> {
-    let value = |name: &str| parameters.iter().find(|p| p.name == name).map(|p| p.value);
-    let scale = value("bank_profile.scale");
-    let offset = value("bank_profile.offset");
-    let road = value("road_bank.bank");
+    let find = |name: &str| parameters.iter().find(|p| p.name == name);
+    let (scale, offset, road) = (
+        find("bank_profile.scale"),
+        find("bank_profile.offset"),
+        find("road_bank.bank"),
+    );
     if scale.is_none() && offset.is_none() && road.is_none() {
         return None;
     }
+    let value = |p: Option<&ParameterValue>| p.map_or(0.0, |p| p.value);
     let theta = logged_bank.unwrap_or(0.0);
-    let bank = scale.unwrap_or(0.0) * theta + offset.unwrap_or(0.0) + road.unwrap_or(0.0);
+    let bank = value(scale) * theta + value(offset) + value(road);
     Some(ThroughBank {
         bank,
         logged_bank,
         as_logged,
+        bank_std_error: bank_std_error(scale, offset, road, theta),
     })
+}
+
+/// The standard error of the fitted bank `scale·θ + offset + bank`, rad:
+/// each parameter's trusted standard error ([`trusted_std_error`]; one the
+/// runs do not pin counts 0: nothing to add), the scale's times `θ`, with
+/// the correlation the report gives a traded scale and offset (otherwise
+/// taken as independent: the report carries no other covariance).
+fn bank_std_error(
+    scale: Option<&ParameterValue>,
+    offset: Option<&ParameterValue>,
+    road: Option<&ParameterValue>,
+    theta: f64,
+) -> f64 {
+    let se = |p: Option<&ParameterValue>| p.map_or(0.0, trusted_std_error);
+    let finite = |x: f64| if x.is_finite() { x } else { 0.0 };
+    let (s, o, r) = (
+        finite(theta * se(scale)),
+        finite(se(offset)),
+        finite(se(road)),
+    );
+    let rho = offset
+        .and_then(|p| p.traded.as_ref())
+        .filter(|t| t.with == "bank_profile.scale")
+        .map_or(0.0, |t| t.correlation);
+    (s * s + o * o + r * r + 2.0 * rho * s * o).max(0.0).sqrt()
 }
 
 #[cfg(test)]
@@ -210,5 +243,56 @@ mod tests {
             panic!("{e:?}")
         };
         assert_eq!(*measured, -0.5994);
+    }
+
+    /// The reading through the fitted bank carries that bank's uncertainty
+    /// (g·cos θ·σ_bank): a bank fitted ± 0.005 rad makes the standstills'
+    /// −0.5994 ± 0.0006 m/s² uncertain by ± 0.049, and a fitted −0.66 ±
+    /// 0.005 agrees with it; judged on the standstills' scatter alone it
+    /// was 12 combined standard errors off.
+    #[test]
+    fn the_standstills_read_through_a_fitted_bank_carry_that_banks_uncertainty() {
+        let on = CalibrationSource::Standstills;
+        let calibrated: Calibrated = [None, Some((-0.5994, 0.0006, on, Some(-0.08))), None];
+        let mut params = vec![
+            offset("bank_profile.scale", 1.0, 0.01),
+            offset("bank_profile.offset", 0.0, 0.005),
+            offset("sensor_bias.ay", -0.66, 0.005),
+        ];
+        let e = calibration_evidence(&params, &calibrated);
+        let [Evidence::Calibration {
+            agrees,
+            measured_std_error,
+            through_bank: Some(t),
+            ..
+        }] = &e[..]
+        else {
+            panic!("{e:?}")
+        };
+        let sigma_bank = (0.0008_f64.powi(2) + 0.005_f64.powi(2)).sqrt();
+        assert!((t.bank_std_error - sigma_bank).abs() < 1e-15, "{t:?}");
+        let expected = 0.0006_f64.hypot(G * 0.08_f64.cos() * sigma_bank);
+        assert!((measured_std_error - expected).abs() < 1e-12 && *agrees);
+        // A scale and offset traded against each other (correlation −0.9):
+        // at θ = −0.08 their errors add in the bank, 2·ρ·(θ·σ_s)·σ_o > 0.
+        params[1].traded = Some(crate::diagnose::report::Traded {
+            with: "bank_profile.scale".into(),
+            correlation: -0.9,
+            sum: 1.0,
+            sum_std_error: 0.01,
+            sum_fold_std_error: None,
+            split_undetermined: false,
+        });
+        let e = calibration_evidence(&params, &calibrated);
+        let Evidence::Calibration {
+            through_bank: Some(t),
+            ..
+        } = &e[0]
+        else {
+            panic!("{e:?}")
+        };
+        let (s, o): (f64, f64) = (-0.08 * 0.01, 0.005);
+        let with_rho = (s * s + o * o + 2.0 * -0.9 * s * o).sqrt();
+        assert!((t.bank_std_error - with_rho).abs() < 1e-15 && with_rho > sigma_bank);
     }
 }

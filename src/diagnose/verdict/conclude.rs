@@ -94,6 +94,8 @@ pub(crate) fn verdict(
             threshold_percent: 100.0 * ACCEPT,
             // Named by the pipeline, which has the campaign.
             road_friction: None,
+            // Named by the pipeline, which has the campaign's prior.
+            tyre_class: None,
             closest: closest(
                 order
                     .iter()
@@ -119,6 +121,7 @@ pub(crate) fn verdict(
                 base.refused(&singles[i], gave_way, found.ended.clone())
             }),
             threshold_percent: 100.0 * ACCEPT,
+            tyre_class: None,
         }),
     }
 }

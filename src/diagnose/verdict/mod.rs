@@ -12,6 +12,7 @@
 pub(crate) mod baseline;
 pub(crate) mod calibration;
 pub(crate) mod candidate;
+pub(crate) mod class;
 pub(crate) mod conclude;
 pub(crate) mod pairs;
 pub(crate) mod restricted;

@@ -230,6 +230,19 @@ pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
         .min_by_key(|&k| ranked[k].parameters)
 }
 
+/// The best of `ranked` (an index) where it ranks ahead of the pick
+/// `picked` and its axles are no tyre: refused alone, it can still be half
+/// of a pair whose other half brings the axles back (an accelerometer's
+/// offsets with a sideslip measured ahead of the centre of gravity: the
+/// offsets alone leave the rear axle to stand in for the sensor's
+/// position), so the search starts from it too. `None` where the pick is
+/// the best, or none ahead of it is refused for its axles.
+pub fn degenerate_lead(ranked: &[Candidate], picked: usize) -> Option<usize> {
+    ranked[..picked.min(ranked.len())]
+        .iter()
+        .position(|c| c.degenerate)
+}
+
 /// The best of `ranked` whose axles are a tyre where [`pick`] passes it
 /// over for being pressed on a search bound (an index into `ranked`).
 pub fn passed_over(ranked: &[Candidate], jn: f64) -> Option<usize> {

@@ -111,9 +111,10 @@ pub(crate) fn search(
     // parameter idle: a steer path whose lag stays off is a steer delay,
     // one with a sensor delay on runs whose every response comes from the
     // steer, and must not win on the interpolation's rounding.
-    let Some(first) = rules::pick(&ranked, jn).map(|k| order[k]) else {
+    let Some(picked) = rules::pick(&ranked, jn) else {
         return out;
     };
+    let first = order[picked];
     out.start = Some(first);
     // The best whose axles are a tyre, where the pick passed it over for
     // being pressed on a search bound.
@@ -158,6 +159,20 @@ pub(crate) fn search(
         );
         if rules::replaces(g_other, g) {
             (current, simpler) = (other, other_simpler);
+        }
+    }
+    if let Some(k) = rules::degenerate_lead(&ranked, picked) {
+        let lead = &singles[order[k]];
+        if let Some(found) = led_by(
+            ctx,
+            (singles, all),
+            base,
+            limits,
+            (lead, &current),
+            &mut out,
+        ) {
+            out.start = Some(order[k]);
+            (current, simpler) = found;
         }
     }
     let mut total = reduction(base.j0, current.heldout.combined(&scales), jn);
@@ -288,6 +303,33 @@ fn lookalikes(
             )
         })
         .collect()
+}
+
+/// The greedy search from `lead`, a single that does better than the one
+/// the set `current` grew from but whose axles alone are no tyre
+/// ([`rules::degenerate_lead`]), where `current` leaves a significant gap
+/// and `lead` is promising: the set it grows, with the simpler ones passed
+/// over on the way, where its axles are a tyre and it leaves clearly less
+/// of the gap than `current` ([`rules::replaces`]). The sets it tries are
+/// report rows either way.
+fn led_by(
+    ctx: &Context,
+    (singles, all): (&[Scored], &[usize]),
+    base: &Baseline,
+    limits: (usize, bool),
+    (lead, current): (&Scored, &Scored),
+    out: &mut Search,
+) -> Option<(Scored, Vec<Simpler>)> {
+    let (scales, jn) = (base.scales(), base.jn);
+    let jc = current.heldout.combined(&scales);
+    let r = base.rank(lead);
+    if !rules::significant(jc, jn) || !rules::promising(r.reduction_percent, r.delta_bic) {
+        return None;
+    }
+    let (other, simpler) = greedy(ctx, singles, all, base, limits, lead, out);
+    let g_other = gap_above(other.heldout.combined(&scales), jn);
+    (!base.degenerate(&other) && rules::replaces(g_other, gap_above(jc, jn)))
+        .then_some((other, simpler))
 }
 
 /// Greedy additions from `start`: the effect that best closes what is left,

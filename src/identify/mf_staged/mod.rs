@@ -115,6 +115,7 @@ mod uncertainty;
 
 pub use holds::{pacejka_book_default, HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
+pub(crate) use params::fixed_bounds;
 pub use params::Stage;
 pub use problem::Derivatives;
 pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};

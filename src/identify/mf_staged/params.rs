@@ -390,3 +390,18 @@ pub(super) fn physical_bounds(name: &str, start: f64) -> (f64, f64) {
         }
     }
 }
+
+/// The box of `name` where [`physical_bounds`] fixes one (a shape factor,
+/// a peak, a curvature, a stiffness factor kept positive), its start's
+/// aside; `None` for a coefficient the fit lets move 10⁴ times its start
+/// either way, which encodes no sign. `identify --hold` checks a held
+/// value against it (`jobs/identify/hold_rules.rs`).
+pub(crate) fn fixed_bounds(name: &str) -> Option<(f64, f64)> {
+    match name {
+        "PCX1" | "PCY1" | "RCX1" | "RCY1" | "QCZ1" | "PDX1" | "PDY1" | "PKY2" | "PKY4" | "QBZ1"
+        | "RBX1" | "RBY1" | "PEX1" | "PEY1" | "QEZ1" | "REX1" | "REY1" | "PEY3" | "PEX4" => {
+            Some(physical_bounds(name, 0.0))
+        }
+        _ => None,
+    }
+}

@@ -50,19 +50,13 @@ mod tests {
     use super::*;
 
     fn run(steer: f64) -> MeasuredRun {
-        MeasuredRun {
-            path: "a.csv".into(),
-            t: vec![0.0, 0.01],
-            speed: vec![20.0; 2],
-            steer: vec![steer; 2],
-            yaw_rate: vec![0.0; 2],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        }
+        MeasuredRun::new(
+            "a.csv",
+            vec![0.0, 0.01],
+            vec![20.0; 2],
+            vec![steer; 2],
+            vec![0.0; 2],
+        )
     }
 
     #[test]

@@ -45,7 +45,9 @@ use super::tables::{
 };
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
-pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings, StatedUncertainty};
+pub use crate::diagnose::campaign::{
+    BaseTyres, Campaign, DiagnoseSettings, SensorPositions, StatedUncertainty,
+};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::scale::{
@@ -109,6 +111,8 @@ struct CampaignFile {
     diagnose: DiagnoseSettings,
     #[serde(default)]
     channels: StatedUncertainty,
+    #[serde(default)]
+    sensors: SensorPositions,
 }
 
 /// Loads a campaign from a TOML file or a folder.
@@ -158,6 +162,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     check_stated(&src, &f.channels, &runs)?;
     let stated_rate = src.key_span("diagnose.sample_rate").is_some();
     notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));
+    notes.extend(f.sensors.note());
     if runs.len() < 2 {
         let stated = src.key_span("diagnose.min_speed");
         let min_speed = f.diagnose.min_speed;
@@ -198,6 +203,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         tyres,
         prior,
         uncertainty: f.channels,
+        sensors: f.sensors,
         runs,
         run_files: files.len(),
         roll: f.roll,
@@ -230,6 +236,13 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     f.roll
         .validate()
         .map_err(|e| param_error(src, Some("roll"), e))?;
+    let p = &f.sensors;
+    for (key, v) in [("accelerometer_x", p.accelerometer_x), ("beta_x", p.beta_x)] {
+        if let Some(v) = v {
+            ParamError::in_range(key, v, -5.0, 5.0, Limit::SensorPosition)
+                .map_err(|e| param_error(src, Some("sensors"), e))?;
+        }
+    }
     let c = &f.channels;
     for (key, v) in [("yaw_rate", c.yaw_rate), ("ay", c.ay), ("beta", c.beta)] {
         if let Some(v) = v {

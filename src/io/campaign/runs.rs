@@ -240,7 +240,7 @@ pub(super) fn read_runs(
     // is converted where it is and said where it is not; one no file has
     // is refused, as `metrics` and a replay refuse it.
     let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
-    let (mut longest, mut was_cut) = (0.0_f64, false);
+    let mut cut = Cutting::default();
     // Every run is checked before any is refused: a campaign of eight runs
     // with three bad ones is mended in one pass, not three.
     let (mut refused, mut in_degrees, mut radians) = (Vec::new(), Vec::new(), 0);
@@ -280,27 +280,12 @@ pub(super) fn read_runs(
         // evidence: it reads the run as logged.
         raw.push(run.clone());
         let pieces = clean_run(run, &clean, &mut cleaning);
-        let gaps: Vec<String> = cleaning.glitches[listed..]
-            .iter()
-            .filter(|g| g.kind == GlitchKind::TimeGap)
-            .map(|g| format!("{:.3}–{:.3} s", g.t, g.t + g.value))
-            .collect();
-        if cleaning.pieces.len() == kept {
-            notes.push(format!(
-                "{name}: nothing left to replay (every sample below min_speed = {} m/s, or in pieces too short)",
-                clean.min_speed
-            ));
-        } else if !gaps.is_empty() || cleaning.pieces.len() - kept != 1 {
-            let gaps = if gaps.is_empty() {
-                String::new()
-            } else {
-                format!("time gaps at {}; ", gaps.join(", "))
-            };
-            notes.push(match cleaning.pieces.len() - kept {
-                1 => format!("{name}: {gaps}one piece left to replay"),
-                k => format!("{name}: {gaps}split into {k} pieces replayed separately"),
-            });
-        }
+        notes.extend(pieces_note(
+            &name,
+            &cleaning,
+            (listed, kept),
+            clean.min_speed,
+        ));
         // Cut into segments, the report lists the segments replayed (with
         // their times), not the pieces they were cut from.
         if segment.is_some() {
@@ -308,13 +293,7 @@ pub(super) fn read_runs(
         }
         for piece in pieces {
             match segment {
-                Some(seg) => {
-                    longest = longest.max(piece.t[piece.t.len() - 1] - piece.t[0]);
-                    let cut = segments(piece, seg);
-                    was_cut |= cut.len() > 1;
-                    cleaning.pieces.extend(cut.iter().filter_map(Piece::kept));
-                    runs.extend(cut);
-                }
+                Some(seg) => cut.cut(piece, seg, &mut cleaning, &mut runs),
                 None => runs.push(piece),
             }
         }
@@ -323,30 +302,103 @@ pub(super) fn read_runs(
     if let Some(e) = InputError::runs_refused(refused, count, files.len()) {
         return Err(e);
     }
-    if let Some(seg) = segment.filter(|_| !was_cut && !runs.is_empty()) {
-        notes.push(uncut_note(seg, longest));
+    if let Some(seg) = segment.filter(|_| !cut.was_cut && !runs.is_empty()) {
+        notes.push(uncut_note(seg, cut.longest));
     }
     notes.extend(unscored_roll(&raw, degrees.contains(&AngleColumn::Roll)));
+    notes.extend(absent_notes(absent, files.len())?);
+    Ok((runs, notes, cleaning, calibrate(&raw), top_speeds(&raw)))
+}
+
+/// The pieces cut into segments so far: the longest (s, said when none
+/// was cut) and whether any was.
+#[derive(Default)]
+struct Cutting {
+    longest: f64,
+    was_cut: bool,
+}
+
+impl Cutting {
+    /// `piece` cut into segments of `seg` s, appended to `runs`, the kept
+    /// ones listed in `cleaning`'s pieces.
+    fn cut(
+        &mut self,
+        piece: MeasuredRun,
+        seg: f64,
+        cleaning: &mut CleaningReport,
+        runs: &mut Vec<MeasuredRun>,
+    ) {
+        self.longest = self.longest.max(piece.t[piece.t.len() - 1] - piece.t[0]);
+        let cut = segments(piece, seg);
+        self.was_cut |= cut.len() > 1;
+        cleaning.pieces.extend(cut.iter().filter_map(Piece::kept));
+        runs.extend(cut);
+    }
+}
+
+/// The note on what cleaning run `name` left to replay (`cleaning`'s
+/// glitches from `listed` and pieces from `kept` on are the run's): none,
+/// or its time gaps and pieces where it is not one piece whole.
+fn pieces_note(
+    name: &str,
+    cleaning: &CleaningReport,
+    (listed, kept): (usize, usize),
+    min_speed: f64,
+) -> Option<String> {
+    let gaps: Vec<String> = cleaning.glitches[listed..]
+        .iter()
+        .filter(|g| g.kind == GlitchKind::TimeGap)
+        .map(|g| format!("{:.3}–{:.3} s", g.t, g.t + g.value))
+        .collect();
+    let pieces = cleaning.pieces.len() - kept;
+    if pieces == 0 {
+        return Some(format!(
+            "{name}: nothing left to replay (every sample below min_speed = {min_speed} m/s, or in pieces too short)"
+        ));
+    }
+    if gaps.is_empty() && pieces == 1 {
+        return None;
+    }
+    let gaps = if gaps.is_empty() {
+        String::new()
+    } else {
+        format!("time gaps at {}; ", gaps.join(", "))
+    };
+    Some(match pieces {
+        1 => format!("{name}: {gaps}one piece left to replay"),
+        k => format!("{name}: {gaps}split into {k} pieces replayed separately"),
+    })
+}
+
+/// The notes on a column declared in degrees that some of the `files`
+/// runs lack (with the files); the refusal of one that all of them lack.
+fn absent_notes(
+    absent: Vec<(AngleColumn, Vec<String>, InputError)>,
+    files: usize,
+) -> Result<Vec<String>, InputError> {
+    let mut notes = Vec::new();
     for (column, lacking, first) in absent {
-        if lacking.len() == files.len() {
+        if lacking.len() == files {
             return Err(first);
         }
         notes.push(format!(
-            "`degrees` under [runs] names `{}`, a column {} of {} files do not have: {}",
+            "`degrees` under [runs] names `{}`, a column {} of {files} files do not have: {}",
             column.name(),
             lacking.len(),
-            files.len(),
             lacking.join(", ")
         ));
     }
-    let top_speeds = raw
-        .iter()
+    Ok(notes)
+}
+
+/// Each raw run's file and top speed, m/s.
+fn top_speeds(raw: &[MeasuredRun]) -> Vec<(String, f64)> {
+    raw.iter()
         .map(|r| {
             let top = r.speed.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             (r.path.display().to_string(), top)
         })
-        .collect();
-    Ok((runs, notes, cleaning, calibrate(&raw), top_speeds))
+        .collect()
 }
 
 /// The refusal of a `min_speed` (m/s, `stated` or the default) above the
@@ -408,19 +460,7 @@ mod tests {
 
     fn run(t: Vec<f64>) -> MeasuredRun {
         let n = t.len();
-        MeasuredRun {
-            path: PathBuf::from("r.csv"),
-            speed: vec![20.0; n],
-            steer: vec![0.0; n],
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-            t,
-        }
+        MeasuredRun::new("r.csv", t, vec![20.0; n], vec![0.0; n], vec![0.0; n])
     }
 
     #[test]

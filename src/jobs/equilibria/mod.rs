@@ -450,23 +450,8 @@ fn linear_critical_speed(model: &crate::vehicle::VehicleModel) -> Option<f64> {
 /// oversteer. On straight running (δ = 0, β = r = 0, no load moved) this is
 /// where det J of the equilibrium (0, 0) vanishes, whatever the tyres.
 fn zero_slip_critical_speed(model: &VehicleModel, friction: f64, speed: f64) -> Option<f64> {
-    let v = &model.vehicle;
-    let (front, rear) = v.static_axle_loads();
-    let h = 1e-6;
-    let axle = |tyre: &dyn crate::tyre::TyreModel, load: f64| {
-        let s = |alpha| crate::tyre::SlipState {
-            alpha,
-            kappa: 0.0,
-            fz: 0.5 * load,
-            camber: 0.0,
-            mu_scale: model.options.effects.friction_scale * friction,
-            speed,
-        };
-        2.0 * (tyre.lateral_force(&s(h)) - tyre.lateral_force(&s(-h))) / (2.0 * h)
-    };
-    let (cf, cr) = (axle(&model.front, front), axle(&model.rear, rear));
-    let k = v.mass / v.wheelbase() * (v.b / cf - v.a / cr);
-    (k < 0.0).then(|| (-v.wheelbase() / k).sqrt())
+    use crate::jobs::simulate::critical::{critical_speed_of, understeer_gradient_at};
+    critical_speed_of(model, understeer_gradient_at(model, friction, speed))
 }
 
 /// The line under a critical speed along speed — a zero-eigenvalue point,

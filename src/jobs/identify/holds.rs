@@ -146,7 +146,7 @@ pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
 
 /// The load the hold check's start tyre is made at, N (within every
 /// reader's load limits).
-const CHECK_LOAD: f64 = 4000.0;
+pub(super) const CHECK_LOAD: f64 = 4000.0;
 
 /// Refuses a value given with `--hold` that the tyre reader refuses (its
 /// own checks, [`Tyre::validate`] and [`Tyre::check_sizes`], on a start

@@ -33,6 +33,7 @@ mod figures;
 mod flat_alpha;
 mod force_scale;
 mod further;
+mod hold_rules;
 mod holds;
 pub use holds::Held;
 mod staged;
@@ -174,7 +175,10 @@ impl Options {
             for (name, _) in &self.hold {
                 crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
             }
-            return holds::check_hold_values(None, &self.hold);
+            // The reader's own limits first (their words are the files'),
+            // then the sign rules only the fit's boxes encode.
+            holds::check_hold_values(None, &self.hold)?;
+            return hold_rules::check_signs(None, &self.hold);
         };
         let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
         for (name, _) in &self.hold {
@@ -187,7 +191,8 @@ impl Options {
                 .into());
             }
         }
-        holds::check_hold_values(Some(model), &self.hold)
+        holds::check_hold_values(Some(model), &self.hold)?;
+        hold_rules::check_signs(Some(model), &self.hold)
     }
 }
 
@@ -328,8 +333,12 @@ impl IdentifyReport {
     /// terms for them.
     pub fn warnings(&self) -> Vec<String> {
         match self {
-            IdentifyReport::Swarm(r) => r.input_warnings(),
-            IdentifyReport::Staged(_) => Vec::new(),
+            IdentifyReport::Swarm(r) => {
+                let mut w = hold_rules::beyond_box(&r.options);
+                w.extend(r.input_warnings());
+                w
+            }
+            IdentifyReport::Staged(r) => hold_rules::beyond_box(&r.options),
         }
     }
 

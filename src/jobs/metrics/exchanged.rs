@@ -86,19 +86,7 @@ mod tests {
 
     fn run(steer: Vec<f64>, yaw_rate: Vec<f64>, beta: Vec<f64>, t: Vec<f64>) -> MeasuredRun {
         let n = t.len();
-        MeasuredRun {
-            path: "run.csv".into(),
-            speed: vec![22.2; n],
-            steer,
-            yaw_rate,
-            ay: None,
-            beta: Some(beta),
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-            t,
-        }
+        MeasuredRun::new("run.csv", t, vec![22.2; n], steer, yaw_rate).with_beta(beta)
     }
 
     #[test]

@@ -20,17 +20,58 @@ pub(super) struct AboveCritical {
     critical: f64,
     /// The step's speed, m/s.
     speed: f64,
+    /// The road's friction the stiffness is taken at.
+    friction: f64,
 }
 
-/// The step at `speed` (m/s) of `model`, where it lies above the car's
-/// critical speed ([`VehicleModel::critical_speed`]).
-pub(super) fn above_critical(model: &VehicleModel, speed: f64) -> Option<AboveCritical> {
-    let critical = model.critical_speed()?;
-    (speed.abs() > critical).then(|| AboveCritical {
-        gradient: model.understeer_gradient(),
+/// The step at `speed` (m/s) of `model` on a road of friction `friction`
+/// (the scenario's), where it lies above the car's critical speed there.
+pub(super) fn above_critical(
+    model: &VehicleModel,
+    friction: f64,
+    speed: f64,
+) -> Option<AboveCritical> {
+    let gradient = understeer_gradient_at(model, friction, speed);
+    let critical = critical_speed_of(model, gradient)?;
+    (speed.abs() > critical).then_some(AboveCritical {
+        gradient,
         critical,
         speed: speed.abs(),
+        friction,
     })
+}
+
+/// The understeer gradient `K = (m/l)·(b/Cf − a/Cr)` of the linearised
+/// car at road friction `friction` and speed `speed`, rad/(m/s²), each
+/// axle's cornering stiffness at zero slip under its static load a
+/// central difference of the tyre's own force on that road (the
+/// simplified Magic Formula's slope is `B·C·D·μ` per unit load: on a road
+/// of friction 0.5 it is half the slope at 1, which
+/// [`VehicleModel::critical_speed`] takes, and the critical speed is
+/// √2 lower).
+pub(crate) fn understeer_gradient_at(model: &VehicleModel, friction: f64, speed: f64) -> f64 {
+    let v = &model.vehicle;
+    let (front, rear) = v.static_axle_loads();
+    let h = 1e-6;
+    let axle = |tyre: &dyn crate::tyre::TyreModel, load: f64| {
+        let s = |alpha| crate::tyre::SlipState {
+            alpha,
+            kappa: 0.0,
+            fz: 0.5 * load,
+            camber: 0.0,
+            mu_scale: model.options.effects.friction_scale * friction,
+            speed,
+        };
+        2.0 * (tyre.lateral_force(&s(h)) - tyre.lateral_force(&s(-h))) / (2.0 * h)
+    };
+    let (cf, cr) = (axle(&model.front, front), axle(&model.rear, rear));
+    v.mass / v.wheelbase() * (v.b / cf - v.a / cr)
+}
+
+/// The critical speed √(−l/K) of `model` with understeer gradient
+/// `gradient` (rad/(m/s²)), m/s; None for a car that does not oversteer.
+pub(crate) fn critical_speed_of(model: &VehicleModel, gradient: f64) -> Option<f64> {
+    (gradient < 0.0).then(|| (-model.vehicle.wheelbase() / gradient).sqrt())
 }
 
 impl fmt::Display for AboveCritical {
@@ -38,9 +79,16 @@ impl fmt::Display for AboveCritical {
         let per_g = (self.gradient * crate::constants::G).to_degrees();
         write!(
             f,
-            "the car oversteers (understeer gradient K = {} rad/(m/s²), {} deg/g, from the tyres' cornering stiffness at static load) and the step is at {:.1} m/s, above its critical speed √(−l/K) = {:.1} m/s: its straight running is unstable there, the response diverges instead of settling, and there is no steady state for the step-steer metrics to measure, so none are given (no metrics.json); a step below {:.1} m/s measures the handling",
+            "the car oversteers (understeer gradient K = {} rad/(m/s²), {} deg/g, from the tyres' cornering stiffness at static load{}) and the step is at {:.1} m/s, above its critical speed √(−l/K) = {:.1} m/s: its straight running is unstable there, the response diverges instead of settling, and there is no steady state for the step-steer metrics to measure, so none are given (no metrics.json); a step below {:.1} m/s measures the handling",
             crate::format::significant(self.gradient, 3),
             crate::format::significant(per_g, 3),
+            // A tyre whose slope scales with the road's friction (the
+            // simplified Magic Formula's B·C·D·μ) has another K there.
+            if self.friction == 1.0 {
+                String::new()
+            } else {
+                format!(" on this road of friction {}", self.friction)
+            },
             self.speed,
             self.critical,
             self.critical

@@ -5,7 +5,7 @@
 //! the scenario's words do not say ([`checks`]).
 
 pub(crate) mod checks;
-mod critical;
+pub(crate) mod critical;
 mod idle_effects;
 mod limits;
 pub(crate) mod nominal_load;
@@ -173,7 +173,9 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     // linear tyres always, on others where the run did not settle; its
     // "steady" values are no steady state's, so none are given.
     let unstable = match &sc.manoeuvre {
-        Manoeuvre::StepSteer(s) => critical::above_critical(&sc.model, s.speed),
+        Manoeuvre::StepSteer(s) => {
+            critical::above_critical(&sc.model, sc.integrator.friction, s.speed)
+        }
         _ => None,
     }
     .filter(|_| checks::gripless(&sc) || metrics.as_ref().is_some_and(|m| !m.settled));
@@ -505,19 +507,9 @@ mod tests {
             beta: vec![0.0; 3],
             ..TimeHistory::default()
         };
-        let run = MeasuredRun {
-            path: "run.csv".into(),
-            t,
-            speed: vec![20.0; 3],
-            steer: vec![0.0; 3],
-            yaw_rate: vec![0.0, 0.11, 0.19],
-            ay: Some(vec![0.0, 1.1, 1.9]),
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let yaw_rate = vec![0.0, 0.11, 0.19];
+        let run = MeasuredRun::new("run.csv", t, vec![20.0; 3], vec![0.0; 3], yaw_rate)
+            .with_ay(vec![0.0, 1.1, 1.9]);
         let f = history_figure("replay", &h, Some(&run));
         let drawn: Vec<Vec<(&str, Style)>> = f
             .panels

@@ -78,9 +78,34 @@ impl RollingBeyond {
             "{} of {} with a rolling resistance moment `my` above {MY_SPEED_TERMS} of R0·Fz (a rolling resistance coefficient of a tenth; a car tyre's is about 0.01), at speeds its speed terms do not explain: up to {} times R0·Fz; the first at line {line}, fz = {} N, my = {} N·m: {cause}",
             self.points,
             crate::format::plural(count, "point", "points"),
-            readable(self.largest, 3),
+            three_digits(self.largest),
             rounded(fz, 6),
             readable(my, 4),
         )
+    }
+}
+
+/// `v` to three significant digits, its whole digits past the third
+/// rounded too (`107000`, not the `107118` [`readable`] keeps below 1e6):
+/// a share of R0·Fz read for its size, not its last unit.
+fn three_digits(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return readable(v, 3);
+    }
+    let unit = 10f64.powi(v.abs().log10().floor() as i32 - 2);
+    match unit > 1.0 {
+        true => crate::format::exact((v / unit).round() * unit),
+        false => readable(v, 3),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn three_digits_round_whole_digits_too() {
+        assert_eq!(super::three_digits(107118.0), "107000");
+        assert_eq!(super::three_digits(12.345), "12.3");
+        assert_eq!(super::three_digits(999.6), "1000");
+        assert_eq!(super::three_digits(3.2e9), "3.2e9");
     }
 }

@@ -5,7 +5,6 @@
 
 use super::*;
 use crate::identify::data::white_noise;
-use std::path::PathBuf;
 
 /// The truth at one instant.
 #[derive(Clone, Copy, Default)]
@@ -61,24 +60,24 @@ fn run(seconds: f64, truth: &dyn Fn(f64) -> Truth, s: Sensors, seed: u64) -> Mea
             .map(|(x, e)| f(x) + s.offset[k] + e)
             .collect()
     };
-    MeasuredRun {
-        path: PathBuf::from(format!("run{seed}.csv")),
-        speed: x
-            .iter()
-            .zip(&speed_noise)
-            .map(|(x, e)| x.speed + e)
-            .collect(),
-        steer: x.iter().map(|x| x.steer).collect(),
-        yaw_rate: col(0, &|x| x.yaw_rate),
-        ay: Some(col(1, &|x| x.speed * x.yaw_rate + G * x.bank.sin())),
-        // Sideslip in the corners only: 0 on straights.
-        beta: Some(col(2, &|x| 0.1 * x.steer)),
-        roll: None,
-        bank: s.bank_logged.then(|| x.iter().map(|x| x.bank).collect()),
-        ax: Some(x.iter().map(|x| x.ax).collect()),
-        masked: Vec::new(),
+    let speed = x
+        .iter()
+        .zip(&speed_noise)
+        .map(|(x, e)| x.speed + e)
+        .collect();
+    let steer = x.iter().map(|x| x.steer).collect();
+    MeasuredRun::new(
+        format!("run{seed}.csv"),
         t,
-    }
+        speed,
+        steer,
+        col(0, &|x| x.yaw_rate),
+    )
+    .with_ay(col(1, &|x| x.speed * x.yaw_rate + G * x.bank.sin()))
+    // Sideslip in the corners only: 0 on straights.
+    .with_beta(col(2, &|x| 0.1 * x.steer))
+    .with_bank(s.bank_logged.then(|| x.iter().map(|x| x.bank).collect()))
+    .with_ax(x.iter().map(|x| x.ax).collect::<Vec<f64>>())
 }
 
 /// Parked 20 s, off to 15 m/s, 20 s straight, a 10 s corner, 20 s

@@ -233,19 +233,7 @@ mod tests {
     /// logged.
     fn straight_at_15(t: Vec<f64>, steer: Vec<f64>) -> MeasuredRun {
         let n = t.len();
-        MeasuredRun {
-            path: "r.csv".into(),
-            t,
-            speed: vec![15.0; n],
-            steer,
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        }
+        MeasuredRun::new("r.csv", t, vec![15.0; n], steer, vec![0.0; n])
     }
 
     /// A steer held at 20 Hz in a 100 Hz log whose quantised value repeats

@@ -108,19 +108,8 @@ mod tests {
         let mut t: Vec<f64> = (0..100).map(|i| f64::from(i) * 0.05).collect();
         t.extend((1..=500).map(|i| 4.95 + f64::from(i) * 0.005));
         let line: Vec<f64> = t.iter().map(|t| 2.0 * t + 1.0).collect();
-        let run = MeasuredRun {
-            path: "x.csv".into(),
-            t: t.clone(),
-            speed: vec![20.0; t.len()],
-            steer: line.clone(),
-            yaw_rate: line.clone(),
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax: None,
-            masked: Vec::new(),
-        };
+        let speed = vec![20.0; t.len()];
+        let run = MeasuredRun::new("x.csv", t.clone(), speed, line.clone(), line.clone());
         let u = uniform(run);
         assert_eq!(u.t.len(), 1491);
         for (t, r) in u.t.iter().zip(&u.yaw_rate) {

@@ -35,19 +35,12 @@ fn run(truth: &Augmented, step: f64, speed0: f64) -> Prepared {
             .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
             .collect()
     };
-    let logged = MeasuredRun {
-        path: "run.csv".into(),
-        speed,
-        steer,
-        yaw_rate: at(&h.yaw_rate),
-        ay: Some(at(&h.ay)),
-        beta: Some(at(&h.beta)),
-        roll: None,
-        bank: Some(bank),
-        ax: Some(vec![1.3; t.len()]),
-        masked: Vec::new(),
-        t,
-    };
+    let (yaw_rate, ay, beta, n) = (at(&h.yaw_rate), at(&h.ay), at(&h.beta), t.len());
+    let logged = MeasuredRun::new("run.csv", t, speed, steer, yaw_rate)
+        .with_ay(ay)
+        .with_beta(beta)
+        .with_bank(bank)
+        .with_ax(vec![1.3; n]);
     let mut p = Prepared::new(&logged, step, 25.0);
     p.load_tolerance = 1e-15;
     p

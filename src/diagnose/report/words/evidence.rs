@@ -107,8 +107,8 @@ fn through(t: &ThroughBank, unit: &str) -> String {
         None => "on a flat road (no bank column)".to_string(),
     };
     format!(
-        " read through the bank the verdict fits ({:.4} rad where they stood: the offset was fitted with it); read {logged} they give {:.4} {unit}",
-        t.bank, t.as_logged
+        " read through the bank the verdict fits ({:.4} ± {} rad where they stood: the offset was fitted with it, and its ± includes g·cos θ times the bank's); read {logged} they give {:.4} {unit}",
+        t.bank, std_error(t.bank_std_error), t.as_logged
     )
 }
 

@@ -130,6 +130,7 @@ fn outside(reduction_percent: f64, why: Vec<Refusal>) -> Verdict {
             why,
         }),
         threshold_percent: 30.0,
+        tyre_class: None,
     })
 }
 
@@ -223,6 +224,7 @@ fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
         threshold_percent: 30.0,
         closest: Vec::new(),
         road_friction: None,
+        tyre_class: None,
     });
     assert_eq!(
         statement(&v),

@@ -470,3 +470,26 @@ fn the_verdicts_set_gives_way_to_a_simpler_twin_within_the_parsimony_window() {
     let idle_better = cand(1.0, 3, true, false);
     assert_eq!(simpler_twin(busy, &[idle_better], 0.941), None);
 }
+
+#[test]
+fn a_better_single_refused_for_its_axles_leads_a_search_of_its_own() {
+    // Held out best first: the refused one ahead of the pick starts too.
+    let ranked = [
+        cand(4.5, 5, false, true),
+        cand(5.9, 3, false, false),
+        cand(6.0, 3, false, true),
+    ];
+    assert_eq!(pick(&ranked, 0.9), Some(1));
+    assert_eq!(degenerate_lead(&ranked, 1), Some(0));
+    // One behind the pick does not: the pick already does better.
+    let behind = [cand(4.5, 5, false, false), cand(5.9, 3, false, true)];
+    assert_eq!(degenerate_lead(&behind, 0), None);
+    // The first refused of several ahead.
+    let two = [
+        cand(4.0, 5, false, false),
+        cand(4.2, 5, false, true),
+        cand(4.4, 5, false, true),
+        cand(5.0, 3, false, false),
+    ];
+    assert_eq!(degenerate_lead(&two, 3), Some(1));
+}

@@ -135,10 +135,8 @@ fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
     ))
 }
 
-/// A template's `PKY1`, `PKY4` on the other branch of the cornering
-/// stiffness (`PKY4 < 0`, MFeval's 6.1 and 6.2 samples), which the fit
-/// reads as the same tyre with both signs turned: said, since the written
-/// file has them so.
+/// A template's `PKY1`, `PKY4` on the other branch of Kyα (`PKY4 < 0`),
+/// which the fit reads (and writes) with both signs turned: said.
 fn stiffness_branch_note(t: &MagicFormula) -> Option<String> {
     let c = &t.coefficients;
     (c.PKY4 < 0.0).then(|| {

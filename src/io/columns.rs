@@ -171,13 +171,27 @@ fn symbol_of(h: &str, name: &str) -> bool {
 /// column at a time or, `SA` unnamed, as "no lateral data". Their units
 /// (degrees, kPa, km/h, SAE axes) are said by the checks of the values
 /// once renamed.
-const RIG_NAMES: [(&str, &str); 6] = [
+const RIG_NAMES: [(&str, &str); 17] = [
     ("et", "t"),
     ("sa", "alpha"),
     ("sl", "kappa"),
     ("ia", "camber"),
     ("p", "pressure"),
     ("v", "speed"),
+    // TYDEX's channel names (ISO-W forces and moments: `FYW`): a file
+    // converted from TYDEX kept its `INCLANGL` and `INFLPRES` unread and
+    // its three cambers pooled as 0 without a word.
+    ("inclangl", "camber"),
+    ("inflpres", "pressure"),
+    ("slipangl", "alpha"),
+    ("longslip", "kappa"),
+    ("fzw", "fz"),
+    ("fyw", "fy"),
+    ("fxw", "fx"),
+    ("mzw", "mz"),
+    ("mxw", "mx"),
+    ("myw", "my"),
+    ("runspeed", "speed"),
 ];
 
 /// A header's name lower-cased, without a unit written after it

@@ -16,6 +16,25 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// Whether `t` writes its cornering stiffness on the other branch:
+/// `Kyα = PKY1·Fz0'·…·sin(PKY4·atan x)` is odd in `PKY1` and `PKY4`
+/// together, so `PKY1 = 27.42`, `PKY4 = −3.268` (MFeval's 6.1 and 6.2
+/// samples) and `PKY1 = −27.42`, `PKY4 = 3.268` are one tyre. The fit keeps
+/// `PKY4` within 0.1 to 5 ([`super::params::physical_bounds`]); a start
+/// or a held value from the other branch has the stiffness's sign wrong
+/// (a start σ of 192 % on data made from that very file).
+pub(super) fn other_stiffness_branch(t: &MagicFormula) -> bool {
+    t.coefficients.PKY4 < 0.0
+}
+
+/// A template's value of `name` as the fit reads it: `PKY1` and `PKY4`
+/// on the branch the fit keeps ([`other_stiffness_branch`]).
+pub(super) fn template_value(t: &MagicFormula, name: &str) -> Option<f64> {
+    let v = t.coefficients.get(name)?;
+    let flip = other_stiffness_branch(t) && (name == "PKY1" || name == "PKY4");
+    Some(if flip { -v } else { v })
+}
+
 /// The template, or a bare tyre sized from the rows.
 pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
     let mut t = s.template.clone().unwrap_or_else(|| {
@@ -44,6 +63,12 @@ pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
         }
     });
     t.version = s.version;
+    if other_stiffness_branch(&t) {
+        for name in ["PKY1", "PKY4"] {
+            let v = template_value(&t, name).unwrap_or(0.0);
+            t.coefficients.set(name, v);
+        }
+    }
     t
 }
 

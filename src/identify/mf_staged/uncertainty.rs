@@ -144,10 +144,7 @@ pub(super) fn uncertainty(problem: &StageProblem, p: &[f64]) -> Uncertainty {
                 .collect::<Vec<_>>()
                 .join(", ");
         }
-        format!(
-            "near-singular Jacobian (condition number {}): the data barely separate {weak}",
-            crate::format::readable(condition, 3)
-        )
+        singular_text(problem, &norms, condition, &weak)
     });
     let std_error: Vec<Option<f64>> = (0..nf)
         .map(|k| {
@@ -167,6 +164,32 @@ pub(super) fn uncertainty(problem: &StageProblem, p: &[f64]) -> Uncertainty {
         norms,
         remaining,
         s2,
+    }
+}
+
+/// The warning of a near-singular Jacobian. A parameter whose column is 0
+/// (no effect on any row: `PCY1` with `PKY1` held at 0) makes it singular,
+/// its condition number infinite; a number that is no number is never
+/// printed (it read "condition number inf"): the columns are named.
+fn singular_text(problem: &StageProblem, norms: &[f64], condition: f64, weak: &str) -> String {
+    let dead: Vec<&str> = norms
+        .iter()
+        .zip(&problem.names)
+        .filter(|(n, _)| **n == 0.0)
+        .map(|(_, k)| *k)
+        .collect();
+    if !dead.is_empty() {
+        format!(
+            "singular Jacobian (a parameter has no effect on these rows: {}): the data do not determine it",
+            dead.join(", ")
+        )
+    } else if !condition.is_finite() {
+        format!("singular Jacobian: the data do not separate {weak} at all")
+    } else {
+        format!(
+            "near-singular Jacobian (condition number {}): the data barely separate {weak}",
+            crate::format::readable(condition, 3)
+        )
     }
 }
 

@@ -37,6 +37,7 @@ mod hold_rules;
 mod holds;
 pub use holds::Held;
 mod staged;
+mod standstill;
 mod two_stage;
 mod unused_columns;
 pub use two_stage::{TwoStageReport, Written};

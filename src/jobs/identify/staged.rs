@@ -49,6 +49,9 @@ pub struct StagedJob {
     /// and `simulate` refuse: said, and the file written all the same;
     /// first, a template's such curve.
     pub pure_curve_warning: Vec<String>,
+    /// Warnings on the data read: forces far too small for their loads
+    /// (`force_scale.rs`), as every model's fit gives them.
+    pub input_warnings: Vec<String>,
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
@@ -79,6 +82,11 @@ impl StagedJob {
             o.model,
             o.start.as_str()
         )];
+        out.extend(
+            self.input_warnings
+                .iter()
+                .map(|w| format!("  warning: {w}")),
+        );
         if let Some(g) = &self.rows.thinning {
             out.extend(g.lines().iter().map(|l| format!("  {l}")));
         }
@@ -125,6 +133,21 @@ fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
         exact(c.get(&e.key).unwrap_or(f64::NAN)),
         e.reason
     ))
+}
+
+/// A template's `PKY1`, `PKY4` on the other branch of Kyα (`PKY4 < 0`),
+/// which the fit reads (and writes) with both signs turned: said.
+fn stiffness_branch_note(t: &MagicFormula) -> Option<String> {
+    let c = &t.coefficients;
+    (c.PKY4 < 0.0).then(|| {
+        format!(
+            "the template's PKY1 = {}, PKY4 = {} are read as PKY1 = {}, PKY4 = {}: the same cornering stiffness (Kyα ∝ PKY1·sin(PKY4·atan(Fz/(PKY2·Fz0))), odd in the two together) on the branch the fit keeps PKY4 on (0.1 to 5)",
+            exact(c.PKY1),
+            exact(c.PKY4),
+            exact(-c.PKY1),
+            exact(-c.PKY4)
+        )
+    })
 }
 
 /// The terminal's lines of each stage of `report` (indented as the
@@ -222,6 +245,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         });
     // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
     let (data, moments, lifted) = super::read_lifted(o)?;
+    // Nor is a sample at rest (`standstill.rs`); forces far too small for
+    // their loads are warned of as for every model (`force_scale.rs`).
+    let (data, moments, at_rest) = super::standstill::without_rest(data, moments);
+    let input_warnings = super::force_scale::small_forces(&data);
     let default_speed = template_tyre
         .as_ref()
         .map_or(16.7, |t| t.coefficients.LONGVL);
@@ -299,6 +326,8 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
     let combined = prepared.rows.iter().filter(|r| is_combined(r)).count();
     let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();
+    unfitted.extend(at_rest.map(|r| r.line()));
+    unfitted.extend(settings.template.as_ref().and_then(stiffness_branch_note));
     unfitted.extend(unfitted_blocks(
         &id.report,
         o.template.is_some(),
@@ -330,6 +359,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .chain(pure_curve_warning(&written))
         .collect();
     let curvature = curvature
+        + &input_warnings
+            .iter()
+            .map(|w| format!("$ warning: {w}\n"))
+            .collect::<String>()
         + &pure_curve_warning
             .iter()
             .map(|w| format!("$ warning: {w}\n"))
@@ -360,6 +393,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         round_trip_relative_difference: back,
         curvature_above_one,
         pure_curve_warning,
+        input_warnings,
         figure,
         tir,
         unfitted,

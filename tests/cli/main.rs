@@ -469,6 +469,7 @@ mod trips_s95_ident;
 mod trips_s95_real;
 mod trips_s95_tyreval;
 mod trips_s95_words;
+mod trips_s96_held;
 mod trips_s96_hold;
 mod trips_s96_ident;
 mod trips_s96_metrics;

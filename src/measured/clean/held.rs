@@ -17,7 +17,18 @@
 //! carry the signal's change over the interval, of every size — and its
 //! held samples are interpolated linearly in time between the updates (the
 //! value is taken as the measurement at its update instant); the last
-//! hold, with no next update, stays. Every such channel and the samples changed are reported.
+//! hold, with no next update, stays. Every such channel and the samples
+//! changed are reported, with its mean update rate.
+//!
+//! An update is seen at the first sample at or after its instant: up to a
+//! sample interval late, by an amount that cycles when the rates are not
+//! multiples (20 Hz in a 50 Hz log: on time, then 0.01 s late, holds of
+//! 3 and 2 samples). Interpolated between the samples where the value
+//! changes, such a channel lags by half the cycle's lateness on average
+//! (0.005 s for a steer: axle stiffnesses 9 standard errors off on a
+//! 10-minute log). The instants are put back on a regular update clock
+//! ([`instants`]), and the rate is the mean update period's, not the
+//! median hold's (0.06 s).
 //!
 //! The holds are judged in time, not in samples: a log whose rate changes
 //! within a run (100 Hz, then 50 Hz) holds a 20 Hz steer for 5 samples,
@@ -36,7 +47,6 @@
 //! response's masked, and not counted as held samples.
 //! Units: the channel's SI unit; times in s.
 
-use super::repair::repair;
 use super::report::{CleaningReport, Glitch, GlitchKind, HeldChannel, Treatment};
 use super::{SEARCHED, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
@@ -52,7 +62,7 @@ const REGULAR_SHARE: f64 = 0.8;
 pub(crate) const MIN_STUCK_UPDATES: usize = 5;
 
 /// The holds of a held channel: where each starts (the samples where its
-/// value changes, and the first) and the median hold's duration, s.
+/// value changes, and the first) and the mean update period, s.
 struct Holds {
     starts: Vec<usize>,
     period: f64,
@@ -77,20 +87,77 @@ fn holds(t: &[f64], x: &[f64]) -> Option<Holds> {
     }
     let mut durations: Vec<f64> = starts.windows(2).map(|w| t[w[1]] - t[w[0]]).collect();
     durations.sort_by(f64::total_cmp);
-    let period = durations[durations.len() / 2];
+    let median = durations[durations.len() / 2];
     // Within one sample interval of the hold's own stretch of the log (a
     // hair more: the times are written to a few digits).
+    let near = |w: &[usize]| {
+        let (len, d) = (w[1] - w[0], t[w[1]] - t[w[0]]);
+        (d - median).abs() <= d / len as f64 * (1.0 + 1e-6)
+    };
     let regular = starts
         .windows(2)
-        .filter(|w| {
-            let (len, d) = (w[1] - w[0], t[w[1]] - t[w[0]]);
-            len >= 2 && (d - period).abs() <= d / len as f64 * (1.0 + 1e-6)
-        })
+        .filter(|w| w[1] - w[0] >= 2 && near(w))
         .count();
-    (period > 0.0
+    let held = median > 0.0
         && regular as f64 >= REGULAR_SHARE * durations.len() as f64
-        && !by_resolution(x, &starts))
-    .then_some(Holds { starts, period })
+        && !by_resolution(x, &starts);
+    held.then(|| Holds {
+        period: mean_period(t, &starts, near),
+        starts,
+    })
+}
+
+/// The mean update period of a held channel, s, from its holds `near` the
+/// median one: a 20 Hz update read at 50 Hz is held for 2 samples, then 3
+/// (0.04 s, 0.06 s), and the median hold, either, is no update's period.
+fn mean_period(t: &[f64], starts: &[usize], near: impl Fn(&[usize]) -> bool) -> f64 {
+    let regular: Vec<f64> = starts
+        .windows(2)
+        .filter(|w| near(w))
+        .map(|w| t[w[1]] - t[w[0]])
+        .collect();
+    regular.iter().sum::<f64>() / regular.len() as f64
+}
+
+/// Changes on each side whose phases on the update clock bound a change's
+/// update instant ([`instants`]).
+const PHASE_WINDOW: usize = 20;
+
+/// The instant of each update of a held channel (its starts `h.starts`),
+/// s. A sample reads an update at or after its instant, before the next
+/// sample: the change is seen up to one sample interval late (a 20 Hz
+/// update read at 50 Hz: on time, then 0.01 s late, in turn). On a regular
+/// update clock (period `h.period`), the change seen least late among its
+/// [`PHASE_WINDOW`] neighbours on each side fixes the clock's phase, and
+/// each update is put at the latest instant on it at or before its change
+/// was seen — exact when some updates fall on samples, never later than
+/// the change, and never at or before the sample that still read the old
+/// value. The first hold's start stays (nothing read before it).
+fn instants(t: &[f64], h: &Holds) -> Vec<f64> {
+    let (s, p) = (&h.starts, h.period);
+    // A time difference on the clock, in (-p/2, p/2].
+    let phase = |d: f64| d - p * (d / p).round();
+    (0..s.len())
+        .map(|k| {
+            let seen = t[s[k]];
+            if s[k] == 0 {
+                return seen;
+            }
+            let near = k.saturating_sub(PHASE_WINDOW)..(k + PHASE_WINDOW + 1).min(s.len());
+            let late = near
+                .filter(|&j| s[j] > 0)
+                .map(|j| -phase(t[s[j]] - seen))
+                .fold(0.0, f64::max);
+            let interval = seen - t[s[k] - 1];
+            // Times written to a few digits: a lateness below a
+            // thousandth of an interval is none.
+            if late < 1e-3 * interval {
+                seen
+            } else {
+                seen - late.min(interval * (1.0 - 1e-6))
+            }
+        })
+        .collect()
 }
 
 /// Whether `x`'s changes at the hold starts `starts` are, at
@@ -150,15 +217,23 @@ fn rate_changes(t: &[f64], interval: f64) -> bool {
         .any(|b| (super::median_interval(b) / interval - 1.0).abs() > 0.1)
 }
 
-/// Interpolates `x` (sampled at `t`) between the hold starts `starts`, as
-/// a glitch is repaired ([`repair`]); returns the samples changed.
-fn interpolate(t: &[f64], x: &mut [f64], starts: &[usize]) -> usize {
-    let mut held = vec![false; x.len()];
-    for w in starts.windows(2) {
-        held[w[0] + 1..w[1]].iter_mut().for_each(|h| *h = true);
+/// Interpolates `x` (sampled at `t`) linearly in time between its updates
+/// (their values at the hold starts `h.starts`, at their [`instants`]),
+/// as a glitch is repaired; the last hold, with no next update, stays.
+/// Returns the held samples (not the starts) changed.
+fn interpolate(t: &[f64], x: &mut [f64], h: &Holds) -> usize {
+    let at = instants(t, h);
+    let values: Vec<f64> = h.starts.iter().map(|&i| x[i]).collect();
+    let last = h.starts.len() - 1;
+    let mut k = 0;
+    for (i, xi) in x.iter_mut().enumerate().take(h.starts[last]) {
+        while k + 1 < last && at[k + 1] <= t[i] {
+            k += 1;
+        }
+        let f = (t[i] - at[k]) / (at[k + 1] - at[k]);
+        *xi = values[k] + (values[k + 1] - values[k]) * f.clamp(0.0, 1.0);
     }
-    repair(t, x, &held);
-    held.iter().filter(|&&h| h).count()
+    h.starts[last] - last
 }
 
 /// Finds the held channels of `run`, interpolates them between their
@@ -198,21 +273,24 @@ pub fn treat_held(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningRe
                 masked.extend(s..e);
             }
         }
-        let samples = interpolate(&t, x, &h.starts) - stuck_samples;
+        let samples = interpolate(&t, x, &h) - stuck_samples;
         report.samples_interpolated += samples;
         let log_rate = 1.0 / log_interval;
-        let every = (h.period / log_interval).round().max(1.0) as usize;
+        let samples_per_update = h.period / log_interval;
         // The log's rate changes where its intervals do (beyond a tenth):
         // a hold is then a different count of samples in each stretch.
         let rate_changes = rate_changes(&t, log_interval);
         report.held.push(HeldChannel {
             run: name.clone(),
             channel: ch,
-            every,
-            // The logger's rate, from its median hold in time: counting the
-            // changes misses the updates that repeat a quantised value (a
-            // steer held on a straight), and read a 20 Hz steer as 15.1 Hz
-            // beside "every 5 samples of the 100 Hz log".
+            every: samples_per_update.round().max(1.0) as usize,
+            samples_per_update,
+            // The logger's rate, from its mean regular hold in time:
+            // counting the changes misses the updates that repeat a
+            // quantised value (a steer held on a straight), and read a
+            // 20 Hz steer as 15.1 Hz beside "every 5 samples of the 100 Hz
+            // log"; the median hold read one at 20 Hz in a 50 Hz log, held
+            // for 2 samples and 3 in turn, as 16.7 Hz.
             update_rate: 1.0 / h.period,
             log_rate,
             log_rate_changes: rate_changes,
@@ -275,9 +353,9 @@ mod tests {
             .map(|i| truth[i - i % 10] + noise[i - i % 10])
             .collect();
         let h = holds(&t, &x).expect("held");
+        assert!((h.period - 0.1).abs() < 1e-9 && h.starts.len() == 200);
+        let changed = interpolate(&t, &mut x, &h);
         let starts = h.starts;
-        assert!((h.period - 0.1).abs() < 1e-9 && starts.len() == 200);
-        let changed = interpolate(&t, &mut x, &starts);
         assert_eq!(changed, 199 * 9);
         // Between updates the value now follows the signal to its noise and
         // the curvature over 0.1 s (about 1e-5), where the hold was off by
@@ -339,7 +417,7 @@ mod tests {
     }
 
     /// A steer updated at 20 Hz in a log at 100 Hz for 30 s, then at
-    /// 50 Hz: holds of 5 samples, then of 2 and 3, every one 0.05 s.
+    /// 50 Hz: holds of 5 samples, then of 3 and 2 (0.06 s, 0.04 s).
     #[test]
     fn a_channel_held_at_20_hz_in_a_log_whose_rate_halves_is_held_throughout() {
         let mut t: Vec<f64> = (0..3000).map(|i| i as f64 * 0.01).collect();
@@ -356,24 +434,76 @@ mod tests {
             .map(|i| 0.05 * (0.6 * std::f64::consts::PI * update(i) as f64 * 0.05).sin())
             .collect();
         let h = holds(&t, &x).expect("held");
-        assert!((h.period - 0.05).abs() < 1e-9, "{}", h.period);
+        // The mean of the holds near the median (0.05 s, 0.06 s, 0.04 s): as
+        // many of 3 samples as of 2, to one.
+        assert!((h.period / 0.05 - 1.0).abs() < 5e-4, "{}", h.period);
         assert!(rate_changes(&t, super::super::median_interval(&t)));
         assert!(!rate_changes(&t[..3000], 0.01));
         let mut run = straight_at_15(t.clone(), x);
         let mut report = CleaningReport::default();
         treat_held(&mut run, 5.0, &mut report);
         let h = &report.held[0];
-        assert!(h.log_rate_changes && (h.update_rate - 20.0).abs() < 1e-6);
-        // Interpolated in time between the samples where the value
-        // changes: update 900 read at 45.00 s, 901 first read at 45.06 s,
-        // so 45.02 s is a third of the way.
+        assert!(h.log_rate_changes && (h.update_rate / 20.0 - 1.0).abs() < 5e-4);
+        // Interpolated in time between the updates' instants: update 900
+        // read at 45.00 s, 901 first read at 45.06 s but made at 45.05 s,
+        // so 45.02 s is two fifths of the way.
         let k = 3000 + 750;
         assert!((run.t[k] - 45.0).abs() < 1e-9);
         let (a, b) = (
             0.05 * (0.6 * std::f64::consts::PI * 45.0).sin(),
             0.05 * (0.6 * std::f64::consts::PI * 45.05).sin(),
         );
-        assert!((run.steer[k + 1] - (2.0 * a + b) / 3.0).abs() < 1e-12);
+        // To the clock's period's error over the window (2e-4 s, 2e-5 rad),
+        // where a third of the way is (b − a)/15 = 3e-4 rad off.
+        assert!((run.steer[k + 1] - (3.0 * a + 2.0 * b) / 5.0).abs() < 5e-5);
+    }
+
+    /// A 1.3 Hz sine updated at `rate` Hz (from `phase` s) read in a log at
+    /// `log` Hz for 20 s: the rate and the true signal between updates.
+    fn held_sine(rate: f64, log: f64, phase: f64) -> (f64, f64) {
+        let n = (20.0 * log) as usize;
+        let t: Vec<f64> = (0..n).map(|i| i as f64 / log).collect();
+        let truth = |s: f64| 0.05 * (2.6 * std::f64::consts::PI * s).sin();
+        // The last update at or before each sample.
+        let steer = t
+            .iter()
+            .map(|&s| truth(((s - phase) * rate + 1e-9).floor() / rate + phase))
+            .collect();
+        let mut run = straight_at_15(t.clone(), steer);
+        let mut report = CleaningReport::default();
+        treat_held(&mut run, 5.0, &mut report);
+        // Linear between updates: off by the curvature over an update,
+        // below 0.05·(2.6π)²/8·(1/rate)² (0.0026 rad at 20 Hz).
+        let worst = (n / 10..n - n / 10)
+            .map(|i| (run.steer[i] - truth(t[i])).abs())
+            .fold(0.0, f64::max);
+        (report.held[0].update_rate, worst)
+    }
+
+    /// A 20 Hz steer in a 50 Hz log, held for 3 samples and 2 in turn, was
+    /// read at 16.7 Hz (the median hold, 0.06 s) and interpolated between
+    /// the samples where it changed, half of them 0.01 s after the update:
+    /// now 20 Hz, and the signal between the updates' instants. So a 30 Hz
+    /// steer in a 100 Hz log (holds of 3, 3 and 4) and one whose updates
+    /// fall between samples.
+    #[test]
+    fn a_steer_at_20_hz_in_a_50_hz_log_is_at_20_hz_and_interpolated_at_its_instants() {
+        let bound = |rate: f64| 0.05 * (2.6 * std::f64::consts::PI).powi(2) / 8.0 / rate / rate;
+        for (rate, log) in [(20.0, 50.0), (30.0, 100.0)] {
+            let (r, worst) = held_sine(rate, log, 0.0);
+            assert!((r / rate - 1.0).abs() < 2e-3, "{rate} in {log}: {r}");
+            assert!(worst < 1.05 * bound(rate), "{rate} in {log}: {worst}");
+        }
+        // Updates 0.007 s before a sample, then 0.017 s: the clock's phase
+        // is known to the cycle's step in lateness (0.01 s), and the
+        // instants put up to that late, no later.
+        let (r, worst) = held_sine(20.0, 50.0, 0.013);
+        let step = 0.05 * 2.6 * std::f64::consts::PI * 0.007;
+        assert!((r / 20.0 - 1.0).abs() < 2e-3, "{r}");
+        assert!(worst < 1.05 * (bound(20.0) + step), "{worst}");
+        // Between the changes' samples the error was the signal's change
+        // over up to a sample interval late (0.05·2.6π·0.01 = 0.004 rad).
+        assert!(0.05 * 2.6 * std::f64::consts::PI * 0.01 > 1.5 * bound(20.0));
     }
 
     /// A steer at 20 Hz in a 100 Hz log (a 0.5 Hz sine of 0.05 rad,
@@ -403,7 +533,7 @@ mod tests {
         let mut x: Vec<f64> = (0..n).map(|i| at(i / 5)).collect();
         x[2000..2040].iter_mut().for_each(|s| *s = frozen);
         let h = holds(&t, &x).expect("held");
-        let all = interpolate(&t, &mut x, &h.starts);
+        let all = interpolate(&t, &mut x, &h);
         assert_eq!(report.held[0].samples, all - 39);
         assert_eq!(report.samples_interpolated, all - 39);
     }

@@ -283,16 +283,19 @@ pub struct HeldChannel {
     pub run: String,
     /// The channel.
     pub channel: RunChannel,
-    /// Samples per update (the median hold).
+    /// Samples per update, the nearest whole number.
     pub every: usize,
+    /// Samples per update (the mean update period in median intervals:
+    /// 2.5 for a 20 Hz update in a 50 Hz log, held for 2 samples and 3).
+    pub samples_per_update: f64,
     /// Updates per second, Hz.
     pub update_rate: f64,
     /// Samples per second of the log it is held in, Hz (at its median
     /// interval).
     pub log_rate: f64,
     /// The log's rate changes within the run: the hold is a different
-    /// count of samples in each stretch, and `every` is the median hold's
-    /// duration in median intervals.
+    /// count of samples in each stretch, and `every` is the mean update
+    /// period in median intervals.
     pub log_rate_changes: bool,
     /// Held samples interpolated.
     pub samples: usize,
@@ -488,10 +491,10 @@ impl CleaningReport {
             // The hold in samples alone reads as a rate of its own ("every
             // 2 samples (431.8 Hz)"): said against the log's rate, in time.
             out.push(format!(
-                "held: {} in {} updates every {} of the {} Hz log (every {} s, {} Hz): {} interpolated between its updates",
+                "held: {} in {} updates every {} samples of the {} Hz log (every {} s, {} Hz): {} interpolated between its updates",
                 h.channel.name(),
                 h.run,
-                plural(h.every, "sample", "samples"),
+                crate::format::rounded(h.samples_per_update, 3),
                 crate::format::rounded(h.log_rate, 3),
                 crate::format::rounded(1.0 / h.update_rate, 2),
                 crate::format::rounded(h.update_rate, 3),

@@ -47,13 +47,25 @@ fn resolution(x: &[f64]) -> Option<f64> {
     (q.is_finite() && (hi - lo) / q <= GRID_LEVELS).then_some(q)
 }
 
+/// A response channel as the coarse-grid check reads it: its name, its
+/// samples, its step, the scale and unit it is said in, and what depends
+/// on it.
+type Written<'a> = (
+    &'a str,
+    Option<&'a [f64]>,
+    Option<f64>,
+    f64,
+    &'a str,
+    &'a str,
+);
+
 /// The warnings of `piece`'s channels written coarsely against their
 /// steps in `m`.
 pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
     let deg = 180.0 / std::f64::consts::PI;
     // Responses only: a noise-free steer ramp takes few values, each a
     // multiple of its sample's change, and is no logger's grid.
-    let channels: [(&str, Option<&[f64]>, Option<f64>, f64, &str, &str); 3] = [
+    let channels: [Written; 3] = [
         (
             "yaw_rate",
             Some(&piece.yaw_rate),

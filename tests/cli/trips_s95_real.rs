@@ -30,13 +30,7 @@ impl Lcg {
 /// `amplitude` rad at `frequency` Hz from 1 s to 31 s at `speed` m/s,
 /// simulated at 100 Hz in `dir`: its history's rows (t, steer, speed,
 /// beta, yaw_rate, ay).
-pub(crate) fn sine(
-    dir: &Path,
-    name: &str,
-    speed: f64,
-    amplitude: f64,
-    frequency: f64,
-) -> Vec<Vec<f64>> {
+fn sine(dir: &Path, name: &str, speed: f64, amplitude: f64, frequency: f64) -> Vec<Vec<f64>> {
     linear_tyre(dir);
     let scenario = format!(
         "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"sine\"\nspeed = {speed:?}\namplitude = {amplitude:?}\nfrequency = {frequency:?}\nstart = 1.0\nend = 31.0\n\n[simulation]\nstep = 0.01\n"
@@ -55,7 +49,7 @@ pub(crate) fn sine(
 
 /// A campaign folder `dir/campaign` on the same car and tyre, with
 /// `effects` the candidates and `runs` (name, CSV text) its runs.
-pub(crate) fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> PathBuf {
+fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> PathBuf {
     let c = dir.join("campaign");
     fs::create_dir_all(c.join("runs")).unwrap();
     linear_tyre(&c);
@@ -73,7 +67,7 @@ pub(crate) fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> 
 /// A logger's CSV of history rows: the rows `keep` keeps, the steer of
 /// each as `steer` gives it (by row index), white noise of `k` times
 /// 0.002 rad/s, 0.05 m/s² and 0.002 rad on the responses.
-pub(crate) fn logged(
+fn logged(
     rows: &[Vec<f64>],
     (seed, k): (u64, f64),
     keep: impl Fn(usize, f64) -> bool,
@@ -101,8 +95,30 @@ pub(crate) fn logged(
 
 /// A steer written every fifth row of a 100 Hz history (20 Hz), held
 /// between, to the encoder's 2e-4 rad.
-pub(crate) fn held_20_hz(rows: &[Vec<f64>], i: usize) -> f64 {
+fn held_20_hz(rows: &[Vec<f64>], i: usize) -> f64 {
     (rows[i - i % 5][1] / 2e-4).round() * 2e-4
+}
+
+/// A campaign of two sine runs (20 m/s at 0.5 Hz, 15 m/s at 0.3 Hz) with
+/// `sensor_bias` the candidate, each logged with the rows `keep` takes
+/// (their noise seeded from `seed`) and the steer held at 20 Hz.
+pub(crate) fn held_steer_campaign(
+    dir: &Path,
+    seed: u64,
+    keep: impl Fn(usize, f64) -> bool + Copy,
+) -> PathBuf {
+    let mut runs = Vec::new();
+    for (k, (name, speed, amplitude, frequency)) in [("a", 20.0, 0.03, 0.5), ("b", 15.0, 0.04, 0.3)]
+        .into_iter()
+        .enumerate()
+    {
+        let rows = sine(dir, name, speed, amplitude, frequency);
+        let text = logged(&rows, (seed + k as u64, 1.0), keep, |i| {
+            held_20_hz(&rows, i)
+        });
+        runs.push((format!("{name}.csv"), text));
+    }
+    campaign(dir, "\"sensor_bias\"", &runs)
 }
 
 /// Round 24B's `rate_hold.toml`: a log whose rate halves mid-run (100 Hz,
@@ -115,22 +131,8 @@ pub(crate) fn held_20_hz(rows: &[Vec<f64>], i: usize) -> f64 {
 #[test]
 fn a_steer_held_at_20_hz_in_a_log_whose_rate_halves_is_interpolated_throughout() {
     let dir = tempfile::tempdir().unwrap();
-    let mut runs = Vec::new();
-    for (k, (name, speed, amplitude, frequency)) in [("a", 20.0, 0.03, 0.5), ("b", 15.0, 0.04, 0.3)]
-        .into_iter()
-        .enumerate()
-    {
-        let rows = sine(dir.path(), name, speed, amplitude, frequency);
-        // 100 Hz to 15 s, every other row (50 Hz) after.
-        let text = logged(
-            &rows,
-            (11 + k as u64, 1.0),
-            |i, t| t < 15.0 || i % 2 == 0,
-            |i| held_20_hz(&rows, i),
-        );
-        runs.push((format!("{name}.csv"), text));
-    }
-    let c = campaign(dir.path(), "\"sensor_bias\"", &runs);
+    // 100 Hz to 15 s, every other row (50 Hz) after.
+    let c = held_steer_campaign(dir.path(), 11, |i, t| t < 15.0 || i % 2 == 0);
     let (stdout, d) = diagnose(&c);
     let held = d["cleaning"]["held"].as_array().unwrap();
     assert_eq!(held.len(), 2, "{held:?}");

@@ -4,7 +4,7 @@
 //! `simulate`d car drove (the linear tyre, the shared vehicle), logged as
 //! a logger would, diagnosed as a user runs it.
 
-use super::trips_s95_real::{campaign, held_20_hz, logged, sine};
+use super::trips_s95_real::held_steer_campaign;
 use super::*;
 
 /// Round 26B's `sedan_x0.toml`: "held: steer … updates every 3 samples of
@@ -16,22 +16,8 @@ use super::*;
 #[test]
 fn a_steer_at_20_hz_in_a_50_hz_log_is_read_at_20_hz() {
     let dir = tempfile::tempdir().unwrap();
-    let mut runs = Vec::new();
-    for (k, (name, speed, amplitude, frequency)) in [("a", 20.0, 0.03, 0.5), ("b", 15.0, 0.04, 0.3)]
-        .into_iter()
-        .enumerate()
-    {
-        let rows = sine(dir.path(), name, speed, amplitude, frequency);
-        // Every other row of the 100 Hz history: a 50 Hz log.
-        let text = logged(
-            &rows,
-            (31 + k as u64, 1.0),
-            |i, _| i % 2 == 0,
-            |i| held_20_hz(&rows, i),
-        );
-        runs.push((format!("{name}.csv"), text));
-    }
-    let c = campaign(dir.path(), "\"sensor_bias\"", &runs);
+    // Every other row of the 100 Hz history: a 50 Hz log.
+    let c = held_steer_campaign(dir.path(), 31, |i, _| i % 2 == 0);
     let (stdout, d) = diagnose(&c);
     let held = d["cleaning"]["held"].as_array().unwrap();
     assert_eq!(held.len(), 2, "{held:?}");

@@ -107,6 +107,11 @@ class StepMetrics:
     yaw_rate_overshoot_spread: Optional[float]
     """How far the run's own noise moves the overshoot: its standard
     deviation over the same copies, percentage points (an upper estimate)."""
+    yaw_rate_peak_unmeasured: bool
+    """Whether the yaw-rate maximum lies on samples the log does not measure
+    (masked and filled by the cleaning, a clipped flat top, a hole in
+    time): peak time, overshoot and TB are then withheld (None), not below
+    the threshold."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":

@@ -43,13 +43,7 @@ fn logged(history: &Path, seed: u64) -> String {
 
 /// Simulates `scenario` (a file) into `out`: its history.
 fn simulated(scenario: &Path, out: &Path) -> PathBuf {
-    let o = run(&[
-        "simulate",
-        scenario.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    super::scenarios::simulate_to(scenario, out);
     out.join("history.csv")
 }
 

@@ -188,18 +188,7 @@ pub fn run_batch(
                 rows.push(row_of(&name, &r));
                 reports.push(r);
             }
-            Err(e) => rows.push(FleetRow {
-                campaign: name,
-                runs: 0,
-                verdict: Vec::new(),
-                kind: None,
-                heldout_error_before: None,
-                heldout_error_after: None,
-                noise_level: None,
-                best: None,
-                statement: e.to_string(),
-                failed: true,
-            }),
+            Err(e) => rows.push(failed_row(name, &e)),
         }
     }
     if whole {
@@ -207,6 +196,36 @@ pub fn run_batch(
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));
     }
+    let outcome = shard_outcome(dir, &all, &out_dir, shard, owned, rows)?;
+    Ok((reports, outcome))
+}
+
+/// The fleet row of a campaign `name` whose diagnosis failed with `e`.
+fn failed_row(name: String, e: &Error) -> FleetRow {
+    FleetRow {
+        campaign: name,
+        runs: 0,
+        verdict: Vec::new(),
+        kind: None,
+        heldout_error_before: None,
+        heldout_error_after: None,
+        noise_level: None,
+        best: None,
+        statement: e.to_string(),
+        failed: true,
+    }
+}
+
+/// Writes shard `shard`'s file (the campaigns `owned` of `all` in `dir`,
+/// their fleet rows `rows`) into `out_dir` for `handling merge`.
+fn shard_outcome(
+    dir: &Path,
+    all: &[PathBuf],
+    out_dir: &Path,
+    shard: Shard,
+    owned: Vec<usize>,
+    rows: Vec<FleetRow>,
+) -> Result<BatchOutcome, Error> {
     let file = out_dir.join(shard.file_name());
     let names: Vec<String> = all.iter().map(|p| name_of(p)).collect();
     write_shard(
@@ -224,17 +243,14 @@ pub fn run_batch(
             results: rows,
         },
     )?;
-    Ok((
-        reports,
-        BatchOutcome::Shard(ShardReport {
-            job: ShardJob::Diagnose,
-            shard,
-            units: all.len(),
-            owned: owned.len(),
-            conditions: owned.len(),
-            path: file,
-        }),
-    ))
+    Ok(BatchOutcome::Shard(ShardReport {
+        job: ShardJob::Diagnose,
+        shard,
+        units: all.len(),
+        owned: owned.len(),
+        conditions: owned.len(),
+        path: file,
+    }))
 }
 
 /// What a batch run wrote last: the fleet table, or a shard of it.

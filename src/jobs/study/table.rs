@@ -136,9 +136,11 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
         ));
     }
     Some(format!(
-        "  {total} of {} combinations are no handling response: {}; their metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
+        "  {total} of {} {} no handling response: {}; {} metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
         s.combinations,
-        kinds.join(", ")
+        verb(total, "combinations is", "combinations are"),
+        kinds.join(", "),
+        verb(total, "its", "their")
     ))
 }
 

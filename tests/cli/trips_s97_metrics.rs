@@ -256,14 +256,14 @@ fn a_log_missing_one_sample_says_one_sample() {
 }
 
 /// Before: a number said to four significant digits printed every whole
-/// digit: a 9 t truck's front wheels "carry 26509 N each" (of 26 509.4).
-/// Now four significant digits print as four: 26510 N.
+/// digit: a 9.1 t truck's front wheels "carry 26804 N each" (of
+/// 26 804.3). Now four significant digits print as four: 26800 N.
 #[test]
 fn a_number_given_to_four_significant_digits_prints_four() {
     let dir = tempfile::tempdir().unwrap();
     let tir = root().join("tests/fixtures/tir/MagicFormula62_Parameters.tir");
     let scenario = format!(
-        "name = \"truck\"\n[vehicle]\nmass = 9000.0\nyaw_inertia = 20000.0\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n[tyres]\nfront = \"{}\"\n[manoeuvre]\nkind = \"step-steer\"\nspeed = 20.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 4.0\n",
+        "name = \"truck\"\n[vehicle]\nmass = 9100.0\nyaw_inertia = 20000.0\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n[tyres]\nfront = \"{}\"\n[manoeuvre]\nkind = \"step-steer\"\nspeed = 20.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 4.0\n",
         tir.display()
     );
     let path = dir.path().join("truck.toml");
@@ -275,8 +275,8 @@ fn a_number_given_to_four_significant_digits_prints_four() {
         dir.path().join("o").to_str().unwrap(),
     ]);
     let all = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
-    // Front axle: 9000 · 9.80665 · 1.67 / 2.78 / 2 = 26 509.4 N a wheel.
-    let wheel = 9000.0 * 9.80665 * 1.67 / 2.78 / 2.0;
+    // Front axle: 9100 · 9.80665 · 1.67 / 2.78 / 2 = 26 804.3 N a wheel.
+    let wheel = 9100.0 * 9.80665 * 1.67 / 2.78 / 2.0;
     let four = format!("{}", (wheel / 10.0_f64).round() * 10.0);
     assert!(
         all.contains(&format!("its wheels carry {four} N each")),

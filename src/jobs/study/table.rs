@@ -25,6 +25,10 @@ pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Res
     let rows = samples.iter().map(|x| {
         let response = x.response();
         let note = match (response.note(), x.handling_metrics()) {
+            // A response still settling keeps its empty cells' reason.
+            (Some(n), Some(m)) if !empty_cells(&m).is_empty() => {
+                format!("{n}; {}", empty_cells(&m))
+            }
             (Some(n), _) => n,
             (None, Some(m)) => empty_cells(&m),
             (None, None) => String::new(),

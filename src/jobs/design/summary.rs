@@ -85,25 +85,28 @@ fn set_lines(set: &SetDesign, family: usize) -> Vec<String> {
 /// after its separation.
 fn calibration_words(set: &SetDesign) -> String {
     let cal = &set.calibration;
-    match cal.runs {
-        0 => "; none by one noise floor, so none measures the predictions' scatter".into(),
-        // A scatter with no model-form error to stand for (the
-        // reference's residuals at the noise) widens nothing.
-        n if !cal.applied => format!(
-            "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, but {} leaves no gap above the noise (held-out error {:.3} against a noise level of {:.3}), so no model-form error for that scatter to stand for (the noise of the first sample each run's replays start from makes such a scatter alone), and the uncertainties below are the noise's",
-            cal.inflation,
-            set.members[0],
-            cal.reference.heldout_error,
-            cal.reference.noise_level
-        ),
+    let mut measured = match cal.runs {
+        0 => "; none by a tenth of a noise floor, so none measures the predictions' scatter".into(),
         n if cal.inflation <= 1.0 => format!(
-            "; the {n} that separate them by a noise floor or more measure it within the noise's scatter, so the uncertainties below are the noise's"
+            "; the {n} that separate them by a tenth of a noise floor or more measure it within the noise's scatter, so the uncertainties below are the noise's"
         ),
         n => format!(
-            "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
+            "; the {n} that separate them by a tenth of a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
             cal.inflation
         ),
+    };
+    // The scatter holds a model-form error only along the differences the
+    // campaign's runs show (`Calibration`).
+    if cal.reference.model_form() {
+        measured += &format!(
+            "; {} leaves a gap above the noise (held-out error {:.3} against a noise level of {:.3}), a model-form error this scatter holds only along the differences these runs show, so each uncertainty below adds the most it can move a driven run ({} of the noise's variance a sample, over the run's samples)",
+            set.members[0],
+            cal.reference.heldout_error,
+            cal.reference.noise_level,
+            crate::format::readable(cal.reference.excess(), 2)
+        );
     }
+    measured
 }
 
 /// The `k`-th (from 0) ranked manoeuvre: its separation, expectation,

@@ -69,8 +69,13 @@ pub enum AngleSource {
     /// The kinematic mismatch of the lateral channels, `a_y − u·r −
     /// d(u·β)/dt`.
     LateralKinematicsWithSideslip,
-    /// The mismatch of `a_x` and the speed's derivative.
+    /// The mismatch of `a_x` and the speed's derivative, without the
+    /// lateral velocity's `v·r` (no `beta` column).
     LongitudinalKinematics,
+    /// The mismatch of `a_x` and the body-axis kinematics, `a_x − u̇ +
+    /// u·β·r` (the sideslip at the accelerometer; a sideslip measured
+    /// elsewhere moved there).
+    LongitudinalKinematicsWithSideslip,
 }
 
 impl AngleSource {
@@ -81,6 +86,7 @@ impl AngleSource {
             AngleSource::LateralKinematics => "estimated from ay − u·r",
             AngleSource::LateralKinematicsWithSideslip => "estimated from ay − u·r − d(u·β)/dt",
             AngleSource::LongitudinalKinematics => "estimated from ax − du/dt",
+            AngleSource::LongitudinalKinematicsWithSideslip => "estimated from ax − du/dt + u·β·r",
         }
     }
 }
@@ -115,6 +121,9 @@ pub struct SensorOffsets {
     pub ay: f64,
     /// Yaw-rate offset, rad/s.
     pub yaw_rate: f64,
+    /// Sideslip offset, rad (removed before the grade is estimated; a
+    /// straight's mean sideslip, where no bank is logged under it).
+    pub beta: f64,
 }
 
 /// The road under one run.
@@ -133,8 +142,10 @@ pub struct RoadGeometry {
 
 impl RoadGeometry {
     /// The road under `run`, named `name`, a bank estimated with the
-    /// sensor `offsets` removed.
-    pub fn of(name: &str, run: &MeasuredRun, offsets: SensorOffsets) -> Self {
+    /// sensor `offsets` removed; `beta_ahead` m: how far ahead of the
+    /// accelerometer the sideslip is measured (0 where one unit gives
+    /// both), for the grade's lateral-velocity term.
+    pub fn of(name: &str, run: &MeasuredRun, offsets: SensorOffsets, beta_ahead: f64) -> Self {
         let estimated = run.bank.is_none() && run.ay.is_some();
         let bank = match (&run.bank, &run.ay) {
             (Some(b), _) => profile(AngleSource::Measured, b.clone(), &[]),
@@ -151,14 +162,19 @@ impl RoadGeometry {
         };
         let grade = run.ax.as_ref().and_then(|ax| {
             profile(
-                AngleSource::LongitudinalKinematics,
-                grade_estimate(run, ax),
+                if run.beta.is_some() {
+                    AngleSource::LongitudinalKinematicsWithSideslip
+                } else {
+                    AngleSource::LongitudinalKinematics
+                },
+                grade_estimate(run, ax, offsets, beta_ahead),
                 &run.masked,
             )
         });
         Self {
             run: name.to_string(),
-            offsets_removed: (estimated && offsets != SensorOffsets::default()).then_some(offsets),
+            offsets_removed: (estimated && (offsets.ay, offsets.yaw_rate) != (0.0, 0.0))
+                .then_some(offsets),
             bank,
             grade,
         }
@@ -194,9 +210,13 @@ impl RoadGeometry {
                 " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
             }
             AngleSource::LongitudinalKinematics
+            | AngleSource::LongitudinalKinematicsWithSideslip
                 if p.p05.abs().max(p.p95.abs()) > PLAUSIBLE_GRADE =>
             {
                 " (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade, the body's pitch, a lag between the speed and ax, wheel slip in the speed; reported, not used)"
+            }
+            AngleSource::LongitudinalKinematics => {
+                " (no beta column: the lateral velocity's v·r is left out, so a corner reads as grade)"
             }
             _ => "",
         };
@@ -260,10 +280,29 @@ fn rate(t: &[f64], x: &[f64], k: usize) -> f64 {
     }
 }
 
-/// `asin((a_x − u̇)/g)` smoothed, rad per sample.
-pub(crate) fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
+/// `asin((a_x − u̇ + v·r + x_a·r²)/g)` smoothed, rad per sample: the
+/// body-axis kinematics of an accelerometer `x_a` ahead of the centre of
+/// gravity, `a_x = u̇ − v·r − x_a·r² + g·sin γ` (ISO 8855; `v` the centre
+/// of gravity's lateral velocity). A sideslip measured `x_β` ahead of it
+/// gives `u·tan β = v + x_β·r`, so `v·r + x_a·r² = u·tan β·r − (x_β −
+/// x_a)·r²`, and where one unit measures both the positions cancel.
+/// Without a `beta` column `v·r` is left out (`a_x − u̇`). The yaw rate's
+/// and the sideslip's `offsets` are removed first; `beta_ahead` is
+/// `x_β − x_a`, m.
+pub(crate) fn grade_estimate(
+    run: &MeasuredRun,
+    ax: &[f64],
+    offsets: SensorOffsets,
+    beta_ahead: f64,
+) -> Vec<f64> {
     let raw: Vec<f64> = (0..run.t.len())
-        .map(|k| (ax[k] - rate(&run.t, &run.speed, k)) / G)
+        .map(|k| {
+            let lateral = run.beta.as_ref().map_or(0.0, |b| {
+                let r = run.yaw_rate[k] - offsets.yaw_rate;
+                run.speed[k] * (b[k] - offsets.beta).tan() * r - beta_ahead * r * r
+            });
+            (ax[k] - rate(&run.t, &run.speed, k) + lateral) / G
+        })
         .collect();
     // `ax` is not among the masked response channels: only the spans the
     // cleaning masked in the others are left out with them.
@@ -385,7 +424,7 @@ mod tests {
                 bank[k].to_degrees()
             );
         }
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
         let b = g.bank.unwrap();
         assert_eq!(b.source, AngleSource::LateralKinematics);
         assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
@@ -408,7 +447,7 @@ mod tests {
         // something else.
         let mut steep = r.clone();
         steep.ax = Some(vec![1.0 + G * 0.12f64.atan().sin(); steep.t.len()]);
-        let line = RoadGeometry::of("turn", &steep, SensorOffsets::default())
+        let line = RoadGeometry::of("turn", &steep, SensorOffsets::default(), 0.0)
             .line()
             .unwrap();
         assert!(
@@ -425,7 +464,7 @@ mod tests {
     fn a_bank_past_any_road_is_warned_of_as_a_unit_slip() {
         let (mut r, _) = run();
         r.speed.iter_mut().for_each(|u| *u *= 3.6);
-        let line = RoadGeometry::of("kmh", &r, SensorOffsets::default()).line();
+        let line = RoadGeometry::of("kmh", &r, SensorOffsets::default(), 0.0).line();
         let line = line.unwrap();
         assert!(line.starts_with("kmh: bank estimated from ay − u·r -90.0°"));
         assert!(line.contains("(warning: steeper than any road's 35°: more likely a unit"));
@@ -442,7 +481,7 @@ mod tests {
             .collect();
         r.ay = Some(ay);
         r.yaw_rate.iter_mut().for_each(|x| *x += b_r);
-        let g = RoadGeometry::of("flat", &r, SensorOffsets::default());
+        let g = RoadGeometry::of("flat", &r, SensorOffsets::default(), 0.0);
         let median = g.bank.unwrap().median.to_degrees();
         let unseen = ((b_ay - 25.0 * b_r) / G).asin().to_degrees();
         assert!((median - unseen).abs() < 0.35, "{median} vs {unseen}");
@@ -450,8 +489,9 @@ mod tests {
         let offsets = SensorOffsets {
             ay: b_ay,
             yaw_rate: b_r,
+            beta: 0.0,
         };
-        let g = RoadGeometry::of("flat", &r, offsets);
+        let g = RoadGeometry::of("flat", &r, offsets, 0.0);
         let b = g.bank.unwrap();
         for x in [b.p05, b.median, b.p95] {
             assert!(x.to_degrees().abs() < 1e-9, "{b:?}");
@@ -463,14 +503,17 @@ mod tests {
         );
         // A measured bank is taken as logged: no offset is said removed.
         r.bank = Some(bank);
-        assert_eq!(RoadGeometry::of("flat", &r, offsets).offsets_removed, None);
+        assert_eq!(
+            RoadGeometry::of("flat", &r, offsets, 0.0).offsets_removed,
+            None
+        );
     }
 
     #[test]
     fn a_bank_column_is_reported_as_measured_and_masked_samples_are_left_out() {
         let (mut r, bank) = run();
         r.bank = Some(bank);
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
         assert_eq!(g.bank.unwrap().source, AngleSource::Measured);
         // A 0.5 s glitch of ay at 9 g, masked: the estimate does not see it.
         let (mut r, _) = run();
@@ -487,7 +530,7 @@ mod tests {
         // Without ay and bank, no bank; without ax, no grade.
         let (mut r, _) = run();
         (r.ay, r.ax) = (None, None);
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
         assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
     }
 
@@ -523,7 +566,7 @@ mod tests {
         let mut run = MeasuredRun::new("step.csv", t, vec![u; n], vec![0.0; n], r)
             .with_ay(ay)
             .with_beta(beta);
-        let with = RoadGeometry::of("step", &run, SensorOffsets::default());
+        let with = RoadGeometry::of("step", &run, SensorOffsets::default(), 0.0);
         let b = with.bank.unwrap();
         assert_eq!(b.source, AngleSource::LateralKinematicsWithSideslip);
         // Central differences of a 0.3 s lag at 100 Hz: within 0.05°.
@@ -535,7 +578,7 @@ mod tests {
             .unwrap()
             .contains("bank estimated from ay − u·r − d(u·β)/dt"));
         run.beta = None;
-        let without = RoadGeometry::of("step", &run, SensorOffsets::default());
+        let without = RoadGeometry::of("step", &run, SensorOffsets::default(), 0.0);
         let b = without.bank.unwrap();
         assert_eq!(b.source, AngleSource::LateralKinematics);
         // The 1 s average of v̇ over the step: −0.02·22.2/1 s = −0.44 m/s²,

@@ -1,4 +1,4 @@
-//! Real logs II, round 27 (issue 39), run as a user runs the tool: a
+//! Real logs, round 27, run as a user runs the tool: a
 //! fitted parameter's standard error where the model leaves a gap above
 //! noise (the fold refits' spread reported where larger), a car crabbing
 //! on a logged bank taken for a sideslip offset, and a flat road's grade
@@ -177,8 +177,8 @@ fn a_flat_roads_grade_in_corners_is_flat_with_the_sideslip_in_the_kinematics() {
     for road in roads {
         let g = &road["grade"];
         assert_eq!(g["source"], "longitudinal_kinematics_with_sideslip", "{g}");
-        // Before: −(1.28 + 0.7)·r²/g, to −5.8° at 0.5 rad/s; 5 % of the
-        // samples below −5°.
+        // Before: −(1.28 + 0.7)·r²/g, to −5.8° at 0.5 rad/s; smoothed over
+        // 1 s, −2.8° at its 5th percentile and −1.4° at its median.
         for q in ["p05", "median", "p95"] {
             let a = g[q].as_f64().unwrap().to_degrees();
             assert!(a.abs() < 0.2, "{q}: {a}° in {g}");

@@ -477,6 +477,7 @@ mod trips_s96_real;
 mod trips_s96_study;
 mod trips_s97_ident;
 mod trips_s97_metrics;
+mod trips_s97_real;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

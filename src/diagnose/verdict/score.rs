@@ -32,6 +32,8 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+mod base_folds;
+
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
 
@@ -379,13 +381,8 @@ impl<'a> Context<'a> {
                 let t0 = Instant::now();
                 let base = &self.bases.folds[k];
                 if let Some(q) = known.map(|folds| folds[k].clone()) {
-                    let model = s.layout.model(base, &q);
-                    let mut e = ChannelErrors::default();
-                    for &i in &self.folds[k] {
-                        e.add(&self.runs[i].errors(&model));
-                    }
                     self.tick();
-                    return (e, q, true);
+                    return (self.heldout_errors(k, &s.layout.model(base, &q)), q, true);
                 }
                 let stamps = self.timing.map(|_| Stamps::default());
                 let problem = Problem::new(
@@ -403,11 +400,7 @@ impl<'a> Context<'a> {
                 .with_prior(fitted.prior);
                 let rows = training_rows(&self.runs, &self.folds[k], problem.prior_count());
                 let f = refit(&problem, full, &rows);
-                let model = s.layout.model(base, &f.params);
-                let mut e = ChannelErrors::default();
-                for &i in &self.folds[k] {
-                    e.add(&self.runs[i].errors(&model));
-                }
+                let e = self.heldout_errors(k, &s.layout.model(base, &f.params));
                 self.tick();
                 if let (Some(rec), Some(st)) = (self.timing, &stamps) {
                     rec.add(Phase::CandidateFolds, t0.elapsed(), st.count());
@@ -428,26 +421,6 @@ impl<'a> Context<'a> {
             fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
             ..fitted.unscored()
         }
-    }
-
-    /// The base's own fold refits (its axles per fold) where `fitted` is the
-    /// base model refitted (no effect) and `full`, its all-run fit, is the
-    /// base's to the last bit, in the same box with the same prior's rows:
-    /// its folds' refits would repeat the base's replay for replay (the same
-    /// start, linearisation and training problem), so their parameters are
-    /// taken as they are. (On a 600 s oval log in 20 pieces, the base's
-    /// eight fold refits took 575 replays, 5 % of the diagnosis.) The
-    /// base's refits do not keep whether they converged, and nothing reads
-    /// it of the base's score ([`crate::diagnose::verdict::baseline`]
-    /// reads its errors and BIC): they count as converged.
-    fn base_folds(&self, fitted: &Fitted, full: &FitOutcome) -> Option<&Vec<Vec<f64>>> {
-        let (p, folds) = self.bases.axle.as_ref()?;
-        let same = fitted.setting.kinds().is_empty()
-            && *p == full.params
-            && folds.len() == self.folds.len()
-            && fitted.prior == self.bases.prior
-            && fitted.bounds == crate::diagnose::model::axles::AXLE_BOUNDS;
-        same.then_some(folds)
     }
 
     /// The fold refits' jackknife that the runs' noise alone gives each

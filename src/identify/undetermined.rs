@@ -232,9 +232,14 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
     let stated = channel.parameters(start);
     let bounds = channel.bounds(start);
     let mut held: Vec<(usize, HeldFor)> = Vec::new();
-    // Parameters (full index) whose hold the guard refused: left free,
-    // with their warning, and not tried again (`spare.rs`).
-    let mut refused: Vec<usize> = Vec::new();
+    // Parameters (full index) whose hold the guard refused, with the
+    // value tried: left free, with their warning, and not tried again at
+    // that value (`spare.rs`). A later round, with others held, may narrow
+    // a parameter's interval and so try it nearer its free value (UniTire's
+    // aligning `c9` on the Hoosier file: refused at its start value 0.0708,
+    // 63 standard errors off once the rest were held, where its ±2 edge
+    // 0.00244 costs less than the free fit's holds).
+    let mut refused: Vec<(usize, f64)> = Vec::new();
     // With the value each was tried at, for its warning.
     let mut tried_at: Vec<(usize, f64)> = Vec::new();
     let mut evaluations = 0;
@@ -255,21 +260,25 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
             settings.local,
         );
         evaluations += round.evaluations;
-        tried_at.extend(round.refused.iter().map(|&k| {
-            let i = problem.free[k];
-            (
-                i,
-                held_value(stated[i], p[k], spread.std_error(k), bounds[i]),
-            )
-        }));
+        let now_refused: Vec<(usize, f64)> = round
+            .refused
+            .iter()
+            .map(|&k| {
+                let i = problem.free[k];
+                (
+                    i,
+                    held_value(stated[i], p[k], spread.std_error(k), bounds[i]),
+                )
+            })
+            .collect();
+        tried_at.extend(&now_refused);
+        refused.extend(&now_refused);
         let Some(t) = round.kept else {
             if round.refused.is_empty() {
                 break;
             }
-            refused.extend(round.refused.iter().map(|&k| problem.free[k]));
             continue;
         };
-        refused.extend(round.refused.iter().map(|&k| problem.free[k]));
         let i = problem.free[t.k];
         let se = spread.std_error(t.k);
         held.push((
@@ -329,7 +338,13 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
 /// `c9` on the Hoosier file at 83.4 kPa and 0°: refused, σ 9.733 %; with
 /// `--hold aligning.c9=0`, 9.685 %).
 fn refusals_said(mut fit: Fit, tried_at: &[(usize, f64)]) -> Fit {
-    for &(i, value) in tried_at {
+    // Each parameter's last refusal: the value the data allowed last.
+    let mut said = Vec::new();
+    for &(i, value) in tried_at.iter().rev() {
+        if said.contains(&i) {
+            continue;
+        }
+        said.push(i);
         let p = &mut fit.parameters[i];
         let (true, Some(w)) = (p.free, p.warning.as_mut()) else {
             continue;
@@ -349,7 +364,7 @@ fn refusals_said(mut fit: Fit, tried_at: &[(usize, f64)]) -> Fit {
 struct Stated<'a> {
     values: &'a [f64],
     bounds: &'a [(f64, f64)],
-    refused: &'a [usize],
+    refused: &'a [(usize, f64)],
 }
 
 /// The flagged parameter of `problem` at `p` whose hold (at the value
@@ -378,7 +393,17 @@ fn spare(
     };
     let flagged: Vec<usize> = (0..p.len())
         .filter(|&k| spread.flagged(k, p[k]) && !on_bound(k))
-        .filter(|&k| !stated.refused.contains(&problem.free[k]))
+        .filter(|&k| {
+            // Refused at the value it would be tried at now: not again.
+            let i = problem.free[k];
+            let now = held_value(
+                stated.values[i],
+                p[k],
+                spread.std_error(k),
+                stated.bounds[i],
+            );
+            !stated.refused.contains(&(i, now))
+        })
         .collect();
     let free_bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| stated.bounds[i]).collect();
     let std_errors: Vec<Option<f64>> = (0..p.len()).map(|k| spread.std_error(k)).collect();

@@ -196,19 +196,7 @@ pub fn run_batch(
                 });
                 reports.push(r);
             }
-            Err(e) => rows.push(FleetRow {
-                campaign: name,
-                runs: 0,
-                verdict: Vec::new(),
-                kind: None,
-                heldout_error_before: None,
-                heldout_error_after: None,
-                noise_level: None,
-                best: None,
-                statement: e.to_string(),
-                failed: true,
-                runs_folder: None,
-            }),
+            Err(e) => rows.push(failed_row(name, &e)),
         }
     }
     if whole {
@@ -216,6 +204,37 @@ pub fn run_batch(
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));
     }
+    let outcome = shard_outcome(dir, &all, &out_dir, shard, owned, rows)?;
+    Ok((reports, outcome))
+}
+
+/// The fleet row of a campaign `name` whose diagnosis failed with `e`.
+fn failed_row(name: String, e: &Error) -> FleetRow {
+    FleetRow {
+        campaign: name,
+        runs: 0,
+        verdict: Vec::new(),
+        kind: None,
+        heldout_error_before: None,
+        heldout_error_after: None,
+        noise_level: None,
+        best: None,
+        statement: e.to_string(),
+        failed: true,
+        runs_folder: None,
+    }
+}
+
+/// Writes shard `shard`'s file (the campaigns `owned` of `all` in `dir`,
+/// their fleet rows `rows`) into `out_dir` for `handling merge`.
+fn shard_outcome(
+    dir: &Path,
+    all: &[PathBuf],
+    out_dir: &Path,
+    shard: Shard,
+    owned: Vec<usize>,
+    rows: Vec<FleetRow>,
+) -> Result<BatchOutcome, Error> {
     let file = out_dir.join(shard.file_name());
     let names: Vec<String> = all.iter().map(|p| name_of(p)).collect();
     write_shard(
@@ -233,17 +252,14 @@ pub fn run_batch(
             results: rows,
         },
     )?;
-    Ok((
-        reports,
-        BatchOutcome::Shard(ShardReport {
-            job: ShardJob::Diagnose,
-            shard,
-            units: all.len(),
-            owned: owned.len(),
-            conditions: owned.len(),
-            path: file,
-        }),
-    ))
+    Ok(BatchOutcome::Shard(ShardReport {
+        job: ShardJob::Diagnose,
+        shard,
+        units: all.len(),
+        owned: owned.len(),
+        conditions: owned.len(),
+        path: file,
+    }))
 }
 
 /// What a batch run wrote last: the fleet table, or a shard of it.
@@ -416,7 +432,7 @@ impl FleetReport {
                 ]
             })
             .collect();
-        let n = self.diagnosed();
+        let n = self.distinct_diagnosed();
         let recurring: Vec<Vec<Cell>> = self
             .recurring
             .iter()
@@ -471,6 +487,15 @@ impl FleetReport {
             };
             selection_error(batch, problem)
         })
+    }
+
+    /// The campaigns diagnosed, those reading the same run files counted
+    /// once: what the recurring effects are counted out of.
+    fn distinct_diagnosed(&self) -> usize {
+        let rows = &self.campaigns;
+        (0..rows.len())
+            .filter(|&i| !rows[i].failed && first_of_its_runs(rows, i))
+            .count()
     }
 
     /// A note for each set of campaigns that read the same run files.
@@ -528,9 +553,7 @@ impl FleetReport {
         // Out of the campaigns diagnosed: a failed one has no verdict; of
         // those reading the same run files, one.
         out.extend(self.shared_runs_notes());
-        let n = (0..self.campaigns.len())
-            .filter(|&i| !self.campaigns[i].failed && first_of_its_runs(&self.campaigns, i))
-            .count();
+        let n = self.distinct_diagnosed();
         for e in &self.recurring {
             out.push(format!(
                 "  {}: in the verdict of {} of {n} diagnosed campaigns, the best single candidate in {} of {n}",

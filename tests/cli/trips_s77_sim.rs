@@ -34,23 +34,26 @@ fn sedan_on(dir: &Path, name: &str, vehicle: &str, tyre: &str) -> PathBuf {
 /// A `.tir` with `PKY1 = 0` (as `identify` writes a lateral block it had
 /// no data for) failed as "`manoeuvre.lateral_acceleration` = 0: no steady
 /// state … did not converge", a key the scenario does not have; one with
-/// `LMUY = 0` likewise. Both are refused at `tyres.front`, naming
-/// the file, the force and the coefficient at zero.
+/// `LMUY = 0` likewise. The latter is refused at `tyres.front`, naming
+/// the file, the force and the coefficient at zero; the former, with a
+/// lateral peak (`PDY1`), by the `.tir` reader at its line as a cornering
+/// stiffness below any tyre's (session 97, as `PKY1 = -0.5` is).
 #[test]
 fn a_tyre_with_no_lateral_force_is_refused_naming_the_file_and_the_force() {
     let dir = tempfile::tempdir().unwrap();
-    for (key, tir, force) in [
-        (
-            "PKY1",
-            "no_stiffness.tir",
-            "fy changes by 0 N (0 of the load)",
-        ),
-        (
-            "LMUY",
-            "no_friction.tir",
-            "fy changes by 0 N (0 of the load)",
-        ),
-    ] {
+    tir_with(dir.path(), "no_stiffness.tir", "PKY1", "0");
+    let path = sedan_on(dir.path(), "PKY1", VEHICLE, "no_stiffness.tir");
+    let e = fails_cleanly("simulate", &path, dir.path());
+    assert!(
+        e.contains("no_stiffness.tir:206:")
+            && e.contains("`PKY1`: 0 gives the tyre a cornering stiffness"),
+        "{e}"
+    );
+    for (key, tir, force) in [(
+        "LMUY",
+        "no_friction.tir",
+        "fy changes by 0 N (0 of the load)",
+    )] {
         tir_with(dir.path(), tir, key, "0");
         let path = sedan_on(dir.path(), key, VEHICLE, tir);
         let e = fails_cleanly("simulate", &path, dir.path());

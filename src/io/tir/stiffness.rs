@@ -54,11 +54,15 @@ pub fn cornering_per_load(tyre: &MagicFormula) -> Option<ParamError> {
     let x = (fz / fz0p) / c.PKY2;
     let kya = c.PKY1 * fz0p * (c.PKY4 * x.atan()).sin() * c.LKY;
     let per_load = (kya / fz).abs();
-    // No stiffness at all is a file with no lateral force (`PKY1 = 0`,
-    // as `identify` writes a block no lateral data shaped): said by
-    // the evaluations' checks (fy = 0 at a slip), not a slipped digit.
+    // No stiffness at all is a file with no lateral force where it has no
+    // lateral peak either (`PDY1 = PKY1 = 0`, as `identify` writes a
+    // block no lateral data shaped; `LMUY = 0`): said by the evaluations'
+    // checks (fy = 0 at a slip). With a peak, `PKY1 = 0` is a stiffness
+    // below any tyre's as −0.5 is (its force the shifts' alone, the same
+    // at every slip angle), refused alike.
+    let no_lateral = c.PDY1 == 0.0 || c.LMUY == 0.0;
     if !per_load.is_finite()
-        || per_load == 0.0
+        || (per_load == 0.0 && no_lateral)
         || (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&per_load)
     {
         return None;

@@ -40,6 +40,7 @@ mod staged;
 mod standstill;
 mod two_stage;
 mod unused_columns;
+mod written_checks;
 pub use two_stage::{TwoStageReport, Written};
 pub use unused_columns::Measured;
 mod staged_figure;
@@ -254,6 +255,9 @@ pub struct SwarmReport {
     /// The samples at a lifted wheel's load set aside (`identify/lifted.rs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lifted: Option<crate::identify::lifted::Lifted>,
+    /// The samples at rest set aside, said (`standstill.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub at_rest: Option<String>,
     /// The file's measured `mz`, `mx`, `my`, counted for the notes on
     /// those no fit took (`unused_columns.rs`).
     #[serde(skip)]

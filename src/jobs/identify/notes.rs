@@ -357,6 +357,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         )
         .chain(sigma_notes(&r.fit, &r.level_names()))
         .chain(r.lifted.map(|l| Note::said(l.line())))
+        .chain(r.at_rest.iter().map(|l| Note::said(l.clone())))
         .chain(unfitted_notes(r))
         .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))
         .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))

@@ -49,6 +49,10 @@ pub struct StagedJob {
     /// and `simulate` refuse: said, and the file written all the same;
     /// first, a template's such curve.
     pub pure_curve_warning: Vec<String>,
+    /// The written file's own checks, as `tyre-eval` makes them
+    /// (`written_checks.rs`): a peak |F|/Fz above 2.5, a longitudinal slip
+    /// stiffness negative inside its load range.
+    pub file_warnings: Vec<String>,
     /// Warnings on the data read: forces far too small for their loads
     /// (`force_scale.rs`), as every model's fit gives them.
     pub input_warnings: Vec<String>,
@@ -106,6 +110,7 @@ impl StagedJob {
         out.extend(
             self.pure_curve_warning
                 .iter()
+                .chain(&self.file_warnings)
                 .map(|w| format!("  warning: {w}")),
         );
         out.extend(self.unfitted.iter().map(|l| format!("  {l}")));
@@ -115,7 +120,7 @@ impl StagedJob {
 
 /// The warning of a fitted tyre whose pure curves (of the forces it has:
 /// `PDY1`, `PDX1` not 0) go beyond any tyre's, with the numbers, or `None`.
-fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
+fn pure_curve_warning(t: &MagicFormula, hold: &[(String, f64)]) -> Option<String> {
     let c = &t.coefficients;
     // The cornering stiffness per unit load at FNOMIN is judged after the
     // curves, as the readers judge it: a fit outside 1.5–100 1/rad is
@@ -127,27 +132,15 @@ fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
         .check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0)
         .err()
         .or_else(|| crate::io::tir::cornering_per_load(t))?;
+    let held = hold.iter().any(|(k, _)| *k == e.key);
     Some(format!(
-        "the fitted `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: refit with --hold, or check the data",
+        "the {} `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: {}",
+        if held { "held" } else { "fitted" },
         e.key,
         exact(c.get(&e.key).unwrap_or(f64::NAN)),
-        e.reason
+        e.reason,
+        if held { "hold it at a tyre's value, or fit it" } else { "refit with --hold, or check the data" }
     ))
-}
-
-/// A template's `PKY1`, `PKY4` on the other branch of Kyα (`PKY4 < 0`),
-/// which the fit reads (and writes) with both signs turned: said.
-fn stiffness_branch_note(t: &MagicFormula) -> Option<String> {
-    let c = &t.coefficients;
-    (c.PKY4 < 0.0).then(|| {
-        format!(
-            "the template's PKY1 = {}, PKY4 = {} are read as PKY1 = {}, PKY4 = {}: the same cornering stiffness (Kyα ∝ PKY1·sin(PKY4·atan(Fz/(PKY2·Fz0))), odd in the two together) on the branch the fit keeps PKY4 on (0.1 to 5)",
-            exact(c.PKY1),
-            exact(c.PKY4),
-            exact(-c.PKY1),
-            exact(-c.PKY4)
-        )
-    })
 }
 
 /// The terminal's lines of each stage of `report` (indented as the
@@ -327,7 +320,12 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let combined = prepared.rows.iter().filter(|r| is_combined(r)).count();
     let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();
     unfitted.extend(at_rest.map(|r| r.line()));
-    unfitted.extend(settings.template.as_ref().and_then(stiffness_branch_note));
+    unfitted.extend(
+        settings
+            .template
+            .as_ref()
+            .and_then(super::written_checks::stiffness_branch_note),
+    );
     unfitted.extend(unfitted_blocks(
         &id.report,
         o.template.is_some(),
@@ -356,7 +354,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // same numbers.
     let pure_curve_warning: Vec<String> = template_warning
         .into_iter()
-        .chain(pure_curve_warning(&written))
+        .chain(pure_curve_warning(&written, &o.hold))
         .collect();
     let curvature = curvature
         + &input_warnings
@@ -367,7 +365,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
             .iter()
             .map(|w| format!("$ warning: {w}\n"))
             .collect::<String>();
-    let tir = held_comment(o)
+    let head = held_comment(o)
         + &super::ranges::tir_comment(&spans, o.template.is_some())
         + &unfitted
             .iter()
@@ -375,8 +373,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
             .collect::<String>()
         + &super::holds::held_file_lines(&held, "$")
         + &stages
-        + &curvature
-        + &crate::io::tir::tir_text(&written, template.as_ref())?;
+        + &curvature;
+    // The file's own checks, as `tyre-eval` makes them of it.
+    let body = crate::io::tir::tir_text(&written, template.as_ref())?;
+    let (tir, file_warnings) = super::written_checks::with_file_checks(&out, &head, &body);
     let read_back = TirDocument::parse(std::path::Path::new("<written .tir>"), &tir)?.template()?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
@@ -393,6 +393,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         round_trip_relative_difference: back,
         curvature_above_one,
         pure_curve_warning,
+        file_warnings,
         input_warnings,
         figure,
         tir,

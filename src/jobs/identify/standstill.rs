@@ -1,5 +1,7 @@
 //! Rig samples at rest (a `speed` below [`STANDSTILL`], m/s) set aside
-//! before a staged Magic Formula fit, counted and said. A slip is a slip
+//! before the fit of every model (the staged Magic Formula's and the
+//! swarm models': a slip at rest is no tyre's state whatever the model),
+//! counted and said. A slip is a slip
 //! velocity over the speed (`κ = −Vsx/|Vx|`, `tan α = −Vsy/|Vx|`), so a
 //! slip at zero speed is no state a tyre is in; and the Magic Formula's
 //! aligning moment at rest loses its trail term (`t ∝ Vcx/(Vc + εV)`,
@@ -27,11 +29,21 @@ pub(super) struct AtRest {
 }
 
 impl AtRest {
-    /// The line saying what was set aside and why.
+    /// The line saying what was set aside and why, of a Magic Formula
+    /// fit (its aligning moment at rest said too).
     pub(super) fn line(&self) -> String {
+        self.line_of(true)
+    }
+
+    /// [`Self::line`] of a fit of any model (`mf`: a Magic Formula's).
+    pub(super) fn line_of(&self, mf: bool) -> String {
         let (fz, alpha) = self.first;
+        let trail = match mf {
+            true => ", and a Magic Formula's aligning moment at rest has no trail term",
+            false => "",
+        };
         format!(
-            "{} of {} at rest (speed below {STANDSTILL} m/s; the first at fz = {} N, alpha = {} rad), {} at a slip angle or slip ratio ≠ 0, set aside, not fitted: a slip at zero speed is not a physical state (κ and tan α are slip velocities over the speed), and a Magic Formula's aligning moment at rest has no trail term; give the wheel's speed",
+            "{} of {} at rest (speed below {STANDSTILL} m/s; the first at fz = {} N, alpha = {} rad), {} at a slip angle or slip ratio ≠ 0, set aside, not fitted: a slip at zero speed is not a physical state (κ and tan α are slip velocities over the speed){trail}; give the wheel's speed",
             plural(self.samples, "sample", "samples"),
             self.of,
             readable(fz, 4),

@@ -21,6 +21,7 @@ impl SwarmReport {
             o.seed
         )];
         out.extend(self.lifted.map(|l| format!("  {}", l.line())));
+        out.extend(self.at_rest.iter().map(|l| format!("  {l}")));
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
         // Each channel's held lines sit with its block: the lateral
         // force's (and every --hold) here, before its σ table.

@@ -38,6 +38,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let selecting = o.load.is_some() || o.pressure.is_some() || o.camber.is_some();
     let whole = selecting.then(|| read.clone());
     let (data, lifted) = without_lifted(read);
+    // Nor is a sample at rest, for any model (`standstill.rs`).
+    let (data, _, at_rest) = super::standstill::without_rest(data, [None, None]);
     let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
     // Each force is fitted to its pure slip (`identify/pure.rs`).
     let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
@@ -92,6 +94,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         notes: Vec::new(),
         flat_alpha,
         lifted,
+        at_rest: at_rest.map(|r| r.line_of(false)),
         measured,
         set_aside,
         small_forces: force_scale::small_forces(&data),

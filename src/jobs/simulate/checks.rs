@@ -95,7 +95,9 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     let tyres = [&sc.model.front, &sc.model.rear];
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
-            let r = load_free(r, tyres[axle]);
+            // Only the ranges of inputs the model reads, as tyre-eval
+            // judges them (a linear tyre's load, a Gim tyre's camber).
+            let r = crate::jobs::tyre_eval::read_ranges(tyres[axle], r);
             said.warnings
                 .extend(beyond_fitted(axle, &r, RangeSource::Fitted, h));
         }
@@ -111,17 +113,6 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         }
     }
     said
-}
-
-/// `r` without its load range where `tyre` is linear: its force
-/// `C_α·α` has no load term, so a wheel load beyond the loads it was
-/// fitted at extrapolates nothing.
-fn load_free(r: &FittedRanges, tyre: &Tyre) -> FittedRanges {
-    let mut r = *r;
-    if matches!(tyre, Tyre::Linear(_)) {
-        r.fz = None;
-    }
-    r
 }
 
 /// A `.tir` whose pure curves peak above
@@ -524,17 +515,29 @@ fn beyond_fitted(
             ),
         });
     }
-    if out_of(r.kappa, 0.0) {
-        what.push("a slip ratio of 0".into());
-    }
-    if out_of(r.camber, 0.0) {
-        what.push("a camber of 0".into());
-    }
-    if let Some((p, key)) = pressure.filter(|p| out_of(r.pressure, p.0)) {
-        what.push(format!(
-            "a pressure of {} Pa (the file's {key})",
-            crate::format::readable(p, 4)
-        ));
+    // A constant input past its range, by the rule tyre-eval says its
+    // points by: a one-level range by its distance, a sweep by its span.
+    let past = |key: &str, range: Option<[f64; 2]>, v: f64, unit: &str| {
+        let range = range.filter(|r| past_by(*r, v, share).is_some())?;
+        let level = crate::jobs::tyre_eval::one_level(key, range).then(|| {
+            let mid = crate::format::readable(0.5 * (range[0] + range[1]), 4);
+            format!(", one level of the data at {mid}{unit}")
+        });
+        Some(format!(
+            "{}{}",
+            crate::jobs::tyre_eval::past_end(key, range, v, unit),
+            level.unwrap_or_default()
+        ))
+    };
+    what.extend(past("kappa", r.kappa, 0.0, "").map(|w| format!("a slip ratio of 0 ({w})")));
+    what.extend(past("camber", r.camber, 0.0, " rad").map(|w| format!("a camber of 0 rad ({w})")));
+    if let Some((p, key)) = pressure {
+        what.extend(past("pressure", r.pressure, p, " Pa").map(|w| {
+            format!(
+                "a pressure of {} Pa (the file's {key}), {w}",
+                crate::format::readable(p, 4)
+            )
+        }));
     }
     let (ranges, evaluated) = source.words();
     Some(format!(

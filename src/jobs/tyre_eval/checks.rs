@@ -177,8 +177,8 @@ impl Output {
     /// or `QSY` block of a moment.
     fn coefficients(self) -> &'static [&'static str] {
         match self {
-            Output::Fx => &["PDX1", "PKX1"],
-            Output::Fy => &["PDY1", "PKY1"],
+            Output::Fx => &["PDX1", "PKX1", "LMUX", "LKX"],
+            Output::Fy => &["PDY1", "PKY1", "LMUY", "LKY"],
             Output::Mx => &[
                 "QSX1", "QSX2", "QSX3", "QSX4", "QSX5", "QSX6", "QSX7", "QSX8", "QSX9", "QSX10",
                 "QSX11", "QSX12", "QSX13", "QSX14",
@@ -215,6 +215,24 @@ impl ZeroOutput {
     pub(crate) fn cause(&self) -> Option<(String, bool)> {
         let all_zero = self.coefficients.iter().all(|(_, v)| *v == 0.0);
         match self.coefficients.as_slice() {
+            // A force's scale factor at 0 (`LMUY`, `LKY`) where its peak
+            // and stiffness are a tyre's: the scale factor is the cause.
+            [_, _, scales @ ..] if self.is_force() => {
+                let (core, _) = self.coefficients.split_at(2);
+                let zero: Vec<String> = scales
+                    .iter()
+                    .filter(|(_, v)| *v == 0.0)
+                    .map(|(k, _)| format!("{k} = 0"))
+                    .collect();
+                match core.iter().all(|(_, v)| *v != 0.0) && !zero.is_empty() {
+                    true => Some((zero.join(", "), false)),
+                    false => Self {
+                        coefficients: core.to_vec(),
+                        ..self.clone()
+                    }
+                    .cause(),
+                }
+            }
             [(a, x), (b, y)] => Some((
                 format!(
                     "{a} = {}, {b} = {}",
@@ -234,12 +252,22 @@ impl ZeroOutput {
         }
     }
 
+    /// Whether it is a force (`fx`, `fy`), whose first two coefficients
+    /// are its peak and stiffness and the rest their scale factors.
+    fn is_force(&self) -> bool {
+        matches!(self.output, Output::Fx | Output::Fy) && self.coefficients.len() > 2
+    }
+
     /// The sentence on the terminal.
     pub fn line(&self, count: usize) -> String {
         let o = self.output;
         let block = o.block();
+        let scaled = self.cause().filter(|(c, _)| c.starts_with('L'));
         let why = match self.cause() {
-            Some((cause, _)) if self.coefficients.len() == 2 => format!(
+            Some((cause, _)) if scaled.is_some() => format!(
+                " ({cause}: the file's scale factor switches its {block} force off)"
+            ),
+            Some((cause, _)) if self.coefficients.len() == 2 || self.is_force() => format!(
                 " ({cause}: as `identify` writes a {block} block it had no data to fit)"
             ),
             Some((cause, true)) => format!(

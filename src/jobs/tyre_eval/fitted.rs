@@ -13,10 +13,10 @@
 //! span the rig's spread about that level: a point past it is said by its
 //! distance in the range's unit, not as a share of a span that is noise
 //! ("4117 % of the range's span" for a camber of 0.03 rad past ±0.00036).
-//! A range of an input the model does not read (`unread.rs`: a Gim
-//! tyre's camber, pressure) is not checked: the points are evaluated as
-//! if it were not set, which `unread.rs` says, and an extrapolation in it
-//! would contradict that.
+//! A range of an input the model does not read (`reads.rs`: a Gim
+//! tyre's camber, pressure, a linear tyre's load) is not checked: the
+//! points are evaluated as at any value of it, which `unread.rs` says,
+//! and an extrapolation in it would contradict that.
 
 use crate::format::{plural, readable, rounded};
 use crate::io::fitted_ranges::{FittedRanges, RangePoint};
@@ -35,25 +35,27 @@ pub const ONE_LEVEL: [(&str, f64); 4] = [
     ("pressure", 5000.0),
 ];
 
+/// How far `v` lies past the nearer end of the fitted range `[lo, hi]` of
+/// `key` (unit `unit`, with its leading space), in words: by its distance
+/// where the range is one level of the data (or is open at an end), else
+/// as a share of its span. One rule for `tyre-eval`'s points and
+/// `simulate`'s rows.
+pub fn past_end(key: &str, [lo, hi]: [f64; 2], v: f64, unit: &str) -> String {
+    let past = if v < lo { lo - v } else { v - hi };
+    if one_level(key, [lo, hi]) || !(hi - lo).is_finite() {
+        return format!("{}{unit} past the range's end", readable(past, 4));
+    }
+    format!(
+        "{} % of the range's span past its end",
+        readable(100.0 * past / (hi - lo), 3)
+    )
+}
+
 /// Whether the range `[lo, hi]` of `key` is one level of the data.
 pub fn one_level(key: &str, [lo, hi]: [f64; 2]) -> bool {
     ONE_LEVEL
         .iter()
         .any(|(k, width)| *k == key && hi - lo < *width)
-}
-
-/// `r` without the ranges of the inputs the model does not read (each
-/// `unread.rs`'s column): its points there are evaluated as if unset.
-pub(super) fn read_ranges(r: &FittedRanges, unread: &[super::Unread]) -> FittedRanges {
-    let read = |key: &str, range: Option<[f64; 2]>| {
-        range.filter(|_| !super::unread::is_unread(unread, key))
-    };
-    FittedRanges {
-        kappa: read("kappa", r.kappa),
-        camber: read("camber", r.camber),
-        pressure: read("pressure", r.pressure),
-        ..*r
-    }
 }
 
 /// One side of one fitted range some points lie past.
@@ -159,10 +161,10 @@ impl FittedLeft {
             true => ("below", lo),
             false => ("above", hi),
         };
-        let past = (self.farthest - end).abs();
+        let past = past_end(self.key, self.range, self.farthest, &unit);
         if one_level(self.key, self.range) {
             return format!(
-                "{} of {} {side} the rig data's {}, one level at {}{unit} (its [fitted_ranges]: {} to {}{unit}, the rig's spread about that level, no sweep): evaluated by extrapolation from that one level, the farthest at {}{unit}, {}{unit} past the range's end; the first at line {}, {} = {}{unit}",
+                "{} of {} {side} the rig data's {}, one level at {}{unit} (its [fitted_ranges]: {} to {}{unit}, the rig's spread about that level, no sweep): evaluated by extrapolation from that one level, the farthest at {}{unit}, {past}; the first at line {}, {} = {}{unit}",
                 self.points,
                 plural(count, "point", "points"),
                 self.key,
@@ -170,14 +172,13 @@ impl FittedLeft {
                 readable(lo, 4),
                 readable(hi, 4),
                 rounded(self.farthest, 6),
-                readable(past, 4),
                 self.first_line,
                 self.key,
                 rounded(self.first_value, 6)
             );
         }
         format!(
-            "{} of {} {side} the rig data's {} = {}{unit} the tyre was fitted to (its [fitted_ranges]: {} to {}{unit}): evaluated by extrapolation, the farthest at {}{unit}, {} % of the range's span past its end; the first at line {}, {} = {}{unit}",
+            "{} of {} {side} the rig data's {} = {}{unit} the tyre was fitted to (its [fitted_ranges]: {} to {}{unit}): evaluated by extrapolation, the farthest at {}{unit}, {past}; the first at line {}, {} = {}{unit}",
             self.points,
             plural(count, "point", "points"),
             self.key,
@@ -185,7 +186,6 @@ impl FittedLeft {
             readable(lo, 4),
             readable(hi, 4),
             rounded(self.farthest, 6),
-            readable(100.0 * past / (hi - lo), 3),
             self.first_line,
             self.key,
             rounded(self.first_value, 6)

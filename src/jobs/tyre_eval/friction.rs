@@ -45,9 +45,14 @@ pub const PEAK_SLIP_RATIO: (f64, usize) = (1.0, 100);
 /// published file (`FSAE_Defaults.tir`, 3.4 at light load) is read, and
 /// the number said. Only the forces the file describes are judged.
 pub(crate) fn peak_of(tyre: &Tyre) -> Option<crate::tyre::mf::PeakFriction> {
-    let Tyre::MagicFormula(t) = tyre else {
-        return None;
-    };
+    match tyre {
+        Tyre::MagicFormula(t) => peak_of_mf(t),
+        _ => None,
+    }
+}
+
+/// [`peak_of`] of a Magic Formula tyre.
+pub(crate) fn peak_of_mf(t: &crate::tyre::MagicFormula) -> Option<crate::tyre::mf::PeakFriction> {
     let c = &t.coefficients;
     let described = (c.PDY1 != 0.0, c.PDX1 != 0.0);
     t.peak_friction(described, crate::tyre::mf::WARN_FRICTION)

@@ -48,6 +48,10 @@ mod camber;
 mod checks;
 mod columns;
 mod fitted;
+pub use fitted::{one_level, past_end};
+mod file_checks;
+pub(crate) use file_checks::of_text;
+pub use file_checks::FileChecks;
 mod friction;
 pub(crate) use friction::peak_of;
 mod light_load;
@@ -62,6 +66,8 @@ mod points;
 mod pressure;
 mod radius;
 mod ranges;
+mod reads;
+pub use reads::{read_ranges, reads, Reads};
 mod rolling;
 mod slip_ratio;
 mod standstill;
@@ -328,11 +334,15 @@ pub fn run(
     let f = tyre.evaluate_points(fz, kappa, alpha, camber, speed, &p);
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);
-    let longitudinal_turn = crate::io::tir::longitudinal_turn(tyre_path);
+    // The file's own checks, as `identify` makes them of a file it writes.
+    let FileChecks {
+        peak_friction,
+        longitudinal_turn,
+    } = file_checks::of_tyre_file(tyre_path, &tyre);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
     let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
-        let r = fitted::read_ranges(r, &unread);
+        let r = reads::read_ranges(&tyre, r);
         fitted::beyond(&r, [fz, kappa, alpha, camber], &p, &file.lines)
     });
     let unfitted_lateral =
@@ -391,7 +401,7 @@ pub fn run(
     Ok(TyreEvalReport {
         measured,
         kept,
-        peak_friction: friction::peak_of(&tyre),
+        peak_friction,
         not_written,
         points: points.display().to_string(),
         count,

@@ -51,8 +51,9 @@ pub struct Opposed {
     pub points: usize,
     /// The first: its line in the points file, its load (N), slip (rad
     /// or ratio), camber (rad), the force written and the force at zero
-    /// slip there (N).
-    pub first: (usize, [f64; 5]),
+    /// slip there (N), and its other slip (ratio or rad), at which both
+    /// forces are evaluated.
+    pub first: (usize, [f64; 6]),
     /// MFeval's mode with the limit checks off (`None`: on, or another
     /// model).
     pub checks_off: Option<u32>,
@@ -61,15 +62,21 @@ pub struct Opposed {
 impl Opposed {
     /// The sentence on the terminal, of `count` points.
     pub fn line(&self, count: usize) -> String {
-        let (line, [fz, slip, camber, force, at_zero]) = self.first;
+        let (line, [fz, slip, camber, force, at_zero, other]) = self.first;
         let n = |v: f64| readable(v, 4);
+        let angle = |a: f64| format!("{} rad ({}°)", n(a), n(a.to_degrees()));
+        // The point's other slip too: at combined slip it shapes the force.
         let (slip_name, slip_text, what) = match self.force {
             "fy" => (
                 "alpha",
-                format!("{} rad ({}°)", n(slip), n(slip.to_degrees())),
+                format!("{}, kappa = {}", angle(slip), n(other)),
                 "lateral force",
             ),
-            _ => ("kappa", n(slip), "longitudinal force"),
+            _ => (
+                "kappa",
+                format!("{}, alpha = {}", n(slip), angle(other)),
+                "longitudinal force",
+            ),
         };
         let within = match self.within {
             Within::FileLimits => "inside the file's ranges of load, slip, camber and pressure",
@@ -159,13 +166,13 @@ pub(crate) fn opposed(
     };
     let lateral = tyre.evaluate_points(fz, kappa, &zero, camber, speed, p.pressure);
     let longitudinal = tyre.evaluate_points(fz, &zero, alpha, camber, speed, p.pressure);
-    let sides: [Side; 2] = [
-        ("fy", alpha, |x| x.fy, &lateral),
-        ("fx", kappa, |x| x.fx, &longitudinal),
+    let sides: [(Side, &[f64]); 2] = [
+        (("fy", alpha, |x| x.fy, &lateral), kappa),
+        (("fx", kappa, |x| x.fx, &longitudinal), alpha),
     ];
     sides
         .into_iter()
-        .filter_map(|(force, slip, of, at_zero)| {
+        .filter_map(|((force, slip, of, at_zero), other)| {
             let against = |i: usize| {
                 let (s, v, v0) = (slip[i], of(&f[i]), of(&at_zero[i]));
                 let tol = OPPOSED_SHARE * fz[i];
@@ -175,7 +182,14 @@ pub(crate) fn opposed(
                 .filter(|&i| against(i) && inside(tyre, ranges, p, i))
                 .collect();
             let &i = found.first()?;
-            let first = [fz[i], slip[i], camber[i], of(&f[i]), of(&at_zero[i])];
+            let first = [
+                fz[i],
+                slip[i],
+                camber[i],
+                of(&f[i]),
+                of(&at_zero[i]),
+                other[i],
+            ];
             Some(Opposed {
                 force,
                 within,

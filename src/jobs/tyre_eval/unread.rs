@@ -57,7 +57,7 @@ pub const MF_PRESSURE_TERMS: [&str; 14] = [
 ];
 
 /// Why the Magic Formula `t` does not respond to the pressure, or `None`.
-fn mf_no_pressure(t: &crate::tyre::MagicFormula) -> Option<MfNoPressure> {
+pub(super) fn mf_no_pressure(t: &crate::tyre::MagicFormula) -> Option<MfNoPressure> {
     use crate::tyre::mf::MfVersion;
     let c = &t.coefficients;
     let zero = |k: &&str| c.get(k).is_none_or(|v| v == 0.0);

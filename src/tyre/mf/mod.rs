@@ -216,6 +216,12 @@ impl MagicFormula {
         ParamError::positive("VXLOW", c.VXLOW)?;
         ParamError::non_negative("NOMPRES", c.NOMPRES)?;
         ParamError::positive("LFZO", c.LFZO)?;
+        // A negative friction scale turns the peak, and so the force,
+        // against its slip (`LMUY = -1` was read silently, and held with
+        // `--hold`, where `LFZO = -1` was refused); 0 is a tyre without
+        // that force, said by the evaluations' checks.
+        ParamError::non_negative("LMUX", c.LMUX)?;
+        ParamError::non_negative("LMUY", c.LMUY)?;
         for name in MfCoefficients::NAMES {
             ParamError::finite(name, c.get(name).unwrap_or(0.0))?;
         }

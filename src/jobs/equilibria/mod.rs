@@ -248,6 +248,7 @@ impl EquilibriaReport {
                 "  note: {note}, so every friction of the sweep gives the same equilibria"
             ));
         }
+        out.extend(sw.notes.iter().map(|n| format!("  note: {n}")));
         if s.conditions_with_continua > 0 {
             out.push(format!(
                 "  {} a continuum of equilibria (both axles sliding at constant force: \

@@ -120,9 +120,9 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
     }
     if s.large_sideslip > 0 {
         kinds.push(format!(
-            "{} {} at a steady sideslip beyond 10° on tyres with no friction limit (far outside a linear tyre's range)",
+            "{} {} a sideslip beyond 10° by the end of the step on tyres with no friction limit (far outside a linear tyre's range)",
             s.large_sideslip,
-            verb(s.large_sideslip, "turns", "turn")
+            verb(s.large_sideslip, "reaches", "reach")
         ));
     }
     if s.not_settled > 0 {

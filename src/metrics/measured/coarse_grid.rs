@@ -124,7 +124,7 @@ pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<Strin
     let q = resolution(x)?;
     let step = m.steer_step.abs();
     let share = q / 12f64.sqrt() / step;
-    if !(share > COARSE_SHARE && step > 0.0) || !on_grid(x, q) || one_ramp(x, q) {
+    if !(share > COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {
         return None;
     }
     let deg = 180.0 / std::f64::consts::PI;

@@ -479,6 +479,7 @@ mod trips_s97_eq;
 mod trips_s97_ident;
 mod trips_s97_metrics;
 mod trips_s97_real;
+mod trips_s97_held27;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

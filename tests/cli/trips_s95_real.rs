@@ -49,7 +49,7 @@ fn sine(dir: &Path, name: &str, speed: f64, amplitude: f64, frequency: f64) -> V
 
 /// A campaign folder `dir/campaign` on the same car and tyre, with
 /// `effects` the candidates and `runs` (name, CSV text) its runs.
-fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> PathBuf {
+pub(crate) fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> PathBuf {
     let c = dir.join("campaign");
     fs::create_dir_all(c.join("runs")).unwrap();
     linear_tyre(&c);
@@ -67,7 +67,7 @@ fn campaign(dir: &Path, effects: &str, runs: &[(String, String)]) -> PathBuf {
 /// A logger's CSV of history rows: the rows `keep` keeps, the steer of
 /// each as `steer` gives it (by row index), white noise of `k` times
 /// 0.002 rad/s, 0.05 m/s² and 0.002 rad on the responses.
-fn logged(
+pub(crate) fn logged(
     rows: &[Vec<f64>],
     (seed, k): (u64, f64),
     keep: impl Fn(usize, f64) -> bool,

@@ -210,8 +210,8 @@ pub(super) fn drive(
                 .clamp(-driver.rate_limit, driver.rate_limit);
             hand += h * rate;
         }
-        // The road wheels through the truth's steer path (delay, lag).
-        wheels.push_back(steering.wheel(hand));
+        // The road wheels through the truth's steer path (ratio, delay, lag).
+        wheels.push_back(path.shaped(steering.wheel(hand)));
         wheels.pop_front();
         if path.lag > 0.0 {
             lagged += (wheels[0] - lagged) * (1.0 - (-h / path.lag).exp());

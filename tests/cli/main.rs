@@ -475,6 +475,7 @@ mod trips_s96_ident;
 mod trips_s96_metrics;
 mod trips_s96_real;
 mod trips_s96_study;
+mod trips_s97_steer;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -117,6 +117,8 @@ pub fn advised(effect: EffectKind) -> Result<&'static [Kind], Missing> {
         E::LongitudinalLoadTransfer => &[BrakeInTurn, AccelerateInTurn],
         E::CombinedSlip => &[BrakeInTurn],
         E::SteerPath => &[Step, SpeedChange],
+        // Steps at two speeds (one factor at both) and two levels.
+        E::SteeringRatio => &[Step],
         E::RoadBank | E::SensorBias => return Err(Missing::StraightBothWays),
         E::BankProfile => return Err(Missing::BankedCorner),
     })

@@ -199,8 +199,8 @@ pub(super) fn drive(
             let wanted = car.wanted_steer(track, driver, &x, rear, nearest, u);
             hands.follow(steering.hand(wanted) + driver.remnant * remnant(t));
         }
-        // The road wheels through the truth's steer path (delay, lag).
-        let steer = wheels.advance(steering.wheel(hands.hand), path.lag);
+        // The road wheels through the truth's steer path (ratio, delay, lag).
+        let steer = wheels.advance(path.shaped(steering.wheel(hands.hand)), path.lag);
         let inputs = |s: f64| {
             let j = ((s / h).floor() as usize).min(n - 1);
             let w = (s / h - j as f64).clamp(0.0, 1.0);

@@ -439,7 +439,9 @@ impl Effects {
         }
         let path = &self.steer_path;
         ParamError::non_negative("delay", path.delay).map_err(|e| e.within("steer_path"))?;
-        ParamError::non_negative("lag", path.lag).map_err(|e| e.within("steer_path"))
+        ParamError::non_negative("lag", path.lag).map_err(|e| e.within("steer_path"))?;
+        ParamError::positive("gain", path.gain).map_err(|e| e.within("steer_path"))?;
+        ParamError::finite("cubic", path.cubic).map_err(|e| e.within("steer_path"))
     }
 
     /// True when body roll feeds back into the forces (roll steer or roll
@@ -457,13 +459,15 @@ impl Effects {
     /// The effects switched on that [`super::VehicleModel::equilibrium_residual`]
     /// does not model, by their keys in `[model.effects]`: those acting
     /// through the steer the wheels see or the slip their tyres see
-    /// (steering compliance, roll steer, the cornering-stiffness scale) or
+    /// (steering compliance, roll steer, the cornering-stiffness scale, the
+    /// steer path's ratio) or
     /// through body roll (roll camber). The others are in it (aero load,
     /// road bank, the yaw-inertia and friction scales, the load-transfer
     /// share) or leave a steady state as it is: a tyre lag's states sit at
     /// the kinematic slip angles, the longitudinal effects see no
     /// longitudinal acceleration, a steady state has no measured bank
-    /// profile, a steer path passes a constant steer unchanged, and the
+    /// profile, a steer path's delay and lag pass a constant steer
+    /// unchanged (its ratio does not: listed), and the
     /// sensors act on what is measured, not on the state. Every field is
     /// named, so that a new effect must be sorted here.
     pub(crate) fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
@@ -483,7 +487,7 @@ impl Effects {
             friction_scale: _,
             transfer_share: _,
             sensors: _,
-            steer_path: _,
+            steer_path,
         } = self;
         [
             ("steering_compliance", *steering_compliance != 0.0),
@@ -492,6 +496,10 @@ impl Effects {
             (
                 "cornering_stiffness_scale",
                 *cornering_stiffness_scale != [1.0; 2],
+            ),
+            (
+                "steer_path",
+                steer_path.gain != 1.0 || steer_path.cubic != 0.0,
             ),
         ]
         .into_iter()

@@ -1,6 +1,7 @@
 //! The steer path between the logged steer and the road wheels
-//! ([`SteerPath`]): an actuator's dead time and first-order lag, one of
-//! the diagnosis's candidate effects and part of the vehicle model's
+//! ([`SteerPath`]): a steering ratio's error (a gain and a cubic term, the
+//! diagnosis's `steering_ratio`), then an actuator's dead time and
+//! first-order lag (its `steer_path`), part of the vehicle model's
 //! [`super::Effects`]. It is linear in the input, so it is no state of the
 //! model: a replay whose path is on runs the path's exact output for the
 //! logged (piecewise-linear) steer at its stage times; off, the road
@@ -12,18 +13,38 @@ use crate::manoeuvre::Interpolator;
 use crate::scalar::{off, Scalar};
 
 /// The steer path between the logged steer δ and the road wheels:
-/// δ_wheel(t) = lag_τ(δ(t − delay)), with lag_τ a first-order lag of time
-/// constant `lag` (dy/dt = (u − y)/τ). The logged steer is the
+/// δ_wheel(t) = lag_τ(ρ(t − delay)), with ρ = g·(δ + k₃·δ³) the steer
+/// through the steering ratio's error (each logged sample shaped, the
+/// shaped samples joined piecewise-linearly) and lag_τ a first-order lag
+/// of time constant `lag` (dy/dt = (u − y)/τ). The logged steer is the
 /// piecewise-linear signal through its samples, held at its first sample
 /// before the start (and at its last after the end), and the lag starts
 /// settled on that first sample. Its numbers may be dual numbers
 /// ([`crate::scalar`]): the output then carries their derivatives.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteerPath<T = f64> {
     /// Dead time, s (≥ 0).
     pub delay: T,
     /// Time constant of the first-order lag, s (≥ 0; 0: none).
     pub lag: T,
+    /// The steering ratio's error as a factor g on the logged steer (> 0;
+    /// 1: the ratio the logger used is the car's).
+    pub gain: T,
+    /// The ratio's nonlinearity k₃, rad⁻² of logged steer (0: a constant
+    /// ratio; > 0: quicker off centre, as a variable-ratio rack).
+    pub cubic: T,
+}
+
+impl Default for SteerPath {
+    /// The road wheels follow the logged steer as it is.
+    fn default() -> Self {
+        Self {
+            delay: 0.0,
+            lag: 0.0,
+            gain: 1.0,
+            cubic: 0.0,
+        }
+    }
 }
 
 impl<T: Copy> SteerPath<T> {
@@ -32,6 +53,8 @@ impl<T: Copy> SteerPath<T> {
         SteerPath {
             delay: f(self.delay),
             lag: f(self.lag),
+            gain: f(self.gain),
+            cubic: f(self.cubic),
         }
     }
 }
@@ -39,7 +62,13 @@ impl<T: Copy> SteerPath<T> {
 impl<T: Scalar> SteerPath<T> {
     /// Whether the road wheels follow the logged steer as it is.
     pub fn is_off(&self) -> bool {
-        off(self.delay) && off(self.lag)
+        off(self.delay) && off(self.lag) && off(self.gain - 1.0) && off(self.cubic)
+    }
+
+    /// The road-wheel steer ρ = g·(δ + k₃·δ³) the ratio gives for the
+    /// logged steer `delta`, before the delay and the lag.
+    pub fn shaped(&self, delta: f64) -> T {
+        self.gain * (self.cubic * delta.powi(3) + delta)
     }
 
     /// The road-wheel steer at times `at` (in any order) of the steer
@@ -55,7 +84,10 @@ impl<T: Scalar> SteerPath<T> {
         assert_eq!(t.len(), steer.len(), "one steer per time");
         assert!(!t.is_empty(), "a steer path needs samples");
         let delay = self.delay;
-        let logged: Vec<T> = steer.iter().map(|&v| T::from(v)).collect();
+        // The ratio first: the shaped samples are the delay's and the
+        // lag's input (their values alone for the lag's slope below).
+        let logged: Vec<T> = steer.iter().map(|&v| self.shaped(v)).collect();
+        let values: Vec<f64> = logged.iter().map(|v| v.re()).collect();
         if self.lag.re() <= 0.0 {
             let mut nodes = Interpolator::new(t);
             return at
@@ -65,7 +97,7 @@ impl<T: Scalar> SteerPath<T> {
                     if self.lag.is_constant() {
                         y
                     } else {
-                        y - self.lag * slope_below(t, steer, s - delay.re())
+                        y - self.lag * slope_below(t, &values, s - delay.re())
                     }
                 })
                 .collect();
@@ -116,7 +148,7 @@ impl<T: Scalar> SteerPath<T> {
                 if ahead(q, s) {
                     let uq = if j < t.len() {
                         let w = (T::from(q) - delay - t[j - 1]) / (t[j] - t[j - 1]);
-                        logged[j - 1] + w * (steer[j] - steer[j - 1])
+                        logged[j - 1] + w * (logged[j] - logged[j - 1])
                     } else {
                         u
                     };
@@ -156,6 +188,7 @@ mod tests {
         let path = SteerPath {
             delay: 0.13,
             lag: 0.0,
+            ..SteerPath::default()
         };
         let at: Vec<f64> = (0..1000).map(|i| 0.0077 * i as f64).collect();
         let out = path.apply(&t, &steer, &at);
@@ -188,6 +221,7 @@ mod tests {
         let lagged = SteerPath {
             delay: 0.13,
             lag: 0.2,
+            ..SteerPath::default()
         };
         let mut back = lagged.apply(&t, &steer, &rev);
         back.reverse();
@@ -207,6 +241,7 @@ mod tests {
         let path = SteerPath {
             delay: 0.0,
             lag: tau,
+            ..SteerPath::default()
         };
         let out = path.apply(&t, &steer, &t);
         assert_eq!(out[0], 0.0);
@@ -219,6 +254,7 @@ mod tests {
         let delayed = SteerPath {
             delay: 0.2,
             lag: tau,
+            ..SteerPath::default()
         };
         let at: Vec<f64> = (0..700).map(|i| 0.2 + 0.00237 * i as f64).collect();
         for (&s, &y) in at.iter().zip(&delayed.apply(&t, &steer, &at)) {

@@ -67,6 +67,9 @@ effect_library! {
     /// The steer actuator: the road wheels follow the logged steer late
     /// (a dead time) and through a first-order lag.
     SteerPath,
+    /// The steering ratio's error: the road wheels turn g·(δ + k₃·δ³) for
+    /// a logged steer δ.
+    SteeringRatio,
 }
 
 impl Effect for RelaxationLength {
@@ -353,6 +356,43 @@ impl Effect for SteerPath {
         e.steer_path = crate::vehicle::SteerPath {
             delay: p[0],
             lag: p[1],
+            ..e.steer_path
         };
+    }
+}
+
+impl Effect for SteeringRatio {
+    const NAME: &'static str = "steering_ratio";
+    /// The gain g is the car's road-wheel steer per logged steer: a log
+    /// whose steer reads 8 % high (a ratio stated 8 % low) has g = 1/1.08
+    /// = 0.926. Its bounds 0.7–1.4 are a search range: a ratio stated for
+    /// another car of the class (passenger cars' overall ratios run from
+    /// about 12:1 to 20:1, Gillespie 1992 ch. 8; a sports car's quick
+    /// rack about 10:1) is wrong by a factor within 20/14 = 1.43 either
+    /// way of the class's middle. The cubic k₃ (rad⁻² of logged road-wheel
+    /// steer) is a variable-ratio rack's: the local ratio falls off centre
+    /// as 1/(1 + 3k₃δ²); racks that go from about 16:1 on centre to 12:1
+    /// at 0.35 rad of road-wheel steer (−25 %) have k₃ ≈ +0.9, so ±3 rad⁻²
+    /// holds a ratio that changes by up to half from centre to lock in
+    /// either direction (quicker or slower off centre).
+    const PARAMETERS: &'static [Parameter] = &[
+        par("gain", "-", 1.0, 0.7, 1.4),
+        par("cubic", "rad⁻²", 0.0, -3.0, 3.0),
+    ];
+    /// A front cornering-stiffness scale multiplies the whole front slip
+    /// (steer, sideslip and yaw rate alike), a steering compliance takes a
+    /// steer in proportion to the front force: both change the understeer
+    /// gradient, so the yaw-rate gain's ratio between two speeds. A ratio
+    /// multiplies the steer alone: every steer-driven response scaled by
+    /// one factor at every speed and level, its speed dependence and its
+    /// shape in time kept (a steer path changes the timing, not the size).
+    const SIGNATURE: &'static str = "every response to steer scaled by one factor at every speed, its timing and its change with speed kept (the understeer gradient is the car's): a front cornering stiffness or a steering compliance changes the understeer gradient and with it the gain's ratio between speeds, a steer path the timing; the cubic term grows the gain with the steer at one speed where a tyre's saturation shrinks it: steps at two speeds, and at two levels at one low speed";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    /// A ratio stated 10 % quick, constant.
+    const TRUTH: &'static [f64] = &[0.9, 0.0];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.steer_path.gain = p[0];
+        e.steer_path.cubic = p[1];
     }
 }

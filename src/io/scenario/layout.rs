@@ -16,12 +16,13 @@ use std::path::Path;
 
 /// `diagnose`'s effects of the measurement, not of the car (named from
 /// the effect library, so a renamed effect cannot leave this list behind).
-pub(crate) const MEASUREMENT: [EffectKind; 5] = [
+pub(crate) const MEASUREMENT: [EffectKind; 6] = [
     EffectKind::SensorDelay,
     EffectKind::SensorBias,
     EffectKind::AccelerometerRoll,
     EffectKind::AccelerometerPosition,
     EffectKind::SteerPath,
+    EffectKind::SteeringRatio,
 ];
 
 /// `diagnose`'s effects whose numbers a scenario gives under another key.

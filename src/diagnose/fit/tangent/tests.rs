@@ -296,18 +296,25 @@ fn the_steer_paths_derivatives_are_its_central_differences() {
     let t: Vec<f64> = (0..60).map(|i| 0.04 * i as f64).collect();
     let steer: Vec<f64> = t.iter().map(|&x| (2.0 * x).sin() * 0.03).collect();
     let at: Vec<f64> = (0..500).map(|i| 0.005 * i as f64).collect();
-    for which in 0..2 {
-        let p = [0.155, 0.155];
-        let path = |v: [f64; 2]| {
+    // Delay, lag, and the ratio's gain and cubic term (a steer of 0.03 rad
+    // at k₃ = 40 rad⁻² is 4 % off linear: the cubic's derivative is seen).
+    for which in 0..4 {
+        let p = [0.155, 0.155, 0.93, 40.0];
+        let path = |v: [f64; 4]| {
             SteerPath {
                 delay: v[0],
                 lag: v[1],
+                gain: v[2],
+                cubic: v[3],
             }
             .apply(&t, &steer, &at)
         };
+        let seed = |k: usize| Dual64::new(p[k], if which == k { 1.0 } else { 0.0 });
         let dual = SteerPath {
-            delay: Dual64::new(p[0], if which == 0 { 1.0 } else { 0.0 }),
-            lag: Dual64::new(p[1], if which == 1 { 1.0 } else { 0.0 }),
+            delay: seed(0),
+            lag: seed(1),
+            gain: seed(2),
+            cubic: seed(3),
         }
         .apply(&t, &steer, &at);
         let h = 1e-5;

@@ -214,7 +214,14 @@ fn a_held_steer_stays_on_a_straight_and_at_its_stop_until_its_last_repeat() {
     // sine up to the stop, 2 s at it, a quarter sine back over 1.05 s
     // (the kinks, at the straight's ends, on update instants).
     let truth = |s: f64| {
-        let (c, sign) = (s % 6.05, if ((s / 6.05) as usize).is_multiple_of(2) { a } else { -a });
+        let (c, sign) = (
+            s % 6.05,
+            if ((s / 6.05) as usize).is_multiple_of(2) {
+                a
+            } else {
+                -a
+            },
+        );
         let q = |x: f64| (std::f64::consts::FRAC_PI_2 * x).sin();
         sign * match c {
             c if c < 2.0 => 0.0,

@@ -92,7 +92,7 @@ fn a_study_refuses_a_stiffness_in_the_other_unit_at_its_key() {
         .unwrap()
         + 1;
     assert!(
-        stderr(&o).contains(&format!("study.toml:{line}:9: `stiffness.front` = 20000 N/deg per tyre is 1146000 N/rad, 254 times the front tyre's static load (4507 N) per rad, stiffer than any tyre")),
+        stderr(&o).contains(&format!("study.toml:{line}:9: `stiffness.front` = 20000 N/deg per tyre is 1145916 N/rad, 254 times the front tyre's static load (4507 N) per rad, stiffer than any tyre")),
         "{}",
         stderr(&o)
     );

@@ -173,7 +173,7 @@ fn a_sideslip_still_moving_is_not_called_steady_and_a_target_in_degrees_is_named
         .lines()
         .find(|l| l.contains("not reached on the map"))
         .unwrap_or_else(|| panic!("{out}"));
-    let g = |v: f64| format!("{}", handling::format::significant(v, 4));
+    let g = |v: f64| handling::format::significant(v, 4);
     assert!(
         line.contains(&format!("spans {} to {} rad", g(lo), g(hi))),
         "{line} ({lo}, {hi})"

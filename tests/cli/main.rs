@@ -476,6 +476,7 @@ mod trips_s96_metrics;
 mod trips_s96_real;
 mod trips_s96_study;
 mod trips_s97_ident;
+mod trips_s97_verdict;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

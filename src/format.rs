@@ -31,26 +31,40 @@ pub fn signed(v: f64, decimals: usize) -> String {
 }
 
 /// `v` with `digits` significant digits in fixed notation (no negative
-/// zero): slopes spanning 1e1–1e6 read naturally.
+/// zero): slopes spanning 1e1–1e6 read naturally. Whole digits beyond
+/// `digits` are rounded to zeros (`168000` for 168075.77 to 3 digits, as
+/// `1.68e7` is for 16807577): a number printed with more digits than it is
+/// said to carry claims a precision it does not have.
 pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return fixed(v, 0);
     }
     let magnitude = v.abs().log10().floor() as i64;
-    let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
-    fixed(v, decimals)
+    let decimals = digits as i64 - 1 - magnitude;
+    if decimals >= 0 {
+        return fixed(v, decimals as usize);
+    }
+    // Rounded at the `digits`-th digit, the rest written as zeros (the
+    // rounding may carry into a new leading digit: 99960 to 3 is 100000).
+    let scale = 10f64.powi((-decimals) as i32);
+    fixed((v / scale).round() * scale, 0)
 }
 
 /// `v` to `digits` significant digits as a reader reads it: plain
 /// decimals from 1e-4 to below 1e6 (`2.049`, not `2.049e0`; `0.000275`,
-/// not `0.0000`), an exponent beyond (`1.68e7`, `2.7e-11`, `4e305`: no
+/// not `0.0000`; `168000` to 3 digits, not `168076`: [`significant`]), an
+/// exponent beyond (`1.68e7`, `2.7e-11`, `4e305`: no
 /// number printed with hundreds of digits); zero as `0`.
 pub fn readable(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return fixed(v, 0);
     }
     if (1e-4..1e6).contains(&v.abs()) {
-        return significant(v, digits);
+        let s = significant(v, digits);
+        // 999960 to 3 digits rounds to 1e6: written as the values beyond.
+        if s.parse::<f64>().is_ok_and(|w| w.abs() < 1e6) {
+            return s;
+        }
     }
     let s = format!("{v:.*e}", digits.max(1) - 1);
     // `1.50e5` reads as `1.5e5`: trailing zeros of the mantissa dropped.
@@ -378,8 +392,9 @@ mod tests {
 
     #[test]
     fn significant_digits() {
-        assert_eq!(significant(-69_813.4, 4), "-69813");
+        assert_eq!(significant(-69_813.4, 4), "-69810");
         assert_eq!(significant(1234.56, 4), "1235");
+        assert_eq!(significant(99_960.0, 3), "100000");
         assert_eq!(significant(12.3456, 4), "12.35");
         assert_eq!(significant(-0.012345, 3), "-0.0123");
         assert_eq!(significant(0.0, 4), "0");
@@ -388,7 +403,10 @@ mod tests {
     #[test]
     fn readable_numbers_have_no_e0_and_no_300_digits() {
         assert_eq!(readable(2.04912, 4), "2.049");
-        assert_eq!(readable(168075.77, 3), "168076");
+        assert_eq!(readable(168075.77, 3), "168000");
+        assert_eq!(readable(123456.7, 3), "123000");
+        assert_eq!(readable(57296.0, 5), "57296");
+        assert_eq!(readable(999_960.0, 3), "1e6");
         assert_eq!(readable(1.68e7, 3), "1.68e7");
         assert_eq!(readable(1.5e7, 3), "1.5e7");
         assert_eq!(readable(2.7e-11, 2), "2.7e-11");

@@ -17,32 +17,35 @@ use serde::Serialize;
 /// adds a scatter along the candidates' difference that the floors do not
 /// hold, and runs that favour the look-alike show as scatter too: a
 /// prediction assumes the reference is the car, and this measures how far
-/// the campaign's runs bear that out. Each
-/// run's `z = (χ²_B − χ²_A − D²)/(2D)`, over the runs that separate the
-/// pair by at least [`CALIBRATING_D`], measures it: their RMS is 1 on
-/// such runs of noise alone. Their replays are the candidates' all-run
-/// fits, so the scatter is an in-sample one: a floor on what a new run
-/// shows.
+/// the campaign's runs bear that out. Each run's
+/// `z = (χ²_B − χ²_A − D²)/(2D)` is exactly `−e·Δ/(σ²D)`, the reference's
+/// residual `e` projected on the unit direction of the candidates'
+/// difference `Δ`: standard normal on noise alone whatever D is, so every
+/// run that separates the pair by [`CALIBRATING_D`] or more counts, and
+/// their RMS is 1 on noise alone. Their replays are the candidates'
+/// all-run fits, so the scatter is an in-sample one: a floor on what a new
+/// run shows.
 ///
-/// It widens the predictions only where the reference leaves a gap above
-/// the noise (its held-out error above the noise level: model-form error
-/// for the scatter to stand for). A campaign run's replays start from its
-/// first sample, whose noise starts both candidates off the car's state,
-/// and the transient that follows moves `χ²_B − χ²_A` by more than their
-/// difference (a sideslip a floor off is an ay several floors off for
-/// tenths of a second): on a car the reference matches to the noise (a
-/// linear car logged 60 ms late) that read as 4.7 times the noise's
-/// scatter and called a test "not recommended" that separated the pair on
-/// every run driven (5.8 ± 1.2 over eight seeds, the noise's ± 1).
+/// Each run is replayed from its settled start
+/// ([`super::separation::settled_start`]), as a driven run is. From its
+/// first sample, that sample's noise started both candidates off the
+/// car's state and the transients that followed read as separation and
+/// as scatter: a linear car logged 60 ms late, which the reference with
+/// its delay matches to the noise, read D = 3.8 and 4.7 times the noise's
+/// scatter from its first samples, D = 0.6 and 1.0 times settled. The
+/// scatter so measured needs no switch on the reference's gap: it widens
+/// every prediction by what it measures, 1 where the runs show noise
+/// alone. A model-form error shows in it only along the differences the
+/// campaign's runs show, which the summary says where the reference
+/// leaves a gap above the noise ([`ReferenceGap::model_form`]): the
+/// predictions then add the most that error can move a driven run
+/// ([`ReferenceGap::along`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Calibration {
     /// The runs measured (D of at least [`CALIBRATING_D`]).
     pub runs: usize,
     /// RMS of their `z`, at least 1 (1 where no run is measured).
     pub inflation: f64,
-    /// Whether it widens the predictions: the reference leaves a gap above
-    /// the noise ([`ReferenceGap::model_form`]).
-    pub applied: bool,
     /// The reference's held-out error and the noise level it is read
     /// against.
     pub reference: ReferenceGap,
@@ -50,13 +53,9 @@ pub struct Calibration {
 
 impl Calibration {
     /// The factor the noise's part of an uncertainty is widened by:
-    /// [`Calibration::inflation`] where applied, else 1.
+    /// [`Calibration::inflation`].
     pub fn widening(&self) -> f64 {
-        if self.applied {
-            self.inflation
-        } else {
-            1.0
-        }
+        self.inflation
     }
 }
 
@@ -77,12 +76,40 @@ impl ReferenceGap {
     pub fn model_form(&self) -> bool {
         self.heldout_error > self.noise_level
     }
+
+    /// The model-form error's mean square per residual sample beyond the
+    /// noise's, in the noise's units: `(J² − J_n²)/J_n²` where positive (J
+    /// is the RMS residual per sample in the channels' scales, J_n the
+    /// noise's alone), 0 where the reference matches to the noise.
+    pub fn excess(&self) -> f64 {
+        let (j, jn) = (self.heldout_error, self.noise_level);
+        if jn > 0.0 && j > jn {
+            (j * j - jn * jn) / (jn * jn)
+        } else {
+            0.0
+        }
+    }
+
+    /// The most that model-form error of [`ReferenceGap::excess`] can add
+    /// to a driven run's `z` along the candidates' difference, squared,
+    /// over a run of `samples` residuals: `z = −e·Δ/(σ²D)` is at most
+    /// `‖e‖/σ` (Cauchy–Schwarz), `√(excess·samples)` for the model-form part
+    /// of `e`. The campaign's runs measure `z` only along the differences
+    /// they show; a designed run that separates the pair far more may meet
+    /// the error where they do not (the book's proving ground: campaign
+    /// D = 0.5, driven runs 2.5–9.2 noise σ off a prediction the campaign's
+    /// scatter alone widened). An upper bound, smooth in the gap: 0 at
+    /// J ≤ J_n, so no switch.
+    pub fn along(&self, samples: usize) -> f64 {
+        self.excess() * samples as f64
+    }
 }
 
 /// The least separation D of a campaign run whose measurement calibrates
-/// the predictions ([`Calibration`]): below it the run says nothing of
-/// the candidates' difference.
-pub const CALIBRATING_D: f64 = 1.0;
+/// the predictions ([`Calibration`]), noise floors: a tenth of one, so
+/// that the candidates' difference `Δ` whose direction `z` is read along
+/// is the model's, not the replays' rounding.
+pub const CALIBRATING_D: f64 = 0.1;
 
 /// [`Calibration`] from each run's `(D², χ²_B − χ²_A)`, for a reference
 /// that leaves `gap`.
@@ -98,7 +125,6 @@ pub(crate) fn calibration(
     Calibration {
         runs: z.len(),
         inflation: if z.is_empty() { 1.0 } else { rms.max(1.0) },
-        applied: gap.model_form(),
         reference: gap,
     }
 }

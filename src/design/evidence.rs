@@ -166,12 +166,9 @@ pub fn measured(
     let (members, _) = sets(fitted, &req)?.remove(0);
     let base = fitted.base(c);
     let models = models(&members, &base)?;
-    let mut prepared = Prepared::new(run, c.settings.step, c.settings.sample_rate);
     // Started from the opening stretch's mean, not its first sample, as
     // the prediction's start terms assume.
-    if let Some((start, _)) = separation::settled_start(run) {
-        prepared.start = start;
-    }
+    let prepared = separation::prepared(run, c.settings.step, c.settings.sample_rate);
     let chi: Vec<f64> = models
         .iter()
         .map(|m| separation::chi_square(&prepared, m, &fitted.noise_floors))

@@ -257,7 +257,7 @@ fn assess(cx: &SetContext, d: &Designed) -> (f64, f64, f64, Worth) {
     let (campaign, calibration) = campaign_separation(cx);
     match cx.score(d) {
         Ok((mut s, _)) => {
-            cx.complete(&mut s, calibration.widening(), campaign);
+            cx.complete(&mut s, &calibration, campaign);
             let worth = s.worth.unwrap_or(Worth::WithinUncertainty);
             let nan = f64::NAN;
             (

@@ -290,7 +290,15 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     let base = fitted.base(c);
     let (mut family, left_out_by_limits) = family::family_and_left_out(&base, &limits);
     distinct_names(&mut family, c);
-    let runs = Prepared::campaign_runs(c);
+    // Each run replayed from its settled start, as a driven run is: from
+    // its first sample, that sample's noise starts the candidates apart
+    // and the transients that follow read as separation (a linear car
+    // logged 60 ms late: D = 3.8 from the first samples, 0.6 settled).
+    let runs: Vec<Prepared> = c
+        .runs
+        .iter()
+        .map(|r| separation::prepared(r, c.settings.step, c.settings.sample_rate))
+        .collect();
     let sets = sets(fitted, req)?
         .into_iter()
         .map(|(members, source)| {
@@ -433,10 +441,11 @@ impl SetContext<'_> {
     }
 
     /// The expected measured separation of `s` against its weakest pair,
-    /// its uncertainty (the noise's part widened by `inflation`,
-    /// [`Calibration`]), the runs the confounding rule needs and whether
+    /// its uncertainty (the noise's part widened by `calibration`'s
+    /// scatter and the reference's model-form bound,
+    /// [`ReferenceGap::along`]), the runs the confounding rule needs and whether
     /// it is worth driving against a campaign that separates by `campaign`.
-    fn complete(&self, s: &mut Scored, inflation: f64, campaign: f64) {
+    fn complete(&self, s: &mut Scored, calibration: &Calibration, campaign: f64) {
         let weakest = s
             .pairs
             .iter()
@@ -472,7 +481,11 @@ impl SetContext<'_> {
         s.parameter_uncertainty = Some(spread);
         s.expected = Some(signed_root(mean));
         s.noise_uncertainty = Some(root_uncertainty(mean, sd(1.0)));
-        s.uncertainty = Some(root_uncertainty(mean, sd(inflation * inflation)));
+        // The campaign's scatter, and the most the reference's model-form
+        // error can add along this run's difference, which the campaign's
+        // runs cannot measure where they barely separate the pair.
+        let g2 = calibration.widening().powi(2) + calibration.reference.along(run.count());
+        s.uncertainty = Some(root_uncertainty(mean, sd(g2)));
         s.worth = s
             .expected
             .zip(s.uncertainty)
@@ -517,7 +530,7 @@ fn design_set(
     ranked.truncate(req.top.max(1));
     let (campaign_separation, calibration) = campaign_separation(cx);
     for s in ranked.iter_mut().map(|(s, _)| s).chain(&mut named) {
-        cx.complete(s, calibration.widening(), campaign_separation);
+        cx.complete(s, &calibration, campaign_separation);
     }
     let best = ranked.first().map(|(_, p)| p.clone());
     let ranked: Vec<Scored> = ranked.into_iter().map(|(s, _)| s).collect();
@@ -536,7 +549,7 @@ fn design_set(
 }
 
 /// D of the reference against its weakest look-alike over all the
-/// campaign's runs (each replayed from its measured start), and how those
+/// campaign's runs (each replayed from its settled start), and how those
 /// runs measure it ([`Calibration`]).
 fn campaign_separation(cx: &SetContext) -> (f64, Calibration) {
     let floors = &cx.fitted.noise_floors;

@@ -103,6 +103,17 @@ pub fn separation(a: &Observed, b: &Observed, floors: &[f64; 3], logging: &Loggi
     }
 }
 
+/// `run` made ready for replays (step `step`, residuals at `rate` Hz)
+/// from its settled start ([`settled_start`]), not its first sample: how
+/// a design replays every run, the campaign's as a driven one.
+pub(crate) fn prepared(run: &MeasuredRun, step: f64, rate: f64) -> Prepared {
+    let mut p = Prepared::new(run, step, rate);
+    if let Some((start, _)) = settled_start(run) {
+        p.start = start;
+    }
+    p
+}
+
 /// The sum of squared residuals of `model` on `run` in units of the noise
 /// floors, over the measured channels.
 pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {
@@ -117,18 +128,23 @@ pub(crate) fn chi_square_of(run: &Prepared, obs: &Observed, floors: &[f64; 3]) -
     r.iter().map(|x| x * x).sum()
 }
 
-/// The start of a driven run's replay, settled: the mean sideslip (0
-/// where not measured) and yaw rate over its opening stretch of held
-/// steer (within [`SETTLED_STEER`] of its first value, at most
-/// [`super::family::LEAD`] s, the family's straight lead-in), and the
-/// samples averaged. A replay from one sample starts both candidates off
-/// by that sample's noise, and the transient that follows weighs on
-/// `χ²_B − χ²_A` as much as the manoeuvre (a delayed sensor holds it);
-/// the mean of `n` samples is off by `1/√n` of it. None: no two samples
-/// to average.
+/// The start of a run's replay, settled: the sideslip (0 where not
+/// measured) and yaw rate over its opening stretch of held steer (within
+/// [`SETTLED_STEER`] of its first value, at most [`super::family::LEAD`]
+/// s, the family's straight lead-in; masked samples left out), and the
+/// number of samples whose mean has the same noise. A replay from one
+/// sample starts both candidates off by that sample's noise, and the
+/// transient that follows weighs on `χ²_B − χ²_A` as much as the
+/// manoeuvre (a delayed sensor holds it); the mean of `n` samples is off
+/// by `1/√n` of it. Where a channel still moves across the stretch (a
+/// piece cut from a turn it is still settling into: its least-squares
+/// line departs from the mean at the first sample by more than
+/// [`DRIFT_SIGMAS`] of its own standard error), that line's value at the
+/// first sample is taken instead, whose noise is that of the mean of
+/// `n(n+1)/(4n−2)` samples. None: no two samples to average.
 pub fn settled_start(run: &MeasuredRun) -> Option<((f64, f64), usize)> {
     let (t0, d0) = (*run.t.first()?, *run.steer.first()?);
-    let n = run
+    let held = run
         .t
         .iter()
         .zip(&run.steer)
@@ -136,12 +152,62 @@ pub fn settled_start(run: &MeasuredRun) -> Option<((f64, f64), usize)> {
             **t - t0 <= super::family::LEAD + 1e-9 && (**d - d0).abs() <= SETTLED_STEER
         })
         .count();
-    if n < 2 {
+    let idx: Vec<usize> = (0..held).filter(|i| !run.masked.contains(i)).collect();
+    if idx.len() < 2 {
         return None;
     }
-    let mean = |v: &[f64]| v[..n].iter().sum::<f64>() / n as f64;
-    let beta = run.beta.as_deref().map_or(0.0, mean);
-    Some(((beta, mean(&run.yaw_rate)), n))
+    let t: Vec<f64> = idx.iter().map(|&i| run.t[i]).collect();
+    let beta = run
+        .beta
+        .as_deref()
+        .map(|b| start_of(&t, idx.iter().map(|&i| b[i])));
+    let r = start_of(&t, idx.iter().map(|&i| run.yaw_rate[i]));
+    let n = beta.map_or(r.1, |b| b.1.min(r.1));
+    Some(((beta.map_or(0.0, |b| b.0), r.0), n))
+}
+
+/// Standard errors of its own by which a channel's least-squares line
+/// over the opening stretch must depart from the stretch's mean, at the
+/// first sample, for the line to be taken ([`settled_start`]): a channel
+/// at rest departs by more than 3 in 0.3 % of runs.
+pub const DRIFT_SIGMAS: f64 = 3.0;
+
+/// A channel's value at the first of the times `t` ([`settled_start`]):
+/// the mean of `x`, or its least-squares line's value there where that
+/// departs from the mean by more than [`DRIFT_SIGMAS`] standard errors;
+/// and the samples whose mean has the same noise.
+fn start_of(t: &[f64], x: impl Iterator<Item = f64>) -> (f64, usize) {
+    let x: Vec<f64> = x.collect();
+    let n = x.len() as f64;
+    let (tm, xm) = (t.iter().sum::<f64>() / n, x.iter().sum::<f64>() / n);
+    let stt: f64 = t.iter().map(|v| (v - tm).powi(2)).sum();
+    let slope = match stt > 0.0 {
+        true => {
+            t.iter()
+                .zip(&x)
+                .map(|(a, b)| (a - tm) * (b - xm))
+                .sum::<f64>()
+                / stt
+        }
+        false => 0.0,
+    };
+    let at_first = xm + slope * (t[0] - tm);
+    // The line's residual variance; the departure at the first sample is
+    // slope·(t0 − t̄), of standard error s·|t0 − t̄|/√Stt.
+    let dof = (n - 2.0).max(1.0);
+    let s2 = t
+        .iter()
+        .zip(&x)
+        .map(|(a, b)| (b - xm - slope * (a - tm)).powi(2))
+        .sum::<f64>()
+        / dof;
+    let se = (s2 / stt.max(f64::MIN_POSITIVE)).sqrt() * (t[0] - tm).abs();
+    let k = x.len();
+    if k > 2 && (at_first - xm).abs() > DRIFT_SIGMAS * se && se.is_finite() {
+        (at_first, (k * (k + 1) / (4 * k - 2)).max(1))
+    } else {
+        (xm, k)
+    }
 }
 
 /// How far the steer may move in the opening stretch a driven run's start

@@ -326,11 +326,11 @@ fn a_separation_expected_near_zero_has_a_finite_uncertainty_and_a_large_one_the_
 }
 
 #[test]
-fn the_calibration_is_the_rms_of_the_runs_z_over_those_that_separate_by_a_noise_floor() {
+fn the_calibration_is_the_rms_of_the_runs_z_over_those_that_separate_by_a_tenth_of_a_noise_floor() {
     // Runs measuring D² + 2D·z: z = +2 and −2 give an RMS of 2; a run
-    // below one noise floor is left out, whatever it measures.
+    // below a tenth of a noise floor is left out, whatever it measures.
     let c = calibration(
-        [(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0), (0.25, 90.0)].into_iter(),
+        [(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0), (0.0081, 90.0)].into_iter(),
         GAP,
     );
     assert_eq!(c.runs, 2);
@@ -349,19 +349,40 @@ const GAP: ReferenceGap = ReferenceGap {
 };
 
 #[test]
-fn the_scatter_widens_only_where_the_reference_leaves_a_gap_above_the_noise() {
-    let runs = [(16.0, 16.0 + 16.0), (25.0, 25.0 - 20.0)];
+fn a_run_that_barely_separates_the_pair_measures_its_z_as_one_that_does() {
+    // z = (χ²_B − χ²_A − D²)/(2D) is the residual along the difference's
+    // unit direction: a run of D = 0.2 measuring z = 2 counts as one of
+    // D = 5 does, and the scatter widens whatever gap the reference leaves.
+    let runs = [(0.04, 0.04 + 0.8), (25.0, 25.0 - 20.0)];
     let c = calibration(runs.into_iter(), GAP);
-    assert!(c.applied && (c.widening() - 2.0).abs() < 1e-12, "{c:?}");
-    // The residuals at the noise (J 0.817 against 0.970, a linear car
-    // logged late): the same scatter measured, said, and not applied.
+    assert_eq!(c.runs, 2);
+    assert!((c.widening() - 2.0).abs() < 1e-12, "{c:?}");
     let matched = ReferenceGap {
         heldout_error: 0.817,
         noise_level: 0.970,
     };
-    let c = calibration(runs.into_iter(), matched);
-    assert!((c.inflation - 2.0).abs() < 1e-12, "{c:?}");
-    assert!(!c.applied && c.widening() == 1.0, "{c:?}");
+    assert!(!matched.model_form() && GAP.model_form());
+    assert_eq!(calibration(runs.into_iter(), matched).widening(), 2.0);
+}
+
+/// A run whose yaw rate still moves across its held-steer opening (a
+/// piece cut from a turn it settles into): its start is the line's value
+/// at the first sample, not the stretch's mean.
+#[test]
+fn a_start_still_moving_is_read_off_its_line_not_its_mean() {
+    let t: Vec<f64> = (0..100).map(|i| 0.01 * i as f64).collect();
+    let steer = vec![0.02; 100];
+    // 0.1 rad/s rising by 0.02 rad/s over the stretch, with ±0.0005 noise.
+    let yaw_rate: Vec<f64> = t
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| 0.1 + 0.02 * x + if i % 2 == 0 { 0.0005 } else { -0.0005 })
+        .collect();
+    let run = MeasuredRun::new("r.csv", t, vec![20.0; 100], steer, yaw_rate);
+    let ((_, r), n) = separation::settled_start(&run).unwrap();
+    assert!((r - 0.1).abs() < 0.001, "{r}");
+    // The line's value at an end: the noise of n(n+1)/(4n−2) samples' mean.
+    assert_eq!(n, 100 * 101 / 398);
 }
 
 #[test]

@@ -101,6 +101,7 @@ fn offsets(calibrated: &Calibrated) -> SensorOffsets {
             0.0
         },
         yaw_rate: of(Channel::YawRate),
+        beta: of(Channel::Beta),
     }
 }
 
@@ -379,7 +380,10 @@ fn roads(c: &Campaign, ctx: &Context) -> Vec<RoadGeometry> {
     c.runs
         .iter()
         .zip(&ctx.runs)
-        .map(|(m, r)| RoadGeometry::of(&r.name, m, offsets(&ctx.calibrated)))
+        .map(|(m, r)| {
+            let ahead = c.sensors.beta_ahead_of_accelerometer();
+            RoadGeometry::of(&r.name, m, offsets(&ctx.calibrated), ahead)
+        })
         .collect()
 }
 

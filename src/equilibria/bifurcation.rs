@@ -18,7 +18,9 @@
 //!   changes sign while det J > 0; bisected with Newton continuation to
 //!   zero and checked the same way. With a tyre lag the eigenvalues are the
 //!   full state's ([`super::lagged`]), so a Hopf point the lag brings is
-//!   found too.
+//!   found too. Where the count changes in the same interval (a fold), the
+//!   branches that persist across it (mutual nearest neighbours) are
+//!   tested the same way.
 //! - Zero eigenvalue: an equilibrium continued between neighbouring
 //!   conditions whose det J changes sign with no change in the count (the
 //!   straight-running car past its critical speed, where on linear tyres
@@ -227,6 +229,22 @@ fn fold_at(
         _ => return None,
     };
     let one_saddle = (kinds[0] == Kind::Saddle) != (kinds[1] == Kind::Saddle);
+    // At the fold itself det J = 0: the eigenvalues are 0 and trace J, so
+    // the saddle's partner is a node there, of the trace's sign, though a
+    // hair into the side with the pair it may already be a focus (eq_eff:
+    // eigenvalues 0 and 0.104 at the fold, a focus 1e-5 rad away, said
+    // "saddle + unstable-focus, verified" against the book's "one saddle
+    // and one node"). The words give the kinds at the fold.
+    let kinds = match (third, one_saddle, model.options.effects.lagged()) {
+        (None, true, false) => {
+            let node = match j[0][0] + j[1][1] < 0.0 {
+                true => Kind::StableNode,
+                false => Kind::UnstableNode,
+            };
+            kinds.map(|k| if k == Kind::Saddle { k } else { node })
+        }
+        _ => kinds,
+    };
     let res = f[0].abs().max(f[1].abs());
     Some(Bifurcation {
         kind: if third.is_some() {
@@ -415,6 +433,38 @@ fn zero_eigenvalue(
     })
 }
 
+/// Whether the leading eigenvalue's real part changes sign between two
+/// points of one branch with det J > 0 on both (no real eigenvalue
+/// through zero between them).
+fn hopf_between(x: &Equilibrium, y: &Equilibrium) -> bool {
+    let (sx, sy) = (x.stability, y.stability);
+    sx.determinant > 0.0 && sy.determinant > 0.0 && sx.eigenvalues[0].0 * sy.eigenvalues[0].0 < 0.0
+}
+
+/// The branches that persist across an interval where the count changes:
+/// pairs, one equilibrium from each side, each the other's nearest and
+/// within 0.1 rad and 0.1 rad/s of it. The pair that appears or vanishes
+/// at a fold has no partner on the other side, or a partner nearer to its
+/// twin, so it is left out.
+fn persisting<'a>(
+    ea: &'a [Equilibrium],
+    eb: &'a [Equilibrium],
+) -> Vec<(&'a Equilibrium, &'a Equilibrium)> {
+    let d = |x: &Equilibrium, y: &Equilibrium| {
+        distance([x.beta, x.yaw_rate], [y.beta, y.yaw_rate], [0.1, 0.1])
+    };
+    let nearest = |x: &Equilibrium, among: &'a [Equilibrium]| {
+        among.iter().min_by(|p, q| d(x, p).total_cmp(&d(x, q)))
+    };
+    ea.iter()
+        .filter_map(|x| {
+            let y = nearest(x, eb)?;
+            let back = nearest(y, ea)?;
+            (std::ptr::eq(back, x) && d(x, y) < 1.0).then_some((x, y))
+        })
+        .collect()
+}
+
 /// Every fold, Hopf and zero-eigenvalue point along a line of conditions ordered by `axis`,
 /// given the exact equilibria at each (all of them, not box-limited).
 pub(crate) fn locate(
@@ -428,17 +478,21 @@ pub(crate) fn locate(
         let (na, nb) = (ea.len(), eb.len());
         if na != nb {
             out.extend(folds(model, axis, ca, cb));
+            // A Hopf point on a branch that persists across the fold's
+            // interval (the soft-rear sedan's high-yaw branch turns stable
+            // at 0.0226 rad of steer, in the interval of a fold at 0.0245).
+            for (x, y) in persisting(ea, eb) {
+                if hopf_between(x, y) {
+                    out.extend(hopf(model, axis, ca, x, cb, y));
+                }
+            }
         } else {
             for (x, y) in ea.iter().zip(eb) {
                 let close = distance([x.beta, x.yaw_rate], [y.beta, y.yaw_rate], [0.1, 0.1]) < 1.0;
                 let (sx, sy) = (x.stability, y.stability);
                 if close && sx.determinant * sy.determinant < 0.0 {
                     out.extend(zero_eigenvalue(model, axis, ca, x, cb, y));
-                } else if close
-                    && sx.determinant > 0.0
-                    && sy.determinant > 0.0
-                    && sx.eigenvalues[0].0 * sy.eigenvalues[0].0 < 0.0
-                {
+                } else if close && hopf_between(x, y) {
                     out.extend(hopf(model, axis, ca, x, cb, y));
                 }
             }

@@ -23,7 +23,7 @@ use super::{
     describe, distance, polish_fast, residual_at_equilibrium_loads, Condition, Equilibrium,
     SearchBox,
 };
-use crate::optim::{Boundary, Pso, Topology};
+use crate::optim::{Boundary, Pso, PsoResult, Topology};
 use crate::vehicle::VehicleModel;
 use serde::{Deserialize, Serialize};
 
@@ -231,47 +231,9 @@ pub fn search(
         }
     };
     let mut indices: Vec<i32> = Vec::new();
-    let rho2 = settings.deflation_radius.powi(2);
     for round in 0..settings.rounds {
         stats.rounds = round + 1;
-        let known = found.clone();
-        // Deflation: near a known root the Newton step ≈ its distance d, so
-        // d·(1 + ρ²/d²) ≥ 2ρ keeps the swarm away from it.
-        let deflated = |x: &[f64]| {
-            let m: f64 = known
-                .iter()
-                .map(|k| {
-                    // The squared scaled distance, without hypot's square root.
-                    let d2 =
-                        ((x[0] - k[0]) / scale[0]).powi(2) + ((x[1] - k[1]) / scale[1]).powi(2);
-                    1.0 + rho2 / d2.max(1e-300)
-                })
-                .product();
-            fitness(x) * m
-        };
-        // Rounds past the minimum run only while new equilibria keep turning
-        // up or the index certificate fails: each brings a larger swarm.
-        let pso = Pso {
-            particles: settings.particles * (1 + round.saturating_sub(settings.min_rounds)),
-            iterations: settings.iterations,
-            boundary: Boundary::Wrap,
-            topology: Topology::Ring(1),
-            velocity_limit: 0.25,
-            seed: settings.seed.wrapping_add(round as u64),
-            ..Pso::default()
-        };
-        let seeds: Vec<Vec<f64>> = if round == 0 {
-            starts.iter().map(|s| s.to_vec()).collect()
-        } else {
-            Vec::new()
-        };
-        // The swarm flies over a box 10 % larger than the one reported, so an
-        // equilibrium just inside the edge is not lost to wrapping.
-        let wide = SearchBox {
-            beta_max: 1.1 * bx.beta_max,
-            yaw_rate_max: 1.1 * bx.yaw_rate_max,
-        };
-        let r = pso.minimize_from(deflated, &wide.bounds(), &seeds);
+        let r = fly_round(&fitness, scale, bx, settings, round, &found, starts);
         stats.evaluations += r.evaluations
             * match settings.fitness {
                 Fitness::Residual => 1,
@@ -300,6 +262,57 @@ pub fn search(
     let mut eqs: Vec<Equilibrium> = found.iter().map(|x| describe(model, c, *x)).collect();
     eqs.sort_by(|a, b| a.alpha_rear.total_cmp(&b.alpha_rear));
     (eqs, stats)
+}
+
+/// One round of the swarm: its fitness deflated away from the equilibria
+/// `known` (scaled by the box, `scale`), more particles in each round past
+/// the minimum, its own seed, `starts` seeding the first round only.
+fn fly_round(
+    fitness: &(impl Fn(&[f64]) -> f64 + Sync),
+    scale: [f64; 2],
+    bx: &SearchBox,
+    settings: &PsoSearch,
+    round: usize,
+    known: &[[f64; 2]],
+    starts: &[[f64; 2]],
+) -> PsoResult {
+    let rho2 = settings.deflation_radius.powi(2);
+    // Deflation: near a known root the Newton step ≈ its distance d, so
+    // d·(1 + ρ²/d²) ≥ 2ρ keeps the swarm away from it.
+    let deflated = |x: &[f64]| {
+        let m: f64 = known
+            .iter()
+            .map(|k| {
+                // The squared scaled distance, without hypot's square root.
+                let d2 = ((x[0] - k[0]) / scale[0]).powi(2) + ((x[1] - k[1]) / scale[1]).powi(2);
+                1.0 + rho2 / d2.max(1e-300)
+            })
+            .product();
+        fitness(x) * m
+    };
+    // Rounds past the minimum run only while new equilibria keep turning
+    // up or the index certificate fails: each brings a larger swarm.
+    let pso = Pso {
+        particles: settings.particles * (1 + round.saturating_sub(settings.min_rounds)),
+        iterations: settings.iterations,
+        boundary: Boundary::Wrap,
+        topology: Topology::Ring(1),
+        velocity_limit: 0.25,
+        seed: settings.seed.wrapping_add(round as u64),
+        ..Pso::default()
+    };
+    let seeds: Vec<Vec<f64>> = if round == 0 {
+        starts.iter().map(|s| s.to_vec()).collect()
+    } else {
+        Vec::new()
+    };
+    // The swarm flies over a box 10 % larger than the one reported, so an
+    // equilibrium just inside the edge is not lost to wrapping.
+    let wide = SearchBox {
+        beta_max: 1.1 * bx.beta_max,
+        yaw_rate_max: 1.1 * bx.yaw_rate_max,
+    };
+    pso.minimize_from(deflated, &wide.bounds(), &seeds)
 }
 
 /// The swarm's fitness at `x`: the residual scaled so that both components

@@ -280,6 +280,16 @@ pub enum ParamReason {
     /// A value a map axis gives twice.
     #[error("is given twice on this axis: every map point with it would be computed twice (give each value once)")]
     RepeatedValue,
+    /// A value an equilibrium sweep axis gives twice.
+    #[error("is given twice on this axis: every condition with it would be solved twice (give each value once)")]
+    RepeatedSweepValue,
+    /// A listed axis value not above the one before it: a sweep is traced
+    /// along its axes, bifurcations located between neighbours.
+    #[error("is below the value before it ({before}): give an axis's values in increasing order (a sweep is traced from each value to the next)")]
+    AxisOutOfOrder {
+        /// The value before it, as written.
+        before: f64,
+    },
     /// An effect the equilibrium analysis does not model.
     #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
     NotInEquilibrium,

@@ -4,6 +4,7 @@
 //! Every error names the file, and where there is one the line and column,
 //! the key or column, the value and why it is wrong. Inputs are only read.
 
+mod axis_order;
 pub mod campaign;
 mod columns;
 pub(crate) mod file_kind;

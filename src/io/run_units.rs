@@ -138,21 +138,8 @@ pub(super) fn check_ay(
         return Ok(());
     }
     let mut q: Vec<f64> = turning.iter().map(|&i| ay[i] / (speed[i] * r[i])).collect();
-    let holds = |(lo, hi): (f64, f64)| {
-        let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
-        inside as f64 >= AY_IN_G_SHARE * q.len() as f64
-    };
-    let (in_g, in_deg) = (holds(AY_IN_G), holds(YAW_IN_DEG));
-    let in_feet = holds(AY_IN_FEET);
-    let speed_unit = if holds(SPEED_IN_KMH) {
-        Some(SpeedUnit::Kmh)
-    } else if holds(SPEED_IN_MPH) {
-        Some(SpeedUnit::Mph)
-    } else {
-        None
-    };
-    let too_small = holds(YAW_TOO_SMALL);
-    if !in_g && !in_feet && speed_unit.is_none() && !in_deg && !too_small {
+    let bands = RatioBands::of(&q);
+    if !bands.any() {
         return Ok(());
     }
     // A ratio in a unit's band that a constant explains (a gyro's zero
@@ -164,57 +151,111 @@ pub(super) fn check_ay(
     }
     let m = median(&mut q);
     let i = turning[0];
-    if too_small {
-        // No logger writes a yaw rate 57 times too small: a yaw rate in
-        // rad/s declared in deg/s and converted.
-        let slip = UnitSlip::YawRateTooSmall {
-            value: r[i],
-            median: m,
-            samples: turning.len(),
+    let (column, slip) = bands.slip(i, m, turning.len(), speed, r, ay);
+    Err(c.error_at(path, i, column, slip.into()))
+}
+
+/// Which unit's band the ratios `ay/(speed·yaw_rate)` of the turning
+/// samples fall in ([`AY_IN_G_SHARE`] of them at least).
+struct RatioBands {
+    in_g: bool,
+    in_deg: bool,
+    in_feet: bool,
+    speed_unit: Option<SpeedUnit>,
+    too_small: bool,
+}
+
+impl RatioBands {
+    fn of(q: &[f64]) -> Self {
+        let holds = |(lo, hi): (f64, f64)| {
+            let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
+            inside as f64 >= AY_IN_G_SHARE * q.len() as f64
         };
-        return Err(c.error_at(path, i, "yaw_rate", slip.into()));
-    }
-    if in_deg {
-        // Below `MAX_YAW_RATE` in deg/s (a gentle run): ay says it.
-        let slip = UnitSlip::YawRateInDegPerS {
-            value: r[i],
-            median: m,
-            samples: turning.len(),
-            turning: TURNING,
+        let speed_unit = if holds(SPEED_IN_KMH) {
+            Some(SpeedUnit::Kmh)
+        } else if holds(SPEED_IN_MPH) {
+            Some(SpeedUnit::Mph)
+        } else {
+            None
         };
-        return Err(c.error_at(path, i, "yaw_rate", slip.into()));
+        RatioBands {
+            in_g: holds(AY_IN_G),
+            in_deg: holds(YAW_IN_DEG),
+            in_feet: holds(AY_IN_FEET),
+            speed_unit,
+            too_small: holds(YAW_TOO_SMALL),
+        }
     }
-    if let Some(unit) = speed_unit {
-        // ay and yaw rate agree with each other's units (checked above and
-        // by their sizes); speed × yaw rate 3.6 (2.237) times ay is a speed
-        // in km/h (mph) whose values stay below any car's top speed in m/s.
-        let slip = UnitSlip::SpeedPerHour {
-            unit,
-            value: speed[i],
-            median: m,
-            samples: turning.len(),
-            turning: TURNING,
-        };
-        return Err(c.error_at(path, i, "speed", slip.into()));
+
+    /// Whether any band holds.
+    fn any(&self) -> bool {
+        self.in_g || self.in_feet || self.speed_unit.is_some() || self.in_deg || self.too_small
     }
-    if in_feet {
-        let slip = UnitSlip::AyInFeet {
+
+    /// The column at fault and its unit slip, located at the first turning
+    /// sample `i`, with the ratios' median `m` over `samples` samples: the
+    /// yaw rate's bands first, then the speed's, then ay's.
+    fn slip(
+        &self,
+        i: usize,
+        m: f64,
+        samples: usize,
+        speed: &[f64],
+        r: &[f64],
+        ay: &[f64],
+    ) -> (&'static str, UnitSlip) {
+        if self.too_small {
+            // No logger writes a yaw rate 57 times too small: a yaw rate in
+            // rad/s declared in deg/s and converted.
+            let slip = UnitSlip::YawRateTooSmall {
+                value: r[i],
+                median: m,
+                samples,
+            };
+            return ("yaw_rate", slip);
+        }
+        if self.in_deg {
+            // Below `MAX_YAW_RATE` in deg/s (a gentle run): ay says it.
+            let slip = UnitSlip::YawRateInDegPerS {
+                value: r[i],
+                median: m,
+                samples,
+                turning: TURNING,
+            };
+            return ("yaw_rate", slip);
+        }
+        if let Some(unit) = self.speed_unit {
+            // ay and yaw rate agree with each other's units (checked above and
+            // by their sizes); speed × yaw rate 3.6 (2.237) times ay is a speed
+            // in km/h (mph) whose values stay below any car's top speed in m/s.
+            let slip = UnitSlip::SpeedPerHour {
+                unit,
+                value: speed[i],
+                median: m,
+                samples,
+                turning: TURNING,
+            };
+            return ("speed", slip);
+        }
+        if self.in_feet {
+            let slip = UnitSlip::AyInFeet {
+                value: ay[i],
+                expected: speed[i] * r[i],
+                median: m,
+                samples,
+                turning: TURNING,
+            };
+            return ("ay", slip);
+        }
+        let slip = UnitSlip::AyInG {
             value: ay[i],
             expected: speed[i] * r[i],
             median: m,
-            samples: turning.len(),
+            samples,
             turning: TURNING,
         };
-        return Err(c.error_at(path, i, "ay", slip.into()));
+        ("ay", slip)
     }
-    let slip = UnitSlip::AyInG {
-        value: ay[i],
-        expected: speed[i] * r[i],
-        median: m,
-        samples: turning.len(),
-        turning: TURNING,
-    };
-    Err(c.error_at(path, i, "ay", slip.into()))
 }
 
 /// The largest sideslip of a car turning at yaw rate `r` and speed `u`

@@ -4,6 +4,7 @@
 //! Stiffness values are per tyre in the file's `unit` (`N/deg` or `N/rad`),
 //! converted to N/rad on reading.
 
+use super::axis_order::{disorder, Disorder};
 use super::scenario::{
     resolve_scenario, ManoeuvreSpec, Road, Scenario, ScenarioFile, SimulationSettings, TyreRefs,
 };
@@ -66,20 +67,6 @@ impl Axis {
             _ => Vec::new(),
         })
     }
-}
-
-/// The first value of `v` that an earlier one repeats, with its index:
-/// sorted once (an axis may hold up to a million values), not compared
-/// pairwise.
-fn repeated(v: &[f64]) -> Option<(usize, f64)> {
-    let mut order: Vec<usize> = (0..v.len()).collect();
-    order.sort_by(|&a, &b| v[a].total_cmp(&v[b]).then(a.cmp(&b)));
-    order
-        .windows(2)
-        .filter(|w| v[w[0]] == v[w[1]])
-        .map(|w| w[1])
-        .min()
-        .map(|i| (i, v[i]))
 }
 
 /// The map grid.
@@ -365,12 +352,18 @@ impl Values<'_> {
                 return Err(self.error(ParamError::without_value(&format!("{key}.count"), why)));
             }
         }
-        if let Some((i, x)) = repeated(&v) {
+        // One rule for every sweep axis (`super::axis_order`): an
+        // unsorted front list traced a target curve of 19 points for 10.
+        if let Some(d) = disorder(&v) {
+            let (i, why) = match d {
+                Disorder::Repeated { at } => (at, ParamReason::RepeatedValue),
+                Disorder::Descending { at, before } => (at, ParamReason::AxisOutOfOrder { before }),
+            };
             let at = match axis {
                 Axis::List(_) => format!("{key}[{i}]"),
                 _ => key.to_string(),
             };
-            return Err(self.error(ParamError::new(&at, x, ParamReason::RepeatedValue)));
+            return Err(self.error(ParamError::new(&at, v[i], why)));
         }
         if v.is_empty() {
             return Err(self.error(ParamError::without_value(

@@ -3,6 +3,7 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
+use super::axis_order::{disorder, range_value, Disorder};
 use super::file_kind::not_this_toml;
 use super::limits::{road_wheel_steer, road_wheel_steer_degrees, MAX_SPEED};
 use super::tables::{resolve_model, ResolvedModel, TyreRefs, MAX_ROAD_FRICTION};
@@ -64,16 +65,32 @@ pub struct SweepAxes {
     pub speed: Values,
 }
 
+/// One value of a phase portrait's condition: a number (SI) or
+/// `{ value, unit }` in the units the sweep's axes take (`deg`, `km/h`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum PortraitValue {
+    /// SI.
+    Si(f64),
+    /// With a unit.
+    Unit {
+        /// The value in `unit`.
+        value: f64,
+        /// `rad`/`deg` (steer), `m/s`/`km/h` (speed).
+        unit: String,
+    },
+}
+
 /// A condition for a phase portrait.
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PortraitSpec {
-    /// Steer, rad.
-    pub steer: f64,
+    /// Steer, rad (or `{ value, unit = "deg" }`).
+    pub steer: PortraitValue,
     /// Friction scale.
-    pub friction: f64,
-    /// Speed, m/s.
-    pub speed: f64,
+    pub friction: PortraitValue,
+    /// Speed, m/s (or `{ value, unit = "km/h" }`).
+    pub speed: PortraitValue,
 }
 
 /// Report options.
@@ -166,29 +183,41 @@ pub struct Sweep {
     pub portraits: Vec<Condition>,
     /// Files read.
     pub inputs: Vec<PathBuf>,
+    /// What the terminal says of the file before the results (a phase
+    /// portrait away from the swept conditions).
+    pub notes: Vec<String>,
+}
+
+/// The factor to SI of `unit` on `axis`, refused at `{key}.unit` where
+/// the axis does not take it.
+fn unit_scale(
+    src: &TomlSource,
+    key: &str,
+    axis: &str,
+    unit: Option<&str>,
+) -> Result<f64, InputError> {
+    Ok(match (axis, unit) {
+        (_, None) => 1.0,
+        ("steer", Some("rad")) | ("speed", Some("m/s")) => 1.0,
+        ("steer", Some("deg")) => std::f64::consts::PI / 180.0,
+        ("speed", Some("km/h")) => 1.0 / 3.6,
+        // At the `unit` key, quoting the text (a unit is no number:
+        // `= NaN` quoted none the user wrote).
+        (_, Some(u)) => {
+            let why = ParamReason::UnknownSweepUnit {
+                unit: u.to_string(),
+            };
+            let e = ParamError::without_value(&format!("{key}.unit"), why);
+            return Err(param_error(src, None, e));
+        }
+    })
 }
 
 fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputError> {
     let key = format!("sweep.{axis}");
     let err =
         |value: f64, why: ParamReason| param_error(src, None, ParamError::new(&key, value, why));
-    let scale = |unit: &Option<String>| -> Result<f64, InputError> {
-        Ok(match (axis, unit.as_deref()) {
-            (_, None) => 1.0,
-            ("steer", Some("rad")) | ("speed", Some("m/s")) => 1.0,
-            ("steer", Some("deg")) => std::f64::consts::PI / 180.0,
-            ("speed", Some("km/h")) => 1.0 / 3.6,
-            // At the `unit` key, quoting the text (a unit is no number:
-            // `= NaN` quoted none the user wrote).
-            (_, Some(u)) => {
-                let why = ParamReason::UnknownSweepUnit {
-                    unit: u.to_string(),
-                };
-                let e = ParamError::without_value(&format!("{key}.unit"), why);
-                return Err(param_error(src, None, e));
-            }
-        })
-    };
+    let scale = |unit: &Option<String>| unit_scale(src, &key, axis, unit.as_deref());
     // The values as the file gives them, and the factor to SI.
     let (given, k) = match v {
         Values::One(x) => (vec![*x], 1.0),
@@ -212,7 +241,7 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
             if n > 1_000_000 {
                 return Err(err(r.step, ParamReason::TooManyValues));
             }
-            ((0..=n).map(|i| r.from + i as f64 * r.step).collect(), k)
+            ((0..=n).map(|i| range_value(r.from, r.step, i)).collect(), k)
         }
     };
     if given.is_empty() {
@@ -222,6 +251,21 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         };
         let e = ParamError::without_value(&at, ParamReason::NoValues);
         return Err(param_error(src, None, e));
+    }
+    // One rule for every sweep axis (`super::axis_order`): the sweep is
+    // traced from each value to the next, so an unsorted speed list
+    // reported its critical speed three times, stability reversed, and a
+    // repeated value solved its conditions twice.
+    if let Some(d) = disorder(&given) {
+        let (i, why) = match d {
+            Disorder::Repeated { at } => (at, ParamReason::RepeatedSweepValue),
+            Disorder::Descending { at, before } => (at, ParamReason::AxisOutOfOrder { before }),
+        };
+        let at = match v {
+            Values::Units(_) => format!("{key}.values[{i}]"),
+            _ => format!("{key}[{i}]"),
+        };
+        return Err(param_error(src, None, ParamError::new(&at, given[i], why)));
     }
     for &x in &given {
         // The steer keeps to the road-wheel limit every manoeuvre keeps to
@@ -247,8 +291,9 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
 }
 
 /// The conditions of the `[report] phase_portraits` entries, each value
-/// checked as a sweep's is (in SI: an entry has no unit key), at its own
-/// key: a portrait at a negative speed or at 30 rad of steer was drawn.
+/// in SI or with a unit the sweep's axis takes, checked as a sweep's is,
+/// at its own key: a portrait at a negative speed or at 30 rad of steer
+/// was drawn.
 fn portrait_conditions(
     src: &TomlSource,
     specs: &[PortraitSpec],
@@ -258,19 +303,33 @@ fn portrait_conditions(
         .enumerate()
         .map(|(i, p)| {
             let key = |name: &str| format!("report.phase_portraits[{i}].{name}");
-            let speed = &key("speed");
-            let friction = &key("friction");
-            let checked = road_wheel_steer(&key("steer"), p.steer)
-                .and_then(|()| match p.speed {
-                    x if x <= 0.0 => ParamError::positive(speed, x),
-                    x => {
-                        ParamError::in_range(speed, x, MIN_SPEED, MAX_SPEED, Limit::ManoeuvreSpeed)
-                    }
-                })
-                .and_then(|()| match p.friction {
-                    x if x <= 0.0 => ParamError::positive(friction, x),
+            let si = |axis: &str, v: &PortraitValue| match v {
+                PortraitValue::Si(x) => Ok(*x),
+                PortraitValue::Unit { value, unit } => {
+                    Ok(value * unit_scale(src, &key(axis), axis, Some(unit))?)
+                }
+            };
+            let (steer, friction, speed) = (
+                si("steer", &p.steer)?,
+                si("friction", &p.friction)?,
+                si("speed", &p.speed)?,
+            );
+            let (speed_key, friction_key) = (&key("speed"), &key("friction"));
+            let checked = road_wheel_steer(&key("steer"), steer)
+                .and_then(|()| match speed {
+                    x if x <= 0.0 => ParamError::positive(speed_key, x),
                     x => ParamError::in_range(
-                        friction,
+                        speed_key,
+                        x,
+                        MIN_SPEED,
+                        MAX_SPEED,
+                        Limit::ManoeuvreSpeed,
+                    ),
+                })
+                .and_then(|()| match friction {
+                    x if x <= 0.0 => ParamError::positive(friction_key, x),
+                    x => ParamError::in_range(
+                        friction_key,
                         x,
                         0.0,
                         MAX_ROAD_FRICTION,
@@ -279,9 +338,65 @@ fn portrait_conditions(
                 });
             checked.map_err(|e| param_error(src, None, e))?;
             Ok(Condition {
-                steer: p.steer,
-                friction: p.friction,
-                speed: p.speed,
+                steer,
+                friction,
+                speed,
+            })
+        })
+        .collect()
+}
+
+/// A note for each portrait away from the swept conditions (drawn there
+/// all the same), with the unit slip it may be: a speed of 70 given for
+/// 70 km/h was drawn at 252 km/h without a word.
+fn portrait_notes(grid: &Grid, portraits: &[Condition]) -> Vec<String> {
+    let swept = |v: f64, on: &[f64]| {
+        on.iter()
+            .any(|&x| (x - v).abs() <= 1e-9 * x.abs().max(1e-9))
+    };
+    // Six significant digits, trailing zeros dropped: 70 m/s = 252 km/h.
+    let g = |v: f64| {
+        let s = crate::format::significant(v, 6);
+        match s.contains('.') {
+            true => s.trim_end_matches('0').trim_end_matches('.').to_string(),
+            false => s,
+        }
+    };
+    portraits
+        .iter()
+        .enumerate()
+        .filter_map(|(i, c)| {
+            let mut off = Vec::new();
+            if !swept(c.steer, &grid.steer) {
+                let hint = match swept(c.steer.to_radians(), &grid.steer) {
+                    true => format!(
+                        " = {}° — deg meant? (write `steer = {{ value = {}, unit = \"deg\" }}`)",
+                        g(c.steer.to_degrees()),
+                        g(c.steer)
+                    ),
+                    false => String::new(),
+                };
+                off.push(format!("steer {} rad{hint}", g(c.steer)));
+            }
+            if !swept(c.friction, &grid.friction) {
+                off.push(format!("friction {}", g(c.friction)));
+            }
+            if !swept(c.speed, &grid.speed) {
+                let hint = match swept(c.speed / 3.6, &grid.speed) {
+                    true => format!(
+                        " = {} km/h — km/h meant? (write `speed = {{ value = {}, unit = \"km/h\" }}`)",
+                        g(c.speed * 3.6),
+                        g(c.speed)
+                    ),
+                    false => String::new(),
+                };
+                off.push(format!("speed {} m/s{hint}", g(c.speed)));
+            }
+            (!off.is_empty()).then(|| {
+                format!(
+                    "phase portrait {i} is not at a swept condition: {}; drawn there all the same",
+                    off.join(", ")
+                )
             })
         })
         .collect()
@@ -390,6 +505,7 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     } else {
         portrait_conditions(&src, &f.report.phase_portraits)?
     };
+    let notes = portrait_notes(&grid, &portraits);
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
             .map_or("sweep".into(), |s| s.to_string_lossy().into_owned())
@@ -403,5 +519,6 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
         report: f.report,
         portraits,
         inputs: vec![path.to_path_buf(), front_path, rear_path],
+        notes,
     })
 }

@@ -45,6 +45,10 @@ pub struct FleetRow {
     pub statement: String,
     /// Whether it failed (not read or not diagnosed).
     pub failed: bool,
+    /// The folder its run files were read from, canonical: campaigns
+    /// that share it are one campaign's runs, counted once.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub runs_folder: Option<String>,
 }
 
 /// An effect across the fleet.
@@ -185,21 +189,14 @@ pub fn run_batch(
         let done = diagnose::run(&all[i], Some(&to)).and_then(|r| r.write().map(|()| r));
         match done {
             Ok(r) => {
-                rows.push(row_of(&name, &r));
+                let runs_folder = runs_folder_of(&all[i]);
+                rows.push(FleetRow {
+                    runs_folder,
+                    ..row_of(&name, &r)
+                });
                 reports.push(r);
             }
-            Err(e) => rows.push(FleetRow {
-                campaign: name,
-                runs: 0,
-                verdict: Vec::new(),
-                kind: None,
-                heldout_error_before: None,
-                heldout_error_after: None,
-                noise_level: None,
-                best: None,
-                statement: e.to_string(),
-                failed: true,
-            }),
+            Err(e) => rows.push(failed_row(name, &e)),
         }
     }
     if whole {
@@ -207,6 +204,37 @@ pub fn run_batch(
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));
     }
+    let outcome = shard_outcome(dir, &all, &out_dir, shard, owned, rows)?;
+    Ok((reports, outcome))
+}
+
+/// The fleet row of a campaign `name` whose diagnosis failed with `e`.
+fn failed_row(name: String, e: &Error) -> FleetRow {
+    FleetRow {
+        campaign: name,
+        runs: 0,
+        verdict: Vec::new(),
+        kind: None,
+        heldout_error_before: None,
+        heldout_error_after: None,
+        noise_level: None,
+        best: None,
+        statement: e.to_string(),
+        failed: true,
+        runs_folder: None,
+    }
+}
+
+/// Writes shard `shard`'s file (the campaigns `owned` of `all` in `dir`,
+/// their fleet rows `rows`) into `out_dir` for `handling merge`.
+fn shard_outcome(
+    dir: &Path,
+    all: &[PathBuf],
+    out_dir: &Path,
+    shard: Shard,
+    owned: Vec<usize>,
+    rows: Vec<FleetRow>,
+) -> Result<BatchOutcome, Error> {
     let file = out_dir.join(shard.file_name());
     let names: Vec<String> = all.iter().map(|p| name_of(p)).collect();
     write_shard(
@@ -224,17 +252,14 @@ pub fn run_batch(
             results: rows,
         },
     )?;
-    Ok((
-        reports,
-        BatchOutcome::Shard(ShardReport {
-            job: ShardJob::Diagnose,
-            shard,
-            units: all.len(),
-            owned: owned.len(),
-            conditions: owned.len(),
-            path: file,
-        }),
-    ))
+    Ok(BatchOutcome::Shard(ShardReport {
+        job: ShardJob::Diagnose,
+        shard,
+        units: all.len(),
+        owned: owned.len(),
+        conditions: owned.len(),
+        path: file,
+    }))
 }
 
 /// What a batch run wrote last: the fleet table, or a shard of it.
@@ -283,20 +308,42 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
             .and_then(|b| Some((*b.effects.first()?, b.reduction_percent))),
         statement: d.verdict.statement(),
         failed: false,
+        runs_folder: None,
     }
+}
+
+/// The canonical folder of a campaign's run files (`None`: it has none,
+/// or it does not load). Three campaign files naming one `runs` folder
+/// were counted as three campaigns agreeing on a verdict.
+fn runs_folder_of(campaign: &Path) -> Option<String> {
+    let c = crate::io::campaign::load_campaign(campaign).ok()?;
+    let folder = c.runs_folder?.canonicalize().ok()?;
+    Some(folder.display().to_string())
+}
+
+/// Whether row `i` is the first of the rows reading its run files (a row
+/// with no known folder always is).
+fn first_of_its_runs(rows: &[FleetRow], i: usize) -> bool {
+    let r = &rows[i];
+    r.runs_folder.is_none() || rows[..i].iter().all(|p| p.runs_folder != r.runs_folder)
 }
 
 /// The report of the rows: the effects that recur, most verdicts first.
 fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf, lock: OutputLock) -> FleetReport {
+    // Campaigns reading the same run files count once.
+    let distinct: Vec<&FleetRow> = (0..campaigns.len())
+        .filter(|&i| first_of_its_runs(&campaigns, i))
+        .map(|i| &campaigns[i])
+        .collect();
     let recurring = EffectKind::ALL
         .into_iter()
         .map(|effect| Recurring {
             effect,
-            verdicts: campaigns
+            verdicts: distinct
                 .iter()
                 .filter(|r| r.verdict.contains(&effect))
                 .count(),
-            best: campaigns
+            best: distinct
                 .iter()
                 .filter(|r| r.best.is_some_and(|b| b.0 == effect))
                 .count(),
@@ -385,7 +432,7 @@ impl FleetReport {
                 ]
             })
             .collect();
-        let n = self.diagnosed();
+        let n = self.distinct_diagnosed();
         let recurring: Vec<Vec<Cell>> = self
             .recurring
             .iter()
@@ -442,6 +489,37 @@ impl FleetReport {
         })
     }
 
+    /// The campaigns diagnosed, those reading the same run files counted
+    /// once: what the recurring effects are counted out of.
+    fn distinct_diagnosed(&self) -> usize {
+        let rows = &self.campaigns;
+        (0..rows.len())
+            .filter(|&i| !rows[i].failed && first_of_its_runs(rows, i))
+            .count()
+    }
+
+    /// A note for each set of campaigns that read the same run files.
+    fn shared_runs_notes(&self) -> Vec<String> {
+        let rows = &self.campaigns;
+        (0..rows.len())
+            .filter(|&i| first_of_its_runs(rows, i))
+            .filter_map(|i| {
+                let folder = rows[i].runs_folder.as_ref()?;
+                let same: Vec<&str> = rows
+                    .iter()
+                    .filter(|r| r.runs_folder.as_ref() == Some(folder))
+                    .map(|r| r.campaign.as_str())
+                    .collect();
+                (same.len() > 1).then(|| {
+                    format!(
+                        "  note: {} read the same run files ({folder}): one campaign's runs, counted once below",
+                        same.join(", ")
+                    )
+                })
+            })
+            .collect()
+    }
+
     /// The table in lines of text.
     pub fn summary(&self) -> Vec<String> {
         let (n, diagnosed) = (self.campaigns.len(), self.diagnosed());
@@ -472,8 +550,10 @@ impl FleetReport {
                 )
             });
         }
-        // Out of the campaigns diagnosed: a failed one has no verdict.
-        let n = diagnosed;
+        // Out of the campaigns diagnosed: a failed one has no verdict; of
+        // those reading the same run files, one.
+        out.extend(self.shared_runs_notes());
+        let n = self.distinct_diagnosed();
         for e in &self.recurring {
             out.push(format!(
                 "  {}: in the verdict of {} of {n} diagnosed campaigns, the best single candidate in {} of {n}",

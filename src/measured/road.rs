@@ -69,8 +69,13 @@ pub enum AngleSource {
     /// The kinematic mismatch of the lateral channels, `a_y − u·r −
     /// d(u·β)/dt`.
     LateralKinematicsWithSideslip,
-    /// The mismatch of `a_x` and the speed's derivative.
+    /// The mismatch of `a_x` and the speed's derivative, without the
+    /// lateral velocity's `v·r` (no `beta` column).
     LongitudinalKinematics,
+    /// The mismatch of `a_x` and the body-axis kinematics, `a_x − u̇ +
+    /// u·β·r` (the sideslip at the accelerometer; a sideslip measured
+    /// elsewhere moved there).
+    LongitudinalKinematicsWithSideslip,
 }
 
 impl AngleSource {
@@ -81,6 +86,7 @@ impl AngleSource {
             AngleSource::LateralKinematics => "estimated from ay − u·r",
             AngleSource::LateralKinematicsWithSideslip => "estimated from ay − u·r − d(u·β)/dt",
             AngleSource::LongitudinalKinematics => "estimated from ax − du/dt",
+            AngleSource::LongitudinalKinematicsWithSideslip => "estimated from ax − du/dt + u·β·r",
         }
     }
 }
@@ -115,6 +121,9 @@ pub struct SensorOffsets {
     pub ay: f64,
     /// Yaw-rate offset, rad/s.
     pub yaw_rate: f64,
+    /// Sideslip offset, rad (removed before the grade is estimated; a
+    /// straight's mean sideslip, where no bank is logged under it).
+    pub beta: f64,
 }
 
 /// The road under one run.
@@ -133,8 +142,10 @@ pub struct RoadGeometry {
 
 impl RoadGeometry {
     /// The road under `run`, named `name`, a bank estimated with the
-    /// sensor `offsets` removed.
-    pub fn of(name: &str, run: &MeasuredRun, offsets: SensorOffsets) -> Self {
+    /// sensor `offsets` removed; `beta_ahead` m: how far ahead of the
+    /// accelerometer the sideslip is measured (0 where one unit gives
+    /// both), for the grade's lateral-velocity term.
+    pub fn of(name: &str, run: &MeasuredRun, offsets: SensorOffsets, beta_ahead: f64) -> Self {
         let estimated = run.bank.is_none() && run.ay.is_some();
         let bank = match (&run.bank, &run.ay) {
             (Some(b), _) => profile(AngleSource::Measured, b.clone(), &[]),
@@ -151,14 +162,19 @@ impl RoadGeometry {
         };
         let grade = run.ax.as_ref().and_then(|ax| {
             profile(
-                AngleSource::LongitudinalKinematics,
-                grade_estimate(run, ax),
+                if run.beta.is_some() {
+                    AngleSource::LongitudinalKinematicsWithSideslip
+                } else {
+                    AngleSource::LongitudinalKinematics
+                },
+                grade_estimate(run, ax, offsets, beta_ahead),
                 &run.masked,
             )
         });
         Self {
             run: name.to_string(),
-            offsets_removed: (estimated && offsets != SensorOffsets::default()).then_some(offsets),
+            offsets_removed: (estimated && (offsets.ay, offsets.yaw_rate) != (0.0, 0.0))
+                .then_some(offsets),
             bank,
             grade,
         }
@@ -194,9 +210,13 @@ impl RoadGeometry {
                 " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
             }
             AngleSource::LongitudinalKinematics
+            | AngleSource::LongitudinalKinematicsWithSideslip
                 if p.p05.abs().max(p.p95.abs()) > PLAUSIBLE_GRADE =>
             {
                 " (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade, the body's pitch, a lag between the speed and ax, wheel slip in the speed; reported, not used)"
+            }
+            AngleSource::LongitudinalKinematics => {
+                " (no beta column: the lateral velocity's v·r is left out, so a corner reads as grade)"
             }
             _ => "",
         };
@@ -260,10 +280,29 @@ fn rate(t: &[f64], x: &[f64], k: usize) -> f64 {
     }
 }
 
-/// `asin((a_x − u̇)/g)` smoothed, rad per sample.
-pub(crate) fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
+/// `asin((a_x − u̇ + v·r + x_a·r²)/g)` smoothed, rad per sample: the
+/// body-axis kinematics of an accelerometer `x_a` ahead of the centre of
+/// gravity, `a_x = u̇ − v·r − x_a·r² + g·sin γ` (ISO 8855; `v` the centre
+/// of gravity's lateral velocity). A sideslip measured `x_β` ahead of it
+/// gives `u·tan β = v + x_β·r`, so `v·r + x_a·r² = u·tan β·r − (x_β −
+/// x_a)·r²`, and where one unit measures both the positions cancel.
+/// Without a `beta` column `v·r` is left out (`a_x − u̇`). The yaw rate's
+/// and the sideslip's `offsets` are removed first; `beta_ahead` is
+/// `x_β − x_a`, m.
+pub(crate) fn grade_estimate(
+    run: &MeasuredRun,
+    ax: &[f64],
+    offsets: SensorOffsets,
+    beta_ahead: f64,
+) -> Vec<f64> {
     let raw: Vec<f64> = (0..run.t.len())
-        .map(|k| (ax[k] - rate(&run.t, &run.speed, k)) / G)
+        .map(|k| {
+            let lateral = run.beta.as_ref().map_or(0.0, |b| {
+                let r = run.yaw_rate[k] - offsets.yaw_rate;
+                run.speed[k] * (b[k] - offsets.beta).tan() * r - beta_ahead * r * r
+            });
+            (ax[k] - rate(&run.t, &run.speed, k) + lateral) / G
+        })
         .collect();
     // `ax` is not among the masked response channels: only the spans the
     // cleaning masked in the others are left out with them.
@@ -334,240 +373,5 @@ fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AnglePr
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_angle_that_rounds_to_zero_is_said_without_a_sign() {
-        assert_eq!(deg(-1e-5), "0.0");
-        assert_eq!(deg(-0.01), "-0.6");
-        assert_eq!(deg(0.1), "5.7");
-    }
-
-    /// A steady left turn (u = 25 m/s, r = 0.2 rad/s) whose road banks from
-    /// 0 to −10° and back (left edge lower), on a 3 % uphill grade while the
-    /// car speeds up at 1 m/s²: what the accelerometers of a car that
-    /// neither rolls nor pitches read, exactly.
-    fn run() -> (MeasuredRun, Vec<f64>) {
-        let n = 1001;
-        let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
-        let bank: Vec<f64> = t
-            .iter()
-            .map(|&t| -10f64.to_radians() * (std::f64::consts::PI * t / 10.0).sin())
-            .collect();
-        let grade = 0.03f64.atan();
-        let speed: Vec<f64> = t.iter().map(|&t| 25.0 + t).collect();
-        let r = 0.2;
-        let ay: Vec<f64> = (0..n).map(|k| speed[k] * r + G * bank[k].sin()).collect();
-        let ax = vec![1.0 + G * grade.sin(); n];
-        (
-            MeasuredRun::new("turn.csv", t, speed, vec![0.02; n], vec![r; n])
-                .with_ay(ay)
-                .with_ax(ax),
-            bank,
-        )
-    }
-
-    #[test]
-    fn the_bank_and_grade_of_exact_readings_come_back() {
-        let (r, bank) = run();
-        let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
-        // The 1 s average of a 10 s half-sine differs from it by at most
-        // its curvature over the window, (π/10)²·(0.5²/6)·10° ≈ 0.041°,
-        // plus the sine's curvature (the average is taken of sin θ).
-        // Within half a window of the ends the average is one-sided.
-        for k in 50..r.t.len() - 50 {
-            assert!(
-                (est[k] - bank[k]).abs() < 0.045f64.to_radians(),
-                "t {}: {} vs {}",
-                r.t[k],
-                est[k].to_degrees(),
-                bank[k].to_degrees()
-            );
-        }
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
-        let b = g.bank.unwrap();
-        assert_eq!(b.source, AngleSource::LateralKinematics);
-        assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
-        let gr = g.grade.unwrap();
-        assert_eq!(gr.source, AngleSource::LongitudinalKinematics);
-        for x in [gr.mean, gr.min, gr.max, gr.p05, gr.median, gr.p95] {
-            assert!((x - 0.03f64.atan()).abs() < 1e-9, "{gr:?}");
-        }
-        let line = g.line().unwrap();
-        assert!(
-            line.contains("bank estimated from ay − u·r -9.9° to "),
-            "{line}"
-        );
-        assert!(
-            line.contains("grade estimated from ax − du/dt 1.7° to 1.7° (5–95 %; median 1.7°)"),
-            "{line}"
-        );
-        assert!(!line.contains("steeper than"), "{line}");
-        // A 12 % grade read from ax: beyond a road's, said to be likely
-        // something else.
-        let mut steep = r.clone();
-        steep.ax = Some(vec![1.0 + G * 0.12f64.atan().sin(); steep.t.len()]);
-        let line = RoadGeometry::of("turn", &steep, SensorOffsets::default())
-            .line()
-            .unwrap();
-        assert!(
-            line.contains("grade estimated from ax − du/dt 6.8° to 6.8° (5–95 %; median 6.8°) (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade"),
-            "{line}"
-        );
-        // The bank's 5th percentile of a half-sine to −10°: −10°·cos(0.05·π/2).
-        let p05 = (-10f64 * (0.05 * std::f64::consts::FRAC_PI_2).cos()).to_radians();
-        assert!((b.p05 - p05).abs() < 0.05f64.to_radians(), "{b:?}");
-    }
-
-    /// A flat road read by an accelerometer mounted with an offset of
-    #[test] // A speed in km/h reads as a bank past any road's.
-    fn a_bank_past_any_road_is_warned_of_as_a_unit_slip() {
-        let (mut r, _) = run();
-        r.speed.iter_mut().for_each(|u| *u *= 3.6);
-        let line = RoadGeometry::of("kmh", &r, SensorOffsets::default()).line();
-        let line = line.unwrap();
-        assert!(line.starts_with("kmh: bank estimated from ay − u·r -90.0°"));
-        assert!(line.contains("(warning: steeper than any road's 35°: more likely a unit"));
-    }
-
-    /// −0.6 m/s² and a gyro reading 0.005 rad/s high: −3.6° of bank
-    /// without the offsets, none with them.
-    #[test]
-    fn the_offsets_the_calibration_measured_are_no_bank() {
-        let (mut r, bank) = run();
-        let (b_ay, b_r) = (-0.6, 0.005);
-        let ay: Vec<f64> = (0..r.t.len())
-            .map(|k| r.ay.as_ref().unwrap()[k] - G * bank[k].sin() + b_ay)
-            .collect();
-        r.ay = Some(ay);
-        r.yaw_rate.iter_mut().for_each(|x| *x += b_r);
-        let g = RoadGeometry::of("flat", &r, SensorOffsets::default());
-        let median = g.bank.unwrap().median.to_degrees();
-        let unseen = ((b_ay - 25.0 * b_r) / G).asin().to_degrees();
-        assert!((median - unseen).abs() < 0.35, "{median} vs {unseen}");
-        assert!(median < -3.0, "{median}");
-        let offsets = SensorOffsets {
-            ay: b_ay,
-            yaw_rate: b_r,
-        };
-        let g = RoadGeometry::of("flat", &r, offsets);
-        let b = g.bank.unwrap();
-        for x in [b.p05, b.median, b.p95] {
-            assert!(x.to_degrees().abs() < 1e-9, "{b:?}");
-        }
-        let line = g.line().unwrap();
-        assert!(
-            line.contains("bank estimated from ay − u·r less the offsets the calibration measured (ay -0.600 m/s², yaw rate 0.0050 rad/s) 0.0° to 0.0°"),
-            "{line}"
-        );
-        // A measured bank is taken as logged: no offset is said removed.
-        r.bank = Some(bank);
-        assert_eq!(RoadGeometry::of("flat", &r, offsets).offsets_removed, None);
-    }
-
-    #[test]
-    fn a_bank_column_is_reported_as_measured_and_masked_samples_are_left_out() {
-        let (mut r, bank) = run();
-        r.bank = Some(bank);
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
-        assert_eq!(g.bank.unwrap().source, AngleSource::Measured);
-        // A 0.5 s glitch of ay at 9 g, masked: the estimate does not see it.
-        let (mut r, _) = run();
-        let ay = r.ay.as_mut().unwrap();
-        for a in &mut ay[400..450] {
-            *a = 90.0;
-        }
-        r.masked = (400..450).collect();
-        let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
-        assert!(
-            est.iter().all(|b| b.is_finite() && b.abs() < 0.2),
-            "no glitch in it"
-        );
-        // Without ay and bank, no bank; without ax, no grade.
-        let (mut r, _) = run();
-        (r.ay, r.ax) = (None, None);
-        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
-        assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
-    }
-
-    /// A 2° step steer at 80 km/h on a flat road: the sideslip settles to
-    /// −0.02 rad with a 0.3 s lag and the accelerometer reads `u·r + v̇`.
-    /// With `beta` the estimate finds the flat road; without, `v̇` reads as
-    /// bank at the step and the line says why.
-    #[test]
-    fn a_step_on_a_flat_road_is_no_bank_when_the_run_has_its_sideslip() {
-        let n = 601;
-        let u = 22.2;
-        let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
-        let lag = |t: f64| {
-            if t < 2.0 {
-                0.0
-            } else {
-                1.0 - (-(t - 2.0) / 0.3).exp()
-            }
-        };
-        let beta: Vec<f64> = t.iter().map(|&t| -0.02 * lag(t)).collect();
-        let r: Vec<f64> = t.iter().map(|&t| 0.2 * lag(t)).collect();
-        let ay: Vec<f64> = (0..n)
-            .map(|k| {
-                let v_dot = -0.02 * u * (-(t[k] - 2.0) / 0.3).exp() / 0.3;
-                u * r[k]
-                    + if t[k] < 2.0 {
-                        0.0
-                    } else {
-                        v_dot / beta_cos(beta[k])
-                    }
-            })
-            .collect();
-        let mut run = MeasuredRun::new("step.csv", t, vec![u; n], vec![0.0; n], r)
-            .with_ay(ay)
-            .with_beta(beta);
-        let with = RoadGeometry::of("step", &run, SensorOffsets::default());
-        let b = with.bank.unwrap();
-        assert_eq!(b.source, AngleSource::LateralKinematicsWithSideslip);
-        // Central differences of a 0.3 s lag at 100 Hz: within 0.05°.
-        for x in [b.min, b.max] {
-            assert!(x.to_degrees().abs() < 0.05, "{b:?}");
-        }
-        assert!(with
-            .line()
-            .unwrap()
-            .contains("bank estimated from ay − u·r − d(u·β)/dt"));
-        run.beta = None;
-        let without = RoadGeometry::of("step", &run, SensorOffsets::default());
-        let b = without.bank.unwrap();
-        assert_eq!(b.source, AngleSource::LateralKinematics);
-        // The 1 s average of v̇ over the step: −0.02·22.2/1 s = −0.44 m/s²,
-        // −2.6° at its largest.
-        assert!(b.min.to_degrees() < -2.0, "{b:?}");
-        assert!(without
-            .line()
-            .unwrap()
-            .contains("no beta column: the sideslip's rate v̇ is left out"));
-        // A masked sample's neighbours take no difference across it.
-        run.beta = with_beta(&run);
-        run.masked = vec![300];
-        let est = bank_estimate(&run, run.ay.as_ref().unwrap(), SensorOffsets::default());
-        assert!(est
-            .iter()
-            .all(|x| x.is_finite() && x.to_degrees().abs() < 0.05));
-    }
-
-    /// `v = u·tan β`: the lateral velocity's rate is `u·β̇/cos²β` at a
-    /// steady speed; the factor the readings carry.
-    fn beta_cos(beta: f64) -> f64 {
-        beta.cos().powi(2)
-    }
-
-    fn with_beta(run: &MeasuredRun) -> Option<Vec<f64>> {
-        let lag = |t: f64| {
-            if t < 2.0 {
-                0.0
-            } else {
-                1.0 - (-(t - 2.0) / 0.3).exp()
-            }
-        };
-        Some(run.t.iter().map(|&t| -0.02 * lag(t)).collect())
-    }
-}
+#[path = "road_tests.rs"]
+mod tests;

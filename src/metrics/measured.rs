@@ -428,7 +428,10 @@ fn filled_steady(piece: &MeasuredRun, window: f64) -> Option<String> {
     let masked = piece.masked.iter().filter(|&&i| piece.t[i] >= from).count();
     (10 * masked >= inside && masked > 0).then(|| {
         format!(
-            "{masked} of the {inside} samples of the steady window ({from:.2}–{last:.2} s) are masked by the cleaning (see its lines) and were filled from the samples beside them: the steady state, the gain and what is measured against them stand on that fill{}",
+            "{masked} of the {inside} samples of the steady window ({from:.2}–{last:.2} s) {} masked by the cleaning (see its lines) and {} filled from the samples beside {}: the steady state, the gain and what is measured against them stand on that fill{}",
+            if masked == 1 { "is" } else { "are" },
+            if masked == 1 { "was" } else { "were" },
+            if masked == 1 { "it" } else { "them" },
             match 2 * masked > inside {
                 true => ", not on measurements: do not use these metrics",
                 false => "",

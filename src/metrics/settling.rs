@@ -142,6 +142,19 @@ impl ChannelSettling {
         most
     }
 
+    /// The largest share of its step a settled channel's trend still
+    /// heads beyond its steady window's mean ([`Settling::Approaching`]),
+    /// where one does: its steady value not reached by about that much.
+    pub fn approaching(&self) -> Option<f64> {
+        self.named()
+            .into_iter()
+            .filter_map(|(_, _, s)| match s {
+                Settling::Approaching { heads, .. } => Some(heads),
+                _ => None,
+            })
+            .reduce(f64::max)
+    }
+
     /// Each channel with its name and unit.
     fn named(&self) -> Vec<(&'static str, &'static str, Settling)> {
         let mut out = vec![("yaw rate", "rad/s", self.yaw_rate)];

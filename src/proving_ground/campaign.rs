@@ -117,7 +117,52 @@ impl Synthetic {
             .iter()
             .map(|(k, p)| format!("#   {} = {:?}", k.name(), p))
             .collect();
-        let (model, roll) = match self.truth {
+        let (model, roll) = self.truth_and_roll();
+        let [front, rear] = truth_downforce(self.spec.programme);
+        let model = if front != 0.0 || rear != 0.0 {
+            format!("{model}, down-force {front}/{rear} N/(m/s)² front/rear")
+        } else {
+            model
+        };
+        let tyres = if self.spec.programme.has_rig() {
+            "[tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n".to_string()
+        } else {
+            "# No tyre data: the base model identifies its axles from the runs.\n\n".to_string()
+        };
+        let step = self
+            .spec
+            .programme
+            .replay_step()
+            .map_or_else(String::new, |h| format!("step = {h}\n"));
+        let runs = match self.spec.programme.segment() {
+            Some(s) => format!("[runs]\nsegment = {s}\n\n"),
+            None => String::new(),
+        };
+        let built_in = self.built_in_comment();
+        format!(
+            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n{built_in}\
+             [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
+             {tyres}{roll}{runs}[diagnose]\nseed = {}\n{step}",
+            self.truth.name(),
+            self.spec.programme.name(),
+            self.spec.seed,
+            if truth.is_empty() { "#   none".to_string() } else { truth.join("\n") },
+            v.mass,
+            v.yaw_inertia,
+            v.a,
+            v.b,
+            v.track_front,
+            v.track_rear,
+            v.cg_height,
+            self.spec.seed
+        )
+    }
+
+    /// The truth's model in words (withheld in a comment) and the `[roll]`
+    /// table the campaign assumes, with a comment on how it differs from
+    /// the truth's (empty where the campaign assumes the default).
+    fn truth_and_roll(&self) -> (String, String) {
+        match self.truth {
             Truth::Augmented if self.roll != RollModel::default() => (
                 "UniTire tyres".to_string(),
                 format!(
@@ -144,29 +189,14 @@ impl Synthetic {
                     ),
                 )
             }
-        };
-        let [front, rear] = truth_downforce(self.spec.programme);
-        let model = if front != 0.0 || rear != 0.0 {
-            format!("{model}, down-force {front}/{rear} N/(m/s)² front/rear")
-        } else {
-            model
-        };
-        let tyres = if self.spec.programme.has_rig() {
-            "[tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n".to_string()
-        } else {
-            "# No tyre data: the base model identifies its axles from the runs.\n\n".to_string()
-        };
-        let step = self
-            .spec
-            .programme
-            .replay_step()
-            .map_or_else(String::new, |h| format!("step = {h}\n"));
-        let runs = match self.spec.programme.segment() {
-            Some(s) => format!("[runs]\nsegment = {s}\n\n"),
-            None => String::new(),
-        };
+        }
+    }
+
+    /// The comment listing what the programme builds into its car, driver
+    /// and logger (withheld too), or nothing.
+    fn built_in_comment(&self) -> String {
         let built_in = truth_lines(self.spec.programme);
-        let built_in = if built_in.is_empty() {
+        if built_in.is_empty() {
             String::new()
         } else {
             let lines: Vec<String> = built_in.iter().map(|l| format!("#   {l}")).collect();
@@ -174,23 +204,6 @@ impl Synthetic {
                 "# Built into the programme's car, driver and logger (withheld too):\n{}\n",
                 lines.join("\n")
             )
-        };
-        format!(
-            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n{built_in}\
-             [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
-             {tyres}{roll}{runs}[diagnose]\nseed = {}\n{step}",
-            self.truth.name(),
-            self.spec.programme.name(),
-            self.spec.seed,
-            if truth.is_empty() { "#   none".to_string() } else { truth.join("\n") },
-            v.mass,
-            v.yaw_inertia,
-            v.a,
-            v.b,
-            v.track_front,
-            v.track_rear,
-            v.cg_height,
-            self.spec.seed
-        )
+        }
     }
 }

@@ -173,17 +173,16 @@ pub(super) fn drive(
 ) -> ClosedLoop {
     let (model, friction) = (&truth.model, truth.friction);
     let path = truth.effects().steer_path;
-    let understeer = model.understeer_gradient();
-    let (wheelbase, b) = (model.vehicle.wheelbase(), model.vehicle.b);
+    let car = Pursued {
+        understeer: model.understeer_gradient(),
+        wheelbase: model.vehicle.wheelbase(),
+        b: model.vehicle.b,
+    };
     let n = speed.len();
     let mut history = TimeHistory::default();
     let mut hand_log = Vec::with_capacity(n);
-    // The driver's delayed commands and the steer path's delay line.
-    let reaction = (driver.reaction / h).round() as usize;
-    let late = (path.delay / h).round() as usize;
-    let mut commands = std::collections::VecDeque::from(vec![0.0; reaction + 1]);
-    let mut wheels = std::collections::VecDeque::from(vec![0.0; late + 1]);
-    let (mut hand, mut lagged) = (0.0, 0.0);
+    let mut hands = Hands::new(driver, h);
+    let mut wheels = SteerLine::new(path.delay, h);
     let mut x: Full = [0.0; 9];
     let mut seeds = [LoadTransferSeed::default(); 4];
     let (mut nearest, mut largest_offset) = (0usize, 0.0f64);
@@ -192,33 +191,16 @@ pub(super) fn drive(
         let u = speed[k];
         let parked = u == 0.0 && speed.get(k + 1).is_none_or(|&v| v == 0.0);
         // The driver: aim from the rear axle at the preview point.
-        let (rx, ry) = (x[6] - b * x[8].cos(), x[7] - b * x[8].sin());
-        nearest = track.nearest(nearest, rx, ry);
-        let offset = (track.x[nearest] - rx).hypot(track.y[nearest] - ry);
+        let rear = (x[6] - car.b * x[8].cos(), x[7] - car.b * x[8].sin());
+        nearest = track.nearest(nearest, rear.0, rear.1);
+        let offset = (track.x[nearest] - rear.0).hypot(track.y[nearest] - rear.1);
         largest_offset = largest_offset.max(offset);
         if !parked {
-            let aim = track.ahead(nearest, driver.min_preview.max(driver.preview_time * u));
-            let (gx, gy) = (track.x[aim] - rx, track.y[aim] - ry);
-            let (c, s) = (x[8].cos(), x[8].sin());
-            let (ahead, left) = (c * gx + s * gy, -s * gx + c * gy);
-            let l = ahead.hypot(left).max(1e-3);
-            let kappa = 2.0 * left.atan2(ahead).sin() / l;
-            let wanted = (wheelbase * kappa).atan() + understeer * u * u * kappa;
-            commands.push_back(steering.hand(wanted) + driver.remnant * remnant(t));
-            commands.pop_front();
-            let rate = ((commands[0] - hand) / driver.neuromuscular)
-                .clamp(-driver.rate_limit, driver.rate_limit);
-            hand += h * rate;
+            let wanted = car.wanted_steer(track, driver, &x, rear, nearest, u);
+            hands.follow(steering.hand(wanted) + driver.remnant * remnant(t));
         }
         // The road wheels through the truth's steer path (delay, lag).
-        wheels.push_back(steering.wheel(hand));
-        wheels.pop_front();
-        if path.lag > 0.0 {
-            lagged += (wheels[0] - lagged) * (1.0 - (-h / path.lag).exp());
-        } else {
-            lagged = wheels[0];
-        }
-        let steer = lagged;
+        let steer = wheels.advance(steering.wheel(hands.hand), path.lag);
         let inputs = |s: f64| {
             let j = ((s / h).floor() as usize).min(n - 1);
             let w = (s / h - j as f64).clamp(0.0, 1.0);
@@ -238,31 +220,144 @@ pub(super) fn drive(
         } else {
             let (k1, o) = rates(model, &x, &inputs(t), &mut seeds[0]);
             record(&mut history, t, &x, &inputs(t), &o);
-            let shift = |d: &Full, f: f64| -> Full { std::array::from_fn(|i| x[i] + f * d[i]) };
-            let (k2, _) = rates(
-                model,
-                &shift(&k1, 0.5 * h),
-                &inputs(t + 0.5 * h),
-                &mut seeds[1],
-            );
-            let (k3, _) = rates(
-                model,
-                &shift(&k2, 0.5 * h),
-                &inputs(t + 0.5 * h),
-                &mut seeds[2],
-            );
-            let (k4, _) = rates(model, &shift(&k3, h), &inputs(t + h), &mut seeds[3]);
-            for i in 0..9 {
-                x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
+            x = rk4_rest(model, &x, &k1, &inputs, t, h, &mut seeds);
         }
-        hand_log.push(hand);
+        hand_log.push(hands.hand);
     }
     ClosedLoop {
         history,
         hand: hand_log,
         largest_offset,
     }
+}
+
+/// What the driver knows of the car: its understeer gradient, wheelbase
+/// and the rear axle's distance behind the centre of gravity.
+struct Pursued {
+    understeer: f64,
+    wheelbase: f64,
+    b: f64,
+}
+
+impl Pursued {
+    /// The road-wheel steer the driver asks for at speed `u` (pure pursuit,
+    /// Coulter 1992): the path curvature `κ = 2·sin η / l` to the preview
+    /// point ahead of `nearest`, seen from the rear axle `rear` of state
+    /// `x`, as `atan(L·κ) + K·u²·κ`.
+    fn wanted_steer(
+        &self,
+        track: &Track,
+        driver: &Driver,
+        x: &Full,
+        rear: (f64, f64),
+        nearest: usize,
+        u: f64,
+    ) -> f64 {
+        let (rx, ry) = rear;
+        let aim = track.ahead(nearest, driver.min_preview.max(driver.preview_time * u));
+        let (gx, gy) = (track.x[aim] - rx, track.y[aim] - ry);
+        let (c, s) = (x[8].cos(), x[8].sin());
+        let (ahead, left) = (c * gx + s * gy, -s * gx + c * gy);
+        let l = ahead.hypot(left).max(1e-3);
+        let kappa = 2.0 * left.atan2(ahead).sin() / l;
+        (self.wheelbase * kappa).atan() + self.understeer * u * u * kappa
+    }
+}
+
+/// The driver's hands: the commands in the reaction delay line, and the
+/// steering-wheel angle the neuromuscular lag follows them with, no faster
+/// than the rate limit.
+struct Hands {
+    commands: std::collections::VecDeque<f64>,
+    hand: f64,
+    neuromuscular: f64,
+    rate_limit: f64,
+    h: f64,
+}
+
+impl Hands {
+    fn new(driver: &Driver, h: f64) -> Self {
+        let reaction = (driver.reaction / h).round() as usize;
+        Hands {
+            commands: std::collections::VecDeque::from(vec![0.0; reaction + 1]),
+            hand: 0.0,
+            neuromuscular: driver.neuromuscular,
+            rate_limit: driver.rate_limit,
+            h,
+        }
+    }
+
+    /// One step: `command` enters the delay line, the hand moves toward
+    /// the one leaving it.
+    fn follow(&mut self, command: f64) {
+        self.commands.push_back(command);
+        self.commands.pop_front();
+        let rate = ((self.commands[0] - self.hand) / self.neuromuscular)
+            .clamp(-self.rate_limit, self.rate_limit);
+        self.hand += self.h * rate;
+    }
+}
+
+/// The truth's steer path between the steering and the road wheels: a
+/// delay line of `delay` s and a first-order lag.
+struct SteerLine {
+    wheels: std::collections::VecDeque<f64>,
+    lagged: f64,
+    h: f64,
+}
+
+impl SteerLine {
+    fn new(delay: f64, h: f64) -> Self {
+        let late = (delay / h).round() as usize;
+        SteerLine {
+            wheels: std::collections::VecDeque::from(vec![0.0; late + 1]),
+            lagged: 0.0,
+            h,
+        }
+    }
+
+    /// One step with the steering asking for `wheel`: the road wheels'
+    /// steer after the delay and the lag of time constant `lag` s (none at
+    /// 0).
+    fn advance(&mut self, wheel: f64, lag: f64) -> f64 {
+        self.wheels.push_back(wheel);
+        self.wheels.pop_front();
+        if lag > 0.0 {
+            self.lagged += (self.wheels[0] - self.lagged) * (1.0 - (-self.h / lag).exp());
+        } else {
+            self.lagged = self.wheels[0];
+        }
+        self.lagged
+    }
+}
+
+/// The classical RK4 step from `x` at `t` over `h`, its first stage `k1`
+/// given (its outputs are the step's record): stages 2–4 with the inputs
+/// at `t + h/2` and `t + h`, each stage its own load-transfer seed.
+fn rk4_rest(
+    model: &crate::vehicle::VehicleModel,
+    x: &Full,
+    k1: &Full,
+    inputs: &impl Fn(f64) -> Inputs,
+    t: f64,
+    h: f64,
+    seeds: &mut [LoadTransferSeed; 4],
+) -> Full {
+    let shift = |d: &Full, f: f64| -> Full { std::array::from_fn(|i| x[i] + f * d[i]) };
+    let (k2, _) = rates(
+        model,
+        &shift(k1, 0.5 * h),
+        &inputs(t + 0.5 * h),
+        &mut seeds[1],
+    );
+    let (k3, _) = rates(
+        model,
+        &shift(&k2, 0.5 * h),
+        &inputs(t + 0.5 * h),
+        &mut seeds[2],
+    );
+    let (k4, _) = rates(model, &shift(&k3, h), &inputs(t + h), &mut seeds[3]);
+    std::array::from_fn(|i| x[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
 /// Appends the row of time `t` to `h`.

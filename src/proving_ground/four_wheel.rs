@@ -384,14 +384,30 @@ impl FourWheel {
     }
 
     fn evaluate(&self, x: &State, steer: f64, u: f64) -> Evaluation {
-        let v = &self.vehicle;
         let e = &self.effects;
-        let tyre = &v.tyre;
-        let (vy, r, phi, p) = (x[0], x[1], x[2], x[3]);
+        let phi = x[2];
+        let (wheel_speed, flow) = self.wheel_flow(x, u);
+        let base_steer = [
+            steer + e.roll_steer[0] * phi,
+            steer + e.roll_steer[0] * phi,
+            e.roll_steer[1] * phi,
+            e.roll_steer[1] * phi,
+        ];
+        let (fy, delta, fz) = self.compliant_forces(x, &base_steer, &flow, u);
+        let (derivative, ay) = self.rates_of(x, &fy, &delta, &wheel_speed, &flow, u);
+        Evaluation {
+            derivative,
+            ay,
+            loads: fz,
+        }
+    }
+
+    /// Each wheel's forward speed (at least `MIN_WHEEL_SPEED`) and the
+    /// angle of its flow, `atan2(vy_wheel, vx_wheel)`, at state `x` and
+    /// speed `u`.
+    fn wheel_flow(&self, x: &State, u: f64) -> ([f64; 4], [f64; 4]) {
+        let (vy, r) = (x[0], x[1]);
         let pos = self.positions();
-        let lagged = e.relaxation_length > 0.0;
-        let lean = [-e.roll_camber[0] * phi, -e.roll_camber[1] * phi];
-        let mu = e.friction_scale;
         let mut wheel_speed = [0.0; 4];
         let mut flow = [0.0; 4];
         for i in 0..4 {
@@ -400,12 +416,26 @@ impl FourWheel {
             wheel_speed[i] = vx.max(MIN_WHEEL_SPEED);
             flow[i] = vyw.atan2(wheel_speed[i]);
         }
-        let base_steer = [
-            steer + e.roll_steer[0] * phi,
-            steer + e.roll_steer[0] * phi,
-            e.roll_steer[1] * phi,
-            e.roll_steer[1] * phi,
-        ];
+        (wheel_speed, flow)
+    }
+
+    /// The wheels' lateral forces, road-wheel steers and loads `(fy, δ,
+    /// Fz)`, iterated with the steering compliance (the front axle's force
+    /// steers its wheels back) and the load transfer the axle forces make.
+    fn compliant_forces(
+        &self,
+        x: &State,
+        base_steer: &[f64; 4],
+        flow: &[f64; 4],
+        u: f64,
+    ) -> ([f64; 4], [f64; 4], [f64; 4]) {
+        let v = &self.vehicle;
+        let e = &self.effects;
+        let tyre = &v.tyre;
+        let (phi, p) = (x[2], x[3]);
+        let lagged = e.relaxation_length > 0.0;
+        let lean = [-e.roll_camber[0] * phi, -e.roll_camber[1] * phi];
+        let mu = e.friction_scale;
         // Relaxation of the compliance loop: near-Newton in the linear range
         // (the front axle's slope is about 2·C_α at static load).
         let c = e.steering_compliance;
@@ -415,7 +445,7 @@ impl FourWheel {
         let mut axle_force = [0.0; 2];
         let mut front_force = 0.0;
         let mut fy = [0.0; 4];
-        let mut delta = base_steer;
+        let mut delta = *base_steer;
         let mut fz = [0.0; 4];
         for _ in 0..60 {
             fz = self.loads(phi, p, axle_force, u);
@@ -443,6 +473,25 @@ impl FourWheel {
                 break;
             }
         }
+        (fy, delta, fz)
+    }
+
+    /// The state's derivatives and the lateral acceleration from the
+    /// wheels' forces `fy` at steers `delta`: side force and yaw moment,
+    /// roll, and (with relaxation) the lagged slip angles.
+    fn rates_of(
+        &self,
+        x: &State,
+        fy: &[f64; 4],
+        delta: &[f64; 4],
+        wheel_speed: &[f64; 4],
+        flow: &[f64; 4],
+        u: f64,
+    ) -> ([f64; 8], f64) {
+        let v = &self.vehicle;
+        let e = &self.effects;
+        let (r, phi, p) = (x[1], x[2], x[3]);
+        let pos = self.positions();
         let (mut side, mut yaw) = (0.0, 0.0);
         for i in 0..4 {
             let (s, co) = delta[i].sin_cos();
@@ -458,17 +507,13 @@ impl FourWheel {
             - (v.roll_stiffness[0] + v.roll_stiffness[1]) * phi
             - (v.roll_damping[0] + v.roll_damping[1]) * p)
             / v.roll_inertia;
-        if lagged {
+        if e.relaxation_length > 0.0 {
             for i in 0..4 {
                 let kinematic = delta[i] - flow[i];
                 d[4 + i] = wheel_speed[i] / e.relaxation_length * (kinematic - x[4 + i]);
             }
         }
-        Evaluation {
-            derivative: d,
-            ay,
-            loads: fz,
-        }
+        (d, ay)
     }
 
     /// Integrates `m` from straight running (all states zero; the

@@ -8,8 +8,10 @@
 //! tyre is scaled to it at its static wheel load
 //! ([`crate::tyre::Tyre::with_cornering_stiffness`]), its friction limit kept.
 //! Every combination is simulated with the scenario's step steer and
-//! evaluated with [`crate::metrics::step_metrics`]; combinations run in
-//! parallel (rayon).
+//! evaluated as `simulate` evaluates one run
+//! ([`crate::metrics::simulated_step_metrics`]: on the Dormand–Prince dense
+//! solution, the peak located between rows; on the rows under RK4 or a
+//! low-pass); combinations run in parallel (rayon).
 
 pub(crate) mod inverse;
 pub(crate) mod rbf;
@@ -19,7 +21,7 @@ pub use response::{NotHandling, Response};
 
 use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;
-use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
+use crate::metrics::{simulated_step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
 use crate::tyre::{Tyre, TyreModel};
 use crate::vehicle::{State, VehicleModel};
@@ -75,16 +77,14 @@ impl Study {
     /// Simulates one combination.
     pub fn evaluate(&self, k_front: f64, k_rear: f64) -> Sample {
         let m = self.model_for(k_front, k_rear);
-        let h = self.integrator.run(&m, &self.manoeuvre, State::default());
-        let metrics = step_metrics(
-            &h.t,
-            &h.steer,
-            &h.yaw_rate,
-            Some(&h.ay),
-            Some(&h.beta),
-            &self.metrics,
-        )
-        .ok();
+        // Measured as `simulate` measures the same car: on the dense
+        // solution where there is one (the peak located between rows, to
+        // the tolerance), on the rows otherwise (RK4, a low-pass).
+        let sim = self
+            .integrator
+            .simulate(&m, &self.manoeuvre, State::default());
+        let metrics =
+            simulated_step_metrics(&self.integrator, &m, &self.manoeuvre, &sim, &self.metrics).ok();
         Sample {
             k_front,
             k_rear,

@@ -52,7 +52,7 @@ fn simulated(scenario: &Path, out: &Path) -> PathBuf {
 /// right at 25) and swept at 1 Hz (25 m/s) and 2 Hz (30 m/s), logged 60 ms
 /// late: the base model with a sensor delay is the car, no model-form
 /// error. Its candidates are narrowed to the two delays it confounds.
-fn delayed_campaign(dir: &Path) -> PathBuf {
+pub(crate) fn delayed_campaign(dir: &Path) -> PathBuf {
     let c = dir.join("delay60");
     fs::create_dir_all(c.join("runs")).unwrap();
     linear_tyre(&c);
@@ -116,8 +116,9 @@ fn delayed_campaign(dir: &Path) -> PathBuf {
 /// reference leaves none (its held-out error below the noise level); and
 /// the start of the prediction was moved by the sideslip's floor (an
 /// estimated output's 0.005 rad) where its noise is ten times less. Now
-/// the scatter widens only where the reference leaves a gap above the
-/// noise, and the start moves by the channels' own noise: the prediction
+/// the campaign's runs are replayed from their settled starts (session 97;
+/// session 96 widened only where the reference leaves a gap above the
+/// noise), and the start moves by the channels' own noise: the prediction
 /// is the noise's D ± 1, recommended, and runs driven on the car land
 /// within it.
 #[test]
@@ -137,16 +138,11 @@ fn a_design_on_a_car_its_base_model_matches_predicts_what_driving_it_measures() 
     let said = String::from_utf8_lossy(&o.stdout);
     let design = read_json(&diagnosis.join("design/design.json"));
     let set = &design["sets"][0];
-    // The campaign's runs still measure a scatter beyond the noise's, but
-    // the reference leaves no gap above the noise: not applied, and said.
+    // Replayed from their settled starts (session 97), the campaign's
+    // runs measure the noise's scatter.
     let cal = &set["calibration"];
     assert!(cal["runs"].as_u64().unwrap() >= 1, "{set}");
-    assert!(cal["inflation"].as_f64().unwrap() > 2.0, "{said}");
-    assert_eq!(cal["applied"], false, "{said}");
-    assert!(
-        said.contains("but sensor_delay leaves no gap above the noise (held-out error"),
-        "{said}"
-    );
+    assert!(cal["inflation"].as_f64().unwrap() < 1.6, "{said}");
     let best = &set["ranked"][0];
     let (name, separation) = (
         best["name"].as_str().unwrap(),

@@ -360,7 +360,10 @@ class Verdict:
     """Effects the evidence supports (empty unless ``kind`` is explained)."""
     parameters: List[Dict[str, Any]]
     """Their fitted parameters (``name``, ``value``, standard error, unit,
-    whether on a bound and whether the runs determine it)."""
+    whether on a bound and whether the runs determine it). ``std_error`` is
+    the larger of ``asymptotic_std_error`` and the fold refits' spread
+    (``fold_std_error``) where the model leaves a gap above noise;
+    ``std_error_basis`` says which (``"asymptotic"`` or ``"fold_spread"``)."""
     statement: str
     """The verdict in words."""
     warnings: List[str]

@@ -102,6 +102,13 @@ pub struct SensorPositions {
 }
 
 impl SensorPositions {
+    /// How far ahead of the accelerometer the sideslip is measured, m: 0
+    /// where no `beta_x` is stated (an inertial unit gives both).
+    pub fn beta_ahead_of_accelerometer(&self) -> f64 {
+        self.beta_x
+            .map_or(0.0, |b| b - self.accelerometer_x.unwrap_or(0.0))
+    }
+
     /// The report's note of the positions used, where any is stated.
     pub fn note(&self) -> Option<String> {
         let at = |x: f64| {

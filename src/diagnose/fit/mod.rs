@@ -222,13 +222,18 @@ pub(crate) fn fit_first_order<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 /// The second derivatives of a linearisation `linear` of `problem` at `p`
-/// that [`fit_first_order`] left out, as [`fit`] would have taken them.
+/// that [`fit_first_order`] left out, as [`fit`] would have taken them,
+/// but for the columns of the parameters marked in `unseen`
+/// ([`FitOutcome::unseen`]), left zero: the fold refits hold those
+/// parameters and zero their columns (`refit`), so their replays (a
+/// combined slip's two unseen shares: 13 of its 27) bought nothing.
 pub(crate) fn complete_curvature<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
     linear: &mut Linearisation,
+    unseen: &[bool],
 ) {
-    linear.curvature = curvature(problem, p, &linear.residuals);
+    linear.curvature = curvature(problem, p, &linear.residuals, unseen);
 }
 
 /// [`fit`], the second derivatives of its linearisation taken when
@@ -504,7 +509,7 @@ fn linearise_with<F: Fn(&[f64]) -> Augmented + Sync>(
     problem.residuals(p, &mut r);
     let jacobian = known.unwrap_or_else(|| problem.jacobian(p, &r, &problem.bounds));
     let curvature = if second {
-        curvature(problem, p, &r)
+        curvature(problem, p, &r, &[])
     } else {
         DMatrix::zeros(r.len(), 0)
     };
@@ -524,11 +529,13 @@ const CURVATURE_STEP: f64 = 1e-3;
 /// Second derivatives of the residuals at `p` by forward second
 /// differences, stepping into the box: `(r(p+2h_a) − 2r(p+h_a) + r(p))/h_a²`
 /// and `(r(p+h_a+h_b) − r(p+h_a) − r(p+h_b) + r(p))/(h_a·h_b)`. The replays
-/// are independent: they run in parallel.
+/// are independent: they run in parallel. The columns of a parameter
+/// marked in `skip` (missing: not marked) stay zero, as a pinned one's.
 fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
     r0: &[f64],
+    skip: &[bool],
 ) -> DMatrix<f64> {
     use rayon::prelude::*;
     let n = p.len();
@@ -537,8 +544,8 @@ fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
             let (lo, hi) = problem.bounds[k];
             let h = CURVATURE_STEP * (hi - lo);
             // A parameter pinned (a box of no width) has no curvature:
-            // its columns stay zero below.
-            if h == 0.0 {
+            // its columns stay zero below; nor has one skipped.
+            if h == 0.0 || skip.get(k).copied().unwrap_or(false) {
                 return 0.0;
             }
             if p[k] + 2.0 * h > hi {

@@ -244,6 +244,9 @@ pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
             trusted = (0.5..=2.0).contains(&((cost - c) / predicted));
             (p, cost) = (q, c);
             std::mem::swap(&mut r, &mut trial);
+            // Its replays are kept: Levenberg–Marquardt, if it takes over
+            // from here, starts without integrating them again.
+            problem.keep_last();
             lambda *= 0.1;
             rejected = 0;
         } else {

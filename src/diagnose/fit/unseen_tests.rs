@@ -40,3 +40,74 @@ fn a_relaxation_length_fitted_to_no_lag_is_on_its_bound_not_unseen() {
     assert!((f.params[0] - 0.4).abs() < 0.012, "{:?}", f.params);
     assert!(!f.is_unseen(0));
 }
+
+/// The second derivatives a cross-validation takes leave out an unseen
+/// parameter's pairs (the fold refits hold it and zero its columns): 9
+/// replays where all pairs of four parameters take 14, the other columns
+/// those taken with it to the bit, and a fold refit lands on the same
+/// parameters as from the full set with a curvature along the unseen
+/// parameter made up (`Σ r·∇²r` strongly negative there).
+#[test]
+fn an_unseen_parameter_costs_no_second_derivatives_and_moves_no_fold_refit() {
+    use super::refit::tests::{axle_model, runs, AXLES};
+    use super::refit::{refit, training_rows};
+    use super::{complete_curvature, fit_first_order, pair_index, FitOutcome};
+    use nalgebra::DVector;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let runs = runs();
+    let mut bounds = AXLES.to_vec();
+    bounds.push((-1.0, 1.0));
+    let replays = AtomicUsize::new(0);
+    let counted = |p: &[f64]| {
+        replays.fetch_add(1, Ordering::Relaxed);
+        axle_model(&p[..3])
+    };
+    let four = Problem::new(counted, runs.iter().collect(), SCALES, bounds.clone());
+    let off = [10.0, 10.0, 1.0, 0.0];
+    let (f, at) = fit_first_order(&four, &[10.0, 10.0, 1.0, 0.7], Some(&off));
+    assert_eq!(f.unseen, [false, false, false, true]);
+    let at = at.expect("linearised");
+    let taken = |unseen: &[bool]| {
+        let mut l = f.linear.clone().expect("linearised");
+        let before = replays.load(Ordering::Relaxed);
+        complete_curvature(&four, &at, &mut l, unseen);
+        (l, replays.load(Ordering::Relaxed) - before)
+    };
+    let (mut all, n_all) = taken(&[]);
+    let (skipped, n_skipped) = taken(&f.unseen);
+    assert_eq!((n_all, n_skipped), (14, 9));
+    for a in 0..4 {
+        for b in a..4 {
+            let (x, y) = (
+                all.curvature.column(pair_index(4, a, b)),
+                skipped.curvature.column(pair_index(4, a, b)),
+            );
+            if b == 3 {
+                assert!(y.iter().all(|&c| c == 0.0), "pair ({a}, 3)");
+            } else {
+                assert_eq!(x, y, "pair ({a}, {b})");
+            }
+        }
+    }
+    let r = DVector::from_column_slice(&all.residuals);
+    all.curvature
+        .column_mut(pair_index(4, 3, 3))
+        .copy_from(&(-1e3 * &r));
+    let fold = Problem::new(
+        |p: &[f64]| axle_model(&p[..3]),
+        runs.iter().skip(1).collect(),
+        SCALES,
+        bounds,
+    );
+    let rows = training_rows(&runs, &[0], 0);
+    let from = |linear| FitOutcome {
+        linear: Some(linear),
+        ..f.clone()
+    };
+    let (a, b) = (
+        refit(&fold, &from(all), &rows),
+        refit(&fold, &from(skipped), &rows),
+    );
+    assert_eq!(a.params, b.params);
+    assert!(a.params[..3] != f.params[..3], "the fold did not move");
+}

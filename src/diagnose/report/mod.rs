@@ -38,7 +38,8 @@ pub use crate::diagnose::report::outcome::{
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{
-    jackknife, ParameterValue, Reduction, RunPart, Shrinkage, Traded, LIMIT_RESOLUTION, UNDERSTATED,
+    jackknife, ParameterValue, Reduction, RunPart, Shrinkage, StdErrorBasis, Traded,
+    LIMIT_RESOLUTION, UNDERSTATED,
 };
 use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;

@@ -43,7 +43,8 @@ pub fn traded(
     if a.unit != b.unit || !plain(a) || !plain(b) || !covariance.is_finite() {
         return None;
     }
-    let (sa, sb) = (a.std_error, b.std_error);
+    // The covariance is the asymptotic one's: so are the two errors.
+    let (sa, sb) = (a.asymptotic_std_error, b.asymptotic_std_error);
     let variance = sa * sa + sb * sb + 2.0 * covariance;
     let correlation = (covariance / (sa * sb)).clamp(-1.0, 1.0);
     let sum = a.value + b.value;

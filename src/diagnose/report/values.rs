@@ -22,11 +22,23 @@ pub struct ParameterValue {
     pub unit: &'static str,
     /// Value fitted on all runs.
     pub value: f64,
-    /// Its standard error: the Jacobian's times `√τ`, the residuals'
-    /// correlation time ([`crate::diagnose::fit::FitOutcome::reported_std_errors`]);
+    /// Its standard error, the larger of two where the model leaves a gap
+    /// above noise ([`ParameterValue::std_error_basis`] says which): the
+    /// asymptotic one ([`ParameterValue::asymptotic_std_error`]) or the
+    /// spread of the fold refits ([`ParameterValue::fold_std_error`]).
     /// NaN, written as `null`, where the runs do not pin it.
     #[serde(serialize_with = "crate::report::finite_or_null")]
     pub std_error: f64,
+    /// The asymptotic standard error: the Jacobian's times `√τ`, the
+    /// residuals' correlation time
+    /// ([`crate::diagnose::fit::FitOutcome::reported_std_errors`]). It
+    /// covers the runs' noise; a model that lacks something also moves the
+    /// fit, by more than it (a sensor position 7 of them off its truth
+    /// where the yaw rate stays at 1.2 noise floors after the fit).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub asymptotic_std_error: f64,
+    /// Which of the two [`ParameterValue::std_error`] is.
+    pub std_error_basis: StdErrorBasis,
     /// The value sits on one of its bounds ([`ParameterValue::bound`]).
     pub at_bound: bool,
     /// Which: a search bound (the data would take it further, and the
@@ -66,6 +78,22 @@ pub struct ParameterValue {
     /// pair).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub traded: Option<Traded>,
+}
+
+/// Which standard error a [`ParameterValue`] reports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StdErrorBasis {
+    /// The asymptotic one: the model fits to the noise, or the fold
+    /// refits scatter less, or the candidate was not cross-validated.
+    Asymptotic,
+    /// The grouped jackknife of the fold refits: the model leaves a gap
+    /// above noise (the held-out error after the fit above the noise
+    /// level), and the refits on part of the runs move the value by more
+    /// than the asymptotic standard error (a leave-runs-out spread holds
+    /// under a model error that differs from run to run; Efron & Stein
+    /// 1981; a sandwich, White 1982, covers the same).
+    FoldSpread,
 }
 
 /// A parameter that trades against an earlier one of its effect
@@ -154,6 +182,8 @@ impl ParameterValue {
             unit,
             value,
             std_error,
+            asymptotic_std_error: std_error,
+            std_error_basis: StdErrorBasis::Asymptotic,
             at_bound: false,
             bound: None,
             determined: true,
@@ -174,19 +204,38 @@ impl ParameterValue {
         let noise = fold_std_error.and(noise);
         Self {
             fold_std_error,
-            fold_noise_std_error: noise.map(|(f, _)| f * self.std_error),
+            fold_noise_std_error: noise.map(|(f, _)| f * self.asymptotic_std_error),
             fold_noise_dof: noise.map(|(_, nu)| nu).filter(|nu| nu.is_finite()),
             ..self
         }
     }
 
-    /// What the fold jackknife is judged against: the standard error, or
-    /// the larger jackknife the runs' noise alone gives where one run
-    /// carries most of what determines the parameter.
+    /// The same, where the model leaves a gap above noise (`inexact`),
+    /// with the larger of the asymptotic standard error and the fold
+    /// refits' spread reported ([`StdErrorBasis`]), for a fitted,
+    /// determined parameter off its bounds. The asymptotic one covers the
+    /// noise alone; what the model lacks moves the fit too, and the refits
+    /// on part of the runs see as much of that as differs between runs.
+    pub fn with_model_error(self, inexact: bool) -> Self {
+        let fitted = !self.unseen && self.held.is_none() && self.bound.is_none() && self.determined;
+        match self.fold_std_error {
+            Some(j) if inexact && fitted && j > self.asymptotic_std_error => Self {
+                std_error: j,
+                std_error_basis: StdErrorBasis::FoldSpread,
+                ..self
+            },
+            _ => self,
+        }
+    }
+
+    /// What the fold jackknife is judged against: the asymptotic standard
+    /// error, or the larger jackknife the runs' noise alone gives where one
+    /// run carries most of what determines the parameter.
     pub fn fold_yardstick(&self) -> f64 {
+        let se = self.asymptotic_std_error;
         self.fold_noise_std_error
             .filter(|x| x.is_finite())
-            .map_or(self.std_error, |n| n.max(self.std_error))
+            .map_or(se, |n| n.max(se))
     }
 
     /// How many times [`ParameterValue::fold_yardstick`] the fold jackknife

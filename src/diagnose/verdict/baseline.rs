@@ -258,6 +258,7 @@ impl Baseline {
                 &self.layout(&sc.kinds),
                 &sc.full,
                 (&sc.fold_params, &sc.fold_noise),
+                j > self.jn,
             ),
             heldout_error_before: self.j0,
             heldout_error_after: j,

@@ -82,10 +82,14 @@ impl<'a> Setting<'a> {
 /// not cross-validated), for each parameter's jackknife, and the
 /// jackknife the runs' noise alone gives each, in standard errors, with
 /// its degrees of freedom ([`crate::diagnose::fit::fold_noise`]).
+/// `inexact`: the fit leaves a held-out error above the noise level, so
+/// each parameter reports the larger of its asymptotic standard error and
+/// its fold spread ([`ParameterValue::with_model_error`]).
 pub(crate) fn parameter_values(
     layout: &Layout,
     f: &FitOutcome,
     (folds, noise): (&[Vec<f64>], &[(f64, f64)]),
+    inexact: bool,
 ) -> Vec<ParameterValue> {
     let at = layout.effects().start;
     let reported = f.reported_std_errors();
@@ -103,7 +107,7 @@ pub(crate) fn parameter_values(
             } else if let Some(se) = f.held_for(at + i) {
                 v.held(se)
             } else {
-                v
+                v.with_model_error(inexact)
             }
         })
         .collect();

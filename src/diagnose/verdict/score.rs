@@ -32,6 +32,8 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+mod base_folds;
+
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
 
@@ -349,7 +351,7 @@ impl<'a> Context<'a> {
             fitted.bounds.clone(),
         );
         let mut linear = linear.clone();
-        complete_curvature(&problem, at, &mut linear);
+        complete_curvature(&problem, at, &mut linear, &full.unseen);
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
             rec.add(Phase::CandidateCurvature, t0.elapsed(), st.count());
         }
@@ -369,6 +371,7 @@ impl<'a> Context<'a> {
         if let (Some(rec), false) = (self.timing, s.kinds().is_empty()) {
             rec.candidate(true);
         }
+        let known = self.base_folds(fitted, full);
         // Folds in parallel too: a candidate whose fit is slow (a steering
         // compliance solves for the wheel's slip at every force) would
         // otherwise leave one core idle at the end of the singles.
@@ -377,6 +380,10 @@ impl<'a> Context<'a> {
             .map(|k| {
                 let t0 = Instant::now();
                 let base = &self.bases.folds[k];
+                if let Some(q) = known.map(|folds| folds[k].clone()) {
+                    self.tick();
+                    return (self.heldout_errors(k, &s.layout.model(base, &q)), q, true);
+                }
                 let stamps = self.timing.map(|_| Stamps::default());
                 let problem = Problem::new(
                     |p: &[f64]| {
@@ -393,11 +400,7 @@ impl<'a> Context<'a> {
                 .with_prior(fitted.prior);
                 let rows = training_rows(&self.runs, &self.folds[k], problem.prior_count());
                 let f = refit(&problem, full, &rows);
-                let model = s.layout.model(base, &f.params);
-                let mut e = ChannelErrors::default();
-                for &i in &self.folds[k] {
-                    e.add(&self.runs[i].errors(&model));
-                }
+                let e = self.heldout_errors(k, &s.layout.model(base, &f.params));
                 self.tick();
                 if let (Some(rec), Some(st)) = (self.timing, &stamps) {
                     rec.add(Phase::CandidateFolds, t0.elapsed(), st.count());

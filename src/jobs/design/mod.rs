@@ -59,6 +59,23 @@ struct ScenarioParts {
     friction: f64,
 }
 
+/// Refuses a driven run whose steer its yaw rate contradicts (a yaw rate
+/// in the other sign convention, a steer in degrees), by the rule
+/// `diagnose` and `metrics` refuse one
+/// ([`crate::metrics::measured::steer_problem`], the campaign's wheelbase):
+/// measured against the candidates, a negated yaw rate reads as a
+/// separation favouring whichever fits it worse, not as a unit slip.
+fn steer_against_yaw(c: &Campaign, run: &crate::measured::MeasuredRun) -> Result<(), Error> {
+    use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
+    let l = c.vehicle.wheelbase();
+    let problem = yaw_per_neutral(run, l, c.settings.min_speed)
+        .and_then(|y| steer_problem(&y, Wheelbase::Known(l)));
+    match problem {
+        Some(p) => Err(crate::error::InputError::problem(&run.path, p).into()),
+        None => Ok(()),
+    }
+}
+
 /// Designs for the diagnosis in `dir` (its campaign at `campaign`, else
 /// where the diagnosis read it), measures the runs `driven` against the
 /// first set, for the output folder `out` (default `<dir>/design`).
@@ -106,6 +123,7 @@ pub fn run(
         .iter()
         .map(|p| {
             let run = read_run(p)?;
+            steer_against_yaw(&c, &run)?;
             let mut m = measured(&c, &fitted, &first, &run)?;
             if let Some(set) = d.sets.first() {
                 compare(&mut m, set, &run, &d.logging);

@@ -4,7 +4,7 @@
 //! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
-use crate::design::{Recommendation, SetDesign, Worth};
+use crate::design::{Measured, Recommendation, Scored, SetDesign, Worth};
 use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
@@ -14,18 +14,7 @@ const PARTIAL: f64 = 0.98;
 impl DesignReport {
     /// What the design found, in lines.
     pub fn summary(&self) -> Vec<String> {
-        let l = &self.design.limits;
-        let mut out = vec![format!(
-            "limits: {:.1}–{:.1} m/s, |ay| ≤ {} m/s² ({} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
-            l.speed.0,
-            l.speed.1,
-            fixed_or_digits(l.ay_max(), 2),
-            fixed_or_digits(100.0 * l.ay_share, 0),
-            l.ay_reached,
-            l.steer_rate,
-            l.ax,
-            self.design.family
-        )];
+        let mut out = vec![self.limits_line()];
         if !self.design.left_out_by_limits.is_empty() {
             out.push(format!(
                 "  the limits leave out {} of the family: {}",
@@ -34,106 +23,10 @@ impl DesignReport {
             ));
         }
         for set in &self.design.sets {
-            let cal = &set.calibration;
-            let measured = match cal.runs {
-                0 => "; none by one noise floor, so none measures the predictions' scatter".into(),
-                // A scatter with no model-form error to stand for (the
-                // reference's residuals at the noise) widens nothing.
-                n if !cal.applied => format!(
-                    "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, but {} leaves no gap above the noise (held-out error {:.3} against a noise level of {:.3}), so no model-form error for that scatter to stand for (the noise of the first sample each run's replays start from makes such a scatter alone), and the uncertainties below are the noise's",
-                    cal.inflation,
-                    set.members[0],
-                    cal.reference.heldout_error,
-                    cal.reference.noise_level
-                ),
-                n if cal.inflation <= 1.0 => format!(
-                    "; the {n} that separate them by a noise floor or more measure it within the noise's scatter, so the uncertainties below are the noise's"
-                ),
-                n => format!(
-                    "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
-                    cal.inflation
-                ),
-            };
-            out.push(format!(
-                "{}: the campaign's runs separate them by D = {:.1} noise floors{measured}",
-                set.members.join(" / "),
-                set.campaign_separation
-            ));
-            for (k, s) in set.ranked.iter().enumerate() {
-                let expected = match (s.expected, s.uncertainty) {
-                    (Some(e), Some(u)) if e < 0.0 => format!(
-                        "; a driven run is expected to measure {e:.1} ± {u:.1} (below 0: the noise of the start the replays take costs the reference more than its look-alike, favouring the look-alike on average)"
-                    ),
-                    (Some(e), Some(u)) => {
-                        format!("; a driven run is expected to measure {e:.1} ± {u:.1}")
-                    }
-                    _ => String::new(),
-                };
-                let enough = match s.repetitions {
-                    Some(0) => String::new(),
-                    Some(k) => format!(
-                        "; the diagnosis tells them apart after {k} such run{}",
-                        if k == 1 { "" } else { "s" }
-                    ),
-                    None if s.expected.is_some() => format!(
-                        "; more than {} such runs before the diagnosis tells them apart",
-                        crate::design::MAX_REPETITIONS
-                    ),
-                    None => String::new(),
-                };
-                out.push(format!(
-                    "  {}. {} — D = {:.1}{expected}{}{enough}: {}",
-                    k + 1,
-                    s.name,
-                    s.separation,
-                    worth_words(s.worth),
-                    s.description
-                ));
-            }
-            out.extend(recommendation_line(set));
-            out.extend(advised_line(set, self.design.family - set.excluded.len()));
-            if !set.excluded.is_empty() {
-                out.push(format!(
-                    "  left out: {} beyond the limits or diverged (design.json lists them)",
-                    set.excluded.len()
-                ));
-            }
+            out.extend(set_lines(set, self.design.family));
         }
         for m in &self.measured {
-            out.push(format!(
-                "measured: {} separates them by {:.1} noise floors and favours {}",
-                m.run, m.separation, m.favours
-            ));
-            out.push(match &m.predicted {
-                Some(p) => format!(
-                    "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
-                    p.manoeuvre,
-                    p.expected,
-                    p.uncertainty,
-                    p.deviation,
-                    if p.steer_difference > 0.1f64.to_radians() {
-                        format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
-                    } else {
-                        String::new()
-                    }
-                ),
-                None => "  no prediction to compare: the family has no manoeuvre of this run's file name".into(),
-            });
-            if let Some(p) = &m.predicted {
-                if p.coverage < PARTIAL {
-                    out.push(format!(
-                        "  warning: the run covers {:.0} % of the manoeuvre's length: its separation is that of a part, the prediction that of the whole",
-                        100.0 * p.coverage
-                    ));
-                }
-                if !p.missing_channels.is_empty() {
-                    let names: Vec<&str> = p.missing_channels.iter().map(|c| c.name()).collect();
-                    out.push(format!(
-                        "  warning: the run does not log {}, which the prediction counts: its separation lacks their part",
-                        names.join(", ")
-                    ));
-                }
-            }
+            out.extend(measured_lines(m));
         }
         if !self.stale.is_empty() {
             out.push(format!(
@@ -146,6 +39,148 @@ impl DesignReport {
         out.push(format!("wrote {}", self.out_dir.display()));
         out
     }
+
+    /// The limits the manoeuvres keep to and the family's size.
+    fn limits_line(&self) -> String {
+        let l = &self.design.limits;
+        format!(
+            "limits: {:.1}–{:.1} m/s, |ay| ≤ {} m/s² ({} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
+            l.speed.0,
+            l.speed.1,
+            fixed_or_digits(l.ay_max(), 2),
+            fixed_or_digits(100.0 * l.ay_share, 0),
+            l.ay_reached,
+            l.steer_rate,
+            l.ax,
+            self.design.family
+        )
+    }
+}
+
+/// One set's lines: the campaign's separation and its calibration, each
+/// ranked manoeuvre, the recommendation, the diagnosis's advice and what
+/// was left out (of a family of `family` manoeuvres).
+fn set_lines(set: &SetDesign, family: usize) -> Vec<String> {
+    let mut out = vec![format!(
+        "{}: the campaign's runs separate them by D = {:.1} noise floors{}",
+        set.members.join(" / "),
+        set.campaign_separation,
+        calibration_words(set)
+    )];
+    for (k, s) in set.ranked.iter().enumerate() {
+        out.push(ranked_line(k, s));
+    }
+    out.extend(recommendation_line(set));
+    out.extend(advised_line(set, family - set.excluded.len()));
+    if !set.excluded.is_empty() {
+        out.push(format!(
+            "  left out: {} beyond the limits or diverged (design.json lists them)",
+            set.excluded.len()
+        ));
+    }
+    out
+}
+
+/// How the campaign's own runs calibrate a set's uncertainties, in words
+/// after its separation.
+fn calibration_words(set: &SetDesign) -> String {
+    let cal = &set.calibration;
+    let mut measured = match cal.runs {
+        0 => "; none by a tenth of a noise floor, so none measures the predictions' scatter".into(),
+        n if cal.inflation <= 1.0 => format!(
+            "; the {n} that separate them by a tenth of a noise floor or more measure it within the noise's scatter, so the uncertainties below are the noise's"
+        ),
+        n => format!(
+            "; the {n} that separate them by a tenth of a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
+            cal.inflation
+        ),
+    };
+    // The scatter holds a model-form error only along the differences the
+    // campaign's runs show (`Calibration`).
+    if cal.reference.model_form() {
+        measured += &format!(
+            "; {} leaves a gap above the noise (held-out error {:.3} against a noise level of {:.3}), a model-form error this scatter holds only along the differences these runs show, so each uncertainty below adds the most it can move a driven run ({} of the noise's variance a sample, over the run's samples)",
+            set.members[0],
+            cal.reference.heldout_error,
+            cal.reference.noise_level,
+            crate::format::readable(cal.reference.excess(), 2)
+        );
+    }
+    measured
+}
+
+/// The `k`-th (from 0) ranked manoeuvre: its separation, expectation,
+/// worth and the runs the diagnosis needs.
+fn ranked_line(k: usize, s: &Scored) -> String {
+    let expected = match (s.expected, s.uncertainty) {
+        (Some(e), Some(u)) if e < 0.0 => format!(
+            "; a driven run is expected to measure {e:.1} ± {u:.1} (below 0: the noise of the start the replays take costs the reference more than its look-alike, favouring the look-alike on average)"
+        ),
+        (Some(e), Some(u)) => {
+            format!("; a driven run is expected to measure {e:.1} ± {u:.1}")
+        }
+        _ => String::new(),
+    };
+    let enough = match s.repetitions {
+        Some(0) => String::new(),
+        Some(k) => format!(
+            "; the diagnosis tells them apart after {k} such run{}",
+            if k == 1 { "" } else { "s" }
+        ),
+        None if s.expected.is_some() => format!(
+            "; more than {} such runs before the diagnosis tells them apart",
+            crate::design::MAX_REPETITIONS
+        ),
+        None => String::new(),
+    };
+    format!(
+        "  {}. {} — D = {:.1}{expected}{}{enough}: {}",
+        k + 1,
+        s.name,
+        s.separation,
+        worth_words(s.worth),
+        s.description
+    )
+}
+
+/// A run driven after the design: its separation against the prediction,
+/// and warnings where it is part of the manoeuvre or lacks channels.
+fn measured_lines(m: &Measured) -> Vec<String> {
+    let mut out = vec![format!(
+        "measured: {} separates them by {:.1} noise floors and favours {}",
+        m.run, m.separation, m.favours
+    )];
+    out.push(match &m.predicted {
+        Some(p) => format!(
+            "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
+            p.manoeuvre,
+            p.expected,
+            p.uncertainty,
+            p.deviation,
+            if p.steer_difference > 0.1f64.to_radians() {
+                format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
+            } else {
+                String::new()
+            }
+        ),
+        None => "  no prediction to compare: the family has no manoeuvre of this run's file name".into(),
+    });
+    if let Some(p) = &m.predicted {
+        if p.coverage < PARTIAL {
+            out.push(format!(
+                "  warning: the run covers {:.0} % of the manoeuvre's length: its separation is that of a part, the prediction that of the whole",
+                100.0 * p.coverage
+            ));
+        }
+        if !p.missing_channels.is_empty() {
+            let names: Vec<&str> = p.missing_channels.iter().map(|c| c.name()).collect();
+            out.push(format!(
+                "  warning: the run does not log {}, which the prediction counts: its separation lacks their part",
+                names.join(", ")
+            ));
+        }
+    }
+    out
 }
 
 /// Whether a manoeuvre is recommended, in words after its expectation.

@@ -217,21 +217,7 @@ pub fn branch_diagram(
 ) -> Result<(), Error> {
     let line = &axis_lines(&res.grid, axis)[0];
     let held = slice(&res.grid, axis, &res.points[line[0]].condition);
-    let mut beta = Panel {
-        title: format!(
-            "steering equilibria: sideslip against {}{held}",
-            axis.name()
-        ),
-        x_label: axis_label(axis).into(),
-        y_label: "β_e [deg]".into(),
-        ..Panel::default()
-    };
-    let mut yaw = Panel {
-        title: format!("yaw rate against {}", axis.name()),
-        x_label: axis_label(axis).into(),
-        y_label: "r_e [deg/s]".into(),
-        ..Panel::default()
-    };
+    let (mut beta, mut yaw) = branch_panels(axis, &held);
     let d = drawn(res, axis, bx);
     let params: Vec<f64> = d.params.iter().map(|&p| display(axis, p)).collect();
     let eqs = &d.eqs;
@@ -274,6 +260,38 @@ pub fn branch_diagram(
         beta.series.push(stability::equilibria(cl, &x, &b, 4));
         yaw.series.push(stability::equilibria(cl, &x, &r, 4));
     }
+    mark_folds(&mut beta, &mut yaw, &folds, axis);
+    for cl in Class::ALL.into_iter().filter(|c| present.contains(c)) {
+        beta.series.push(stability::key(cl));
+        yaw.series.push(stability::key(cl));
+    }
+    Figure::stack(vec![beta, yaw]).save(path)
+}
+
+/// The branch diagram's two panels, sideslip over yaw rate, titled with
+/// the swept parameter and the values `held` of the others.
+fn branch_panels(axis: Axis, held: &str) -> (Panel, Panel) {
+    let beta = Panel {
+        title: format!(
+            "steering equilibria: sideslip against {}{held}",
+            axis.name()
+        ),
+        x_label: axis_label(axis).into(),
+        y_label: "β_e [deg]".into(),
+        ..Panel::default()
+    };
+    let yaw = Panel {
+        title: format!("yaw rate against {}", axis.name()),
+        x_label: axis_label(axis).into(),
+        y_label: "r_e [deg/s]".into(),
+        ..Panel::default()
+    };
+    (beta, yaw)
+}
+
+/// The bifurcations `folds` of the line as points on both panels, named
+/// by the first one's kind.
+fn mark_folds(beta: &mut Panel, yaw: &mut Panel, folds: &[&Bifurcation], axis: Axis) {
     if let Some(first) = folds.first() {
         let fx: Vec<f64> = folds
             .iter()
@@ -288,11 +306,6 @@ pub fn branch_diagram(
         yaw.series
             .push(Series::line(l, &fx, &deg(|b| b.yaw_rate), FOLD).styled(Style::Points(7)));
     }
-    for cl in Class::ALL.into_iter().filter(|c| present.contains(c)) {
-        beta.series.push(stability::key(cl));
-        yaw.series.push(stability::key(cl));
-    }
-    Figure::stack(vec![beta, yaw]).save(path)
 }
 
 /// The bifurcations located along `line` (the other parameters at its

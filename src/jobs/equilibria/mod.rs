@@ -241,41 +241,14 @@ impl EquilibriaReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
         let (sw, s) = (&self.sweep, &self.summary);
-        let mut out = vec![
-            format!(
-                "{}: {} ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, {}",
-                sw.name,
-                plural(s.conditions, "condition", "conditions"),
-                sw.grid.steer.len(),
-                sw.grid.friction.len(),
-                sw.grid.speed.len(),
-                sw.model.front.model_name(),
-                sw.model.rear.model_name(),
-                match sw.model.options.kinematics {
-                    Kinematics::Exact => "exact",
-                    Kinematics::SmallAngle => "small-angle",
-                },
-                if sw.model.options.load_transfer {
-                    "with load transfer"
-                } else {
-                    "no load transfer"
-                }
-            ),
-            format!(
-                "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {}",
-                sw.search_box.beta_max, sw.search_box.yaw_rate_max, sw.pso.seed, sw.pso.particles, sw.pso.iterations,
-                match sw.pso.fitness {
-                    Fitness::Residual => "residual",
-                    Fitness::NewtonStep => "newton-step",
-                }
-            ),
-        ];
+        let mut out = self.sweep_lines();
         let unlimited = crate::jobs::simulate::unlimited::friction_ignored;
         if let Some(note) = unlimited(&sw.model, &sw.grid.friction) {
             out.push(format!(
                 "  note: {note}, so every friction of the sweep gives the same equilibria"
             ));
         }
+        out.extend(sw.notes.iter().map(|n| format!("  note: {n}")));
         if s.conditions_with_continua > 0 {
             out.push(format!(
                 "  {} a continuum of equilibria (both axles sliding at constant force: \
@@ -298,21 +271,7 @@ impl EquilibriaReport {
             ));
         }
         for b in &s.bifurcations {
-            out.push(format!(
-                "  {} along {} at steer {:.6} rad, friction {:.4}, speed {:.3} m/s: β {:.4} rad, r {:.4} rad/s, {} + {}, residual {:.1e}, criterion {:.1e}, {}",
-                b.kind.name(),
-                b.axis.name(),
-                b.at.steer,
-                b.at.friction,
-                b.at.speed,
-                b.beta,
-                b.yaw_rate,
-                b.kinds[0].name(),
-                b.kinds[1].name(),
-                b.residual,
-                b.criterion,
-                if b.verified { "verified" } else { "NOT verified" }
-            ));
+            out.push(bifurcation_line(b));
             out.extend(critical_speed_line(&self.sweep.model, b));
         }
         out.extend(
@@ -322,6 +281,41 @@ impl EquilibriaReport {
                 .map(|l| format!("  {l}")),
         );
         out
+    }
+
+    /// The sweep in two lines: its grid, tyres and kinematics; the search
+    /// box and the swarm.
+    fn sweep_lines(&self) -> Vec<String> {
+        let (sw, s) = (&self.sweep, &self.summary);
+        vec![
+        format!(
+            "{}: {} ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, {}",
+            sw.name,
+            plural(s.conditions, "condition", "conditions"),
+            sw.grid.steer.len(),
+            sw.grid.friction.len(),
+            sw.grid.speed.len(),
+            sw.model.front.model_name(),
+            sw.model.rear.model_name(),
+            match sw.model.options.kinematics {
+                Kinematics::Exact => "exact",
+                Kinematics::SmallAngle => "small-angle",
+            },
+            if sw.model.options.load_transfer {
+                "with load transfer"
+            } else {
+                "no load transfer"
+            }
+        ),
+        format!(
+            "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {}",
+            sw.search_box.beta_max, sw.search_box.yaw_rate_max, sw.pso.seed, sw.pso.particles, sw.pso.iterations,
+            match sw.pso.fitness {
+                Fitness::Residual => "residual",
+                Fitness::NewtonStep => "newton-step",
+            }
+        ),
+        ]
     }
 
     /// Writes the three tables, the summary and the figures.
@@ -452,6 +446,26 @@ fn linear_critical_speed(model: &crate::vehicle::VehicleModel) -> Option<f64> {
 fn zero_slip_critical_speed(model: &VehicleModel, friction: f64, speed: f64) -> Option<f64> {
     use crate::jobs::simulate::critical::{critical_speed_of, understeer_gradient_at};
     critical_speed_of(model, understeer_gradient_at(model, friction, speed))
+}
+
+/// One located bifurcation: kind, axis, where, the state there, the two
+/// kinds of equilibrium that meet, and how well it is verified.
+fn bifurcation_line(b: &Bifurcation) -> String {
+    format!(
+        "  {} along {} at steer {:.6} rad, friction {:.4}, speed {:.3} m/s: β {:.4} rad, r {:.4} rad/s, {} + {}, residual {:.1e}, criterion {:.1e}, {}",
+        b.kind.name(),
+        b.axis.name(),
+        b.at.steer,
+        b.at.friction,
+        b.at.speed,
+        b.beta,
+        b.yaw_rate,
+        b.kinds[0].name(),
+        b.kinds[1].name(),
+        b.residual,
+        b.criterion,
+        if b.verified { "verified" } else { "NOT verified" }
+    )
 }
 
 /// The line under a critical speed along speed — a zero-eigenvalue point,

@@ -12,6 +12,7 @@ mod figures;
 mod numbers;
 mod rbf_fit;
 mod table;
+mod target_range;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, StudyInput};
 use crate::jobs::shard::{
@@ -493,7 +494,7 @@ impl StudyReport {
         }
         if let Some(inv) = &self.inverse {
             for t in &inv.targets {
-                out.extend(target_lines(t, inv.reference, u));
+                out.extend(target_lines(t, inv.reference, u, &self.map));
             }
         }
         out
@@ -526,7 +527,7 @@ impl StudyReport {
 }
 
 /// The lines of one answered target.
-fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit) -> Vec<String> {
+fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit, map: &Map) -> Vec<String> {
     let n = t.region.len();
     let mut out = vec![format!(
         "  {} = {} ± {}: {n} map {} every constraint",
@@ -557,7 +558,11 @@ fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit) -> Vec<
             b.resimulated,
             b.distance_to_reference
         ),
-        None if er.curve.is_empty() => format!("  {name} = {}: not reached on the map", t.target),
+        None if er.curve.is_empty() => format!(
+            "  {name} = {}: not reached on the map{}",
+            t.target,
+            target_range::beyond_the_map(map, t.metric, t.target)
+        ),
         None => format!(
             "  {name} = {}: a curve of {} map points, but no point on it re-simulates to the target (the secant in the rear stiffness did not converge from the map's closest point)",
             t.target,

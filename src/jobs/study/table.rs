@@ -25,6 +25,10 @@ pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Res
     let rows = samples.iter().map(|x| {
         let response = x.response();
         let note = match (response.note(), x.handling_metrics()) {
+            // A response still settling keeps its empty cells' reason.
+            (Some(n), Some(m)) if !empty_cells(&m).is_empty() => {
+                format!("{n}; {}", empty_cells(&m))
+            }
             (Some(n), _) => n,
             (None, Some(m)) => empty_cells(&m),
             (None, None) => String::new(),
@@ -116,9 +120,9 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
     }
     if s.large_sideslip > 0 {
         kinds.push(format!(
-            "{} {} at a steady sideslip beyond 10° on tyres with no friction limit (far outside a linear tyre's range)",
+            "{} {} a sideslip beyond 10° by the end of the step on tyres with no friction limit (far outside a linear tyre's range)",
             s.large_sideslip,
-            verb(s.large_sideslip, "turns", "turn")
+            verb(s.large_sideslip, "reaches", "reach")
         ));
     }
     if s.not_settled > 0 {
@@ -136,9 +140,11 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
         ));
     }
     Some(format!(
-        "  {total} of {} combinations are no handling response: {}; their metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
+        "  {total} of {} {} no handling response: {}; {} metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
         s.combinations,
-        kinds.join(", ")
+        verb(total, "combinations is", "combinations are"),
+        kinds.join(", "),
+        verb(total, "its", "their")
     ))
 }
 

@@ -83,8 +83,8 @@ mod tests;
 
 pub use bank::{BankCheck, BankSeen, PLAUSIBLE_AY_OFFSET};
 pub use report::{
-    Agreement, CalibrationReport, CalibrationSpan, ChannelCalibration, ChannelMean, Criteria,
-    Offset, Pooled, RejectedStraight, Rejection, SpanKind,
+    Agreement, BankedStraights, CalibrationReport, CalibrationSpan, ChannelCalibration,
+    ChannelMean, Criteria, Offset, Pooled, RejectedStraight, Rejection, SpanKind,
 };
 
 use super::clean::RunChannel;
@@ -125,6 +125,14 @@ pub const STRAIGHT_TRIM: f64 = 0.5;
 pub const STRAIGHT_SECONDS: f64 = 3.0;
 /// Standard errors within which straights and standstills agree.
 pub const AGREEMENT_SIGMAS: f64 = 3.0;
+/// Straight: largest |logged bank| (the span's mean) on which its sideslip
+/// is taken for an offset, rad (0.5°). Driving straight on a bank θ the
+/// tyres hold the car up the slope with a lateral force `m·g·sin θ`, so
+/// the car crabs: `β ≈ −sin θ/k_r` at the rear axle's cornering
+/// coefficient `k_r` (per unit load; 20 1/rad and 10° give 0.0087 rad,
+/// the size of a sensor offset). At 0.5° and the road tyres' lowest 8
+/// 1/rad that is 0.0011 rad, about a sideslip sensor's noise.
+pub const STRAIGHT_BETA_BANK: f64 = 0.008727;
 
 /// The criteria, as the report states them.
 pub const CRITERIA: Criteria = Criteria {
@@ -141,6 +149,7 @@ pub const CRITERIA: Criteria = Criteria {
     straight_speed_variation: STRAIGHT_SPEED_VARIATION,
     straight_trim: STRAIGHT_TRIM,
     straight_seconds: STRAIGHT_SECONDS,
+    straight_beta_bank: STRAIGHT_BETA_BANK,
     outlier_mads: stats::OUTLIER_MADS,
     agreement_quantile: stats::AGREEMENT_QUANTILE,
     agreement_sigmas: AGREEMENT_SIGMAS,
@@ -214,9 +223,20 @@ fn measure(run: &MeasuredRun, lo: usize, hi: usize, kind: SpanKind) -> Calibrati
         .collect();
     let mut channels = Vec::new();
     let mut held = Vec::new();
+    let beta_bank = match (&run.bank, &run.beta, kind) {
+        (Some(b), Some(_), SpanKind::Straight) if !live.is_empty() => {
+            let mean = live.iter().map(|&i| b[i]).sum::<f64>() / live.len() as f64;
+            (mean.abs() > STRAIGHT_BETA_BANK).then_some(mean)
+        }
+        _ => None,
+    };
     for ch in CHANNELS {
         // No velocity, no sideslip.
         if ch == RunChannel::Beta && kind == SpanKind::Standstill {
+            continue;
+        }
+        // On a logged bank the car crabs: its sideslip is no offset.
+        if ch == RunChannel::Beta && beta_bank.is_some() {
             continue;
         }
         let Some(x) = values(run, ch) else { continue };
@@ -245,6 +265,7 @@ fn measure(run: &MeasuredRun, lo: usize, hi: usize, kind: SpanKind) -> Calibrati
         steer: crate::measured::clean::median(&mut steer),
         channels,
         held,
+        beta_bank,
     }
 }
 
@@ -313,7 +334,10 @@ fn channel_calibration(
 ) -> Option<ChannelCalibration> {
     let standstill = pooled(spans, SpanKind::Standstill, channel);
     let straight = pooled(spans, SpanKind::Straight, channel);
-    if standstill.is_none() && straight.is_none() {
+    let banked = (channel == RunChannel::Beta)
+        .then(|| BankedStraights::of(spans))
+        .flatten();
+    if standstill.is_none() && straight.is_none() && banked.is_none() {
         return None;
     }
     let agreement = standstill.zip(straight).map(|(a, b)| {
@@ -351,5 +375,6 @@ fn channel_calibration(
         standstill,
         straight,
         agreement,
+        banked_straights: banked,
     })
 }

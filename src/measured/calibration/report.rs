@@ -43,6 +43,9 @@ pub struct Criteria {
     pub straight_trim: f64,
     /// Shortest straight after the cut, s.
     pub straight_seconds: f64,
+    /// Largest |mean logged bank| of a straight whose sideslip is taken
+    /// for an offset, rad (beyond it the car crabs).
+    pub straight_beta_bank: f64,
     /// Robust deviations from a span's median beyond which a sample is a
     /// glitch.
     pub outlier_mads: f64,
@@ -130,6 +133,53 @@ pub struct CalibrationSpan {
     /// Channels holding one value throughout (gated or held by the
     /// logger): no offset to measure.
     pub held: Vec<RunChannel>,
+    /// A straight on a logged bank beyond [`Criteria::straight_beta_bank`]
+    /// (its mean bank, rad): its sideslip is the car's crab, not measured
+    /// as an offset.
+    pub beta_bank: Option<f64>,
+}
+
+/// The straights whose sideslip was not taken for an offset because they
+/// lie on a logged bank (the car crabs there).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BankedStraights {
+    /// Straights.
+    pub spans: usize,
+    /// Their total length, s.
+    pub seconds: f64,
+    /// Least |mean bank| among them, rad.
+    pub least_bank: f64,
+    /// Greatest |mean bank| among them, rad.
+    pub greatest_bank: f64,
+}
+
+impl BankedStraights {
+    /// Those of `spans`; None where there are none.
+    pub fn of(spans: &[&CalibrationSpan]) -> Option<Self> {
+        let banked: Vec<(f64, f64)> = spans
+            .iter()
+            .filter_map(|s| s.beta_bank.map(|b| (b.abs(), s.seconds())))
+            .collect();
+        (!banked.is_empty()).then(|| Self {
+            spans: banked.len(),
+            seconds: banked.iter().map(|b| b.1).sum(),
+            least_bank: banked.iter().map(|b| b.0).fold(f64::MAX, f64::min),
+            greatest_bank: banked.iter().map(|b| b.0).fold(0.0, f64::max),
+        })
+    }
+
+    /// In words.
+    pub fn words(&self) -> String {
+        let deg = |a: f64| crate::format::fixed(a.to_degrees(), 1);
+        format!(
+            "{} {} ({:.0} s) on a logged bank of {}° to {}° left out: a car crabs on a bank (its tyres hold it up the slope, β ≈ −sin θ over the rear axle's cornering coefficient), which is no sensor offset",
+            self.spans,
+            SpanKind::Straight.words(self.spans),
+            self.seconds,
+            deg(self.least_bank),
+            deg(self.greatest_bank)
+        )
+    }
 }
 
 impl CalibrationSpan {
@@ -284,6 +334,8 @@ pub struct ChannelCalibration {
     /// bank reading is taken and no unlogged bank reads in them, else the
     /// straights'; None where neither is.
     pub offset: Option<Offset>,
+    /// Sideslip: the straights on a logged bank, left out.
+    pub banked_straights: Option<BankedStraights>,
 }
 
 /// The offset a channel's calibration gives, and the spans it comes from.
@@ -426,8 +478,12 @@ impl ChannelCalibration {
                     parts.join(", ")
                 )
             }
+            None if parts.is_empty() => format!("{name}: no offset measured"),
             None => format!("{name} offset{bank} {}", parts.join(", ")),
         };
+        if let Some(b) = &self.banked_straights {
+            out.push_str(&format!("; {}", b.words()));
+        }
         if let Some(a) = &self.agreement {
             let verdict = if a.agree { "agree" } else { "differ" };
             out.push_str(&format!(

@@ -9,7 +9,9 @@
 //! steady value held between two codes reads one of them: a sideslip step
 //! of −0.2135° read −0.2000° (−6.3 %) and TB 0.0680 for 0.0729, said
 //! nowhere. The channel, its q and the bound ±q/2 on its steady change
-//! and on what is derived from it are said.
+//! and on what is derived from it are said; the steer's too, where it is a
+//! logger's grid (a steer step of a few counts: the gain per steer known
+//! within ±q/2), not a simulation's sampled ramp.
 //!
 //! ISO 7401 starts the step from straight running: a step from a steady
 //! turn gives changes from that turn (the table's steady ay is the
@@ -108,6 +110,58 @@ pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
             })
         })
         .collect()
+}
+
+/// The warning of a steer written on a grid coarse against its step: a
+/// steer step of a few logger counts is known only within ±q/2, and the
+/// yaw-rate gain (yaw rate per steer) with it. A steer is a logger's grid
+/// only where every sample is a whole number of steps q from the first
+/// and its changes are not one stretch of equal ones: a noise-free ramp
+/// (or a jump) sampled by a simulation changes by the same amount at every
+/// sample of its rise, each a multiple of that change, and is no grid.
+pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<String> {
+    let x = &piece.steer;
+    let q = resolution(x)?;
+    let step = m.steer_step.abs();
+    let share = q / 12f64.sqrt() / step;
+    if !(share > COARSE_SHARE && step > 0.0) || !on_grid(x, q) || one_ramp(x, q) {
+        return None;
+    }
+    let deg = 180.0 / std::f64::consts::PI;
+    Some(format!(
+        "steer is written in steps of {} deg and its step is {} deg, {} of them: the rounding's deviation q/√12 is {} % of the step, so the steer step is known only within ±q/2 = ±{} %, and the yaw-rate gain (yaw rate per steer) with it; log it finer",
+        crate::format::rounded(q * deg, 3),
+        crate::format::readable(step * deg, 4),
+        crate::format::rounded(step / q, 2),
+        crate::format::readable(100.0 * share, 2),
+        crate::format::rounded(50.0 * q / step, 3),
+    ))
+}
+
+/// Whether every finite sample of `x` lies a whole number of steps `q`
+/// from the first (to a thousandth of a step: a decimal grid is not exact
+/// in binary).
+fn on_grid(x: &[f64], q: f64) -> bool {
+    let x0 = x[0];
+    x.iter()
+        .filter(|v| v.is_finite())
+        .all(|v| ((v - x0) / q - ((v - x0) / q).round()).abs() < 1e-3)
+}
+
+/// Whether the changes of `x` are one stretch of consecutive samples each
+/// changing by the same amount `q` (a sampled ramp or a single jump).
+fn one_ramp(x: &[f64], q: f64) -> bool {
+    let moving: Vec<usize> = x
+        .windows(2)
+        .enumerate()
+        .filter(|(_, w)| w[1] != w[0])
+        .map(|(i, _)| i)
+        .collect();
+    let contiguous = moving.windows(2).all(|w| w[1] == w[0] + 1);
+    let equal = moving
+        .iter()
+        .all(|&i| ((x[i + 1] - x[i]).abs() - q).abs() <= 1e-3 * q);
+    contiguous && equal
 }
 
 /// The warning of a step that starts from a steady turn: the yaw rate and

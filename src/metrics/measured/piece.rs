@@ -80,6 +80,7 @@ pub(super) fn measure(
     warnings.extend(withhold_unmeasured_peak(&mut m, &spans, reach));
     warnings.extend(selected_by_noise(&m));
     warnings.extend(coarse_grid::coarse(piece, &m));
+    warnings.extend(coarse_grid::coarse_steer(piece, &m));
     warnings.extend(coarse_grid::from_turn(piece, &m, settings.pre_window));
     Ok((m, p, warnings))
 }
@@ -194,9 +195,9 @@ fn withhold_unmeasured_peak(m: &mut StepMetrics, spans: &[Span], reach: f64) -> 
     m.yaw_rate_overshoot_spread = None;
     m.yaw_rate_peak_unmeasured = true;
     Some(format!(
-        "the yaw rate's largest value lies at {} s, in or beside {} samples from {} to {} s where {}: the log does not measure the peak there, so the peak time, the overshoot and TB are withheld",
+        "the yaw rate's largest value lies at {} s, in or beside {} from {} to {} s where {}: the log does not measure the peak there, so the peak time, the overshoot and TB are withheld",
         crate::format::readable(at, 3),
-        span.samples,
+        crate::format::plural(span.samples, "sample", "samples"),
         crate::format::readable(span.from, 3),
         crate::format::readable(span.to, 3),
         span.why

@@ -67,11 +67,9 @@ fn holes_said(t: &[f64], dt: f64) -> Option<String> {
     let longest = h.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
     let missing: usize = h.iter().map(|x| x.2).sum();
     Some(format!(
-        "the log misses {missing} samples in {} in time (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics",
-        match h.len() {
-            1 => "1 hole".to_string(),
-            k => format!("{k} holes"),
-        },
+        "the log misses {} in {} in time (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics",
+        crate::format::plural(missing, "sample", "samples"),
+        crate::format::plural(h.len(), "hole", "holes"),
         crate::format::readable(longest.1, 3),
         crate::format::readable(longest.0, 3),
         crate::format::readable(1.0 / dt, 3)

@@ -5,6 +5,7 @@
 //! and the choices are in the parent module's notes. SI and radians; `α`
 //! here is TNO's.
 
+use super::mode::Checked;
 use super::{AlphaStar, MagicFormula, MfVersion};
 use crate::tyre::kernels;
 use std::f64::consts::PI;
@@ -77,6 +78,28 @@ pub(super) struct LateralAtLoad {
     pub(super) ey0: f64,
     pub(super) ey_a: f64,
     pub(super) ey_b: f64,
+}
+
+/// The prelude's per-load scalars (see [`MagicFormula::normalised`]).
+struct Normalised {
+    /// The load given (before the limit checks) and the checked loads.
+    fz_given: f64,
+    loads: Checked,
+    /// `dfz`, `dpi`, `γ*` (sin γ or γ) and `Fz/FNOMIN` of `Mx` and `My`.
+    dfz: f64,
+    dpi: f64,
+    gs: f64,
+    fzr_mx: f64,
+    fzr_my: f64,
+    /// `exp(PKX3·dfz)` and `My`'s powers, the C library's calls.
+    load_exp: f64,
+    my_powers: f64,
+    /// λ*μx, λ'μx, λ*μy, λ'μy, and `μy` without its camber factor.
+    lmux_s: f64,
+    lmux_p: f64,
+    lmuy_s: f64,
+    lmuy_p: f64,
+    mu0: f64,
 }
 
 /// Everything that depends only on the load, pressure and camber (and the
@@ -158,7 +181,8 @@ impl MagicFormula {
     /// The prelude at load `fz > 0`, ISO camber `gamma`, pressure `p` (Pa),
     /// friction scale `mu_scale` and slip-speed friction factor
     /// `speed_factor` (1 without `LMUV`). Terms whose coefficients are
-    /// exactly zero skip their transcendental functions.
+    /// exactly zero skip their transcendental functions. Its stages are
+    /// `#[inline(always)]` functions: one body, as before the split.
     #[inline(always)]
     pub(super) fn prelude(
         &self,
@@ -170,109 +194,37 @@ impl MagicFormula {
     ) -> Prelude {
         let c = &self.coefficients;
         let v52 = self.version == MfVersion::Mf52;
-        // The rebuild with slip-speed friction starts from the load given.
-        let fz_given = fz;
-        let loads = self.checked(fz, gamma, p);
-        let (fz, gamma, p) = (loads.fz, loads.gamma, loads.p);
+        let n = self.normalised(fz, gamma, p, mu_scale, speed_factor);
+        let (fz, gamma, dfz, dpi, gs) = (n.loads.fz, n.loads.gamma, n.dfz, n.dpi, n.gs);
         let fz0 = c.FNOMIN;
-        let fz0p = c.FNOMIN * c.LFZO;
         let r0 = c.UNLOADED_RADIUS;
-        let dfz = (fz - fz0p) / fz0p;
-        let (fzr_mx, fzr_my) = (loads.fz_mx / fz0, loads.fz_my / fz0);
-        // The C library's exp and ln first: every register is free across
-        // their calls here, later they would spill the prelude's values.
-        let load_exp = if c.PKX3 == 0.0 {
-            1.0
-        } else {
-            (c.PKX3 * dfz).exp()
-        };
-        let my_powers = self.my_powers(fzr_my, p);
-        let dpi = self.dpi(p);
-        let gs = match self.options.alpha_star {
-            AlphaStar::Tan => kernels::sin_cos([gamma, 0.0, 0.0, 0.0], [false; 4])[0],
-            AlphaStar::Angle => gamma,
-        };
-        // Friction scaling with slip speed (λ*_μ) and its digressive form.
-        let lmux_s = c.LMUX * mu_scale * speed_factor;
-        let lmuy_s = c.LMUY * mu_scale * speed_factor;
-        let digress = |l: f64| {
-            if self.options.digressive_mu {
-                A_MU * l / (1.0 + (A_MU - 1.0) * l)
-            } else {
-                l
-            }
-        };
-        let (lmux_p, lmuy_p) = (digress(lmux_s), digress(lmuy_s));
-
-        // Pure longitudinal (everything but the slip).
-        let cx = c.PCX1 * c.LCX;
-        let mux = (c.PDX1 + c.PDX2 * dfz)
-            * (1.0 + c.PPX3 * dpi + c.PPX4 * dpi * dpi)
-            * (1.0 - c.PDX3 * gamma * gamma)
-            * lmux_s;
-        let dx = mux * fz;
-        let kxk = fz
-            * (c.PKX1 + c.PKX2 * dfz)
-            * load_exp
-            * (1.0 + c.PPX1 * dpi + c.PPX2 * dpi * dpi)
-            * c.LKX;
-
-        // Pure lateral: the camber-free factors, then the point's camber
-        // and (6.x, for Mz) zero camber.
-        let free = LateralFree {
-            kya_scale: c.PKY1 * fz0p * (1.0 + c.PPY1 * dpi) * c.LKY,
-            load_ratio: (fz / fz0p) / (1.0 + c.PPY2 * dpi),
-            svy0: fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * lmuy_p,
-            svyg_per_gs: fz * (c.PVY3 + c.PVY4 * dfz) * c.LKYC * lmuy_p,
-            kyg0: fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC,
-            shy0: (c.PHY1 + c.PHY2 * dfz) * c.LHY,
-            mu0: (c.PDY1 + c.PDY2 * dfz) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * lmuy_s,
-            ey0: (c.PEY1 + c.PEY2 * dfz) * c.LEY,
-            fz,
-        };
-        let mu0 = free.mu0;
-        // The angles of Kyα's load curve (at the camber and at zero camber)
-        // and of the overturning moment's load terms, in two array passes.
-        let (x, x0) = (
-            free.load_ratio / (c.PKY2 + c.PKY5 * gs * gs),
-            free.load_ratio / c.PKY2,
-        );
-        let [ax, ax0, a_mx, a_mxg] =
-            kernels::atan([x, x0, (c.QSX6 * fzr_mx).powi(2), c.QSX11 * fzr_mx]);
-        let [sx, sx0, c_mx, _] = kernels::sin_cos(
-            [c.PKY4 * ax, c.PKY4 * ax0, c.QSX5 * a_mx, 0.0],
-            [false, false, true, false],
-        );
-        let lat = self.lateral_at(&free, gs, x, sx);
-        let flat = if gs == 0.0 || v52 {
-            lat
-        } else {
-            self.lateral_at(&free, 0.0, x0, sx0)
-        };
+        let (cx, dx, kxk) = self.longitudinal_load(&n);
+        let (lat, flat, c_mx, a_mxg) = self.lateral_and_overturning_load(&n);
 
         // Aligning moment. γ* in SHt, Et and Dr for every version
         // (MFeval); γ itself in Bt and Dt (TNO eqs. A58/A60) and in s (A56):
         // QBZ4 and QDZ3 linear in γ, the book's γ*, |γ*| and QBZ6 unused.
         let gz = gs;
-        let (bt, dt, dr) = self.aligning_terms(loads.fz_trail, dfz, dpi, gamma, gz, lmuy_s);
+        let (bt, dt, dr) = self.aligning_terms(n.loads.fz_trail, dfz, dpi, gamma, gz, n.lmuy_s);
         let kratio = kxk / lat.kya_g;
 
         let (mx_mixed, mx_load_camber) = self.moment_terms(gamma, c_mx, a_mxg);
+        let fz_mx = n.loads.fz_mx;
 
         Prelude {
-            fz: fz_given,
+            fz: n.fz_given,
             gamma,
-            p,
+            p: n.loads.p,
             mu_scale,
             shx: (c.PHX1 + c.PHX2 * dfz) * c.LHX,
             cx,
             dx,
             bx: kxk / guard(cx * dx),
             ex_load: c.PEX1 + c.PEX2 * dfz + c.PEX3 * dfz * dfz,
-            svx: fz * (c.PVX1 + c.PVX2 * dfz) * c.LVX * lmux_p,
+            svx: fz * (c.PVX1 + c.PVX2 * dfz) * c.LVX * n.lmux_p,
             lat,
             flat,
-            mu0,
+            mu0: n.mu0,
             rbx: c.RBX1 + c.RBX3 * gs * gs,
             exa: self.clip_e(c.REX1 + c.REX2 * dfz),
             svyk_load: fz * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs),
@@ -286,24 +238,151 @@ impl MagicFormula {
             et_gamma: (c.QEZ4 + c.QEZ5 * gz) * (2.0 / PI),
             dt,
             dr,
-            br: c.QBZ9 * c.LKY / lmuy_s + c.QBZ10 * lat.by * lat.cy,
+            br: c.QBZ9 * c.LKY / n.lmuy_s + c.QBZ10 * lat.by * lat.cy,
             kratio2: kratio * kratio,
             s_gamma: (c.SSZ3 + c.SSZ4 * dfz) * gamma,
-            mx_scale: r0 * loads.fz_mx * c.LMX,
+            mx_scale: r0 * fz_mx * c.LMX,
             mx_const: c.QSX1 * c.LVMX - c.QSX2 * gamma * (1.0 + c.PPMX1 * dpi),
             mx_mixed,
             mx_load_camber,
             mx_fy: r0 * c.LMX * (c.QSX13 + c.QSX14 * gamma.abs()),
-            mx_gamma: -(r0 * c.LMX) * (loads.fz_mx * c.QSX12 * gamma * gamma.abs()),
+            mx_gamma: -(r0 * c.LMX) * (fz_mx * c.QSX12 * gamma * gamma.abs()),
             my_scale: -r0 * fz0 * c.LMY,
-            my_powers,
+            my_powers: n.my_powers,
             // MFeval's 5.2 form has no camber term.
             my_gamma: if v52 {
                 0.0
             } else {
-                (c.QSY5 + c.QSY6 * fzr_my) * gamma * gamma
+                (c.QSY5 + c.QSY6 * n.fzr_my) * gamma * gamma
             },
         }
+    }
+
+    /// Fz normalisation and the other per-load scalars: the checked load,
+    /// camber and pressure, `dfz`, `dpi`, `γ*`, the load ratios of `Mx` and
+    /// `My`, their powers and the friction scales (λ*μ, digressive λ'μ).
+    #[inline(always)]
+    fn normalised(
+        &self,
+        fz: f64,
+        gamma: f64,
+        p: f64,
+        mu_scale: f64,
+        speed_factor: f64,
+    ) -> Normalised {
+        let c = &self.coefficients;
+        // The rebuild with slip-speed friction starts from the load given.
+        let fz_given = fz;
+        let loads = self.checked(fz, gamma, p);
+        let fz0 = c.FNOMIN;
+        let fz0p = c.FNOMIN * c.LFZO;
+        let dfz = (loads.fz - fz0p) / fz0p;
+        let (fzr_mx, fzr_my) = (loads.fz_mx / fz0, loads.fz_my / fz0);
+        // The C library's exp and ln first: every register is free across
+        // their calls here, later they would spill the prelude's values.
+        let load_exp = if c.PKX3 == 0.0 {
+            1.0
+        } else {
+            (c.PKX3 * dfz).exp()
+        };
+        let my_powers = self.my_powers(fzr_my, loads.p);
+        let dpi = self.dpi(loads.p);
+        let gs = match self.options.alpha_star {
+            AlphaStar::Tan => kernels::sin_cos([loads.gamma, 0.0, 0.0, 0.0], [false; 4])[0],
+            AlphaStar::Angle => loads.gamma,
+        };
+        // Friction scaling with slip speed (λ*_μ) and its digressive form.
+        let lmux_s = c.LMUX * mu_scale * speed_factor;
+        let lmuy_s = c.LMUY * mu_scale * speed_factor;
+        let digress = |l: f64| {
+            if self.options.digressive_mu {
+                A_MU * l / (1.0 + (A_MU - 1.0) * l)
+            } else {
+                l
+            }
+        };
+        let (lmux_p, lmuy_p) = (digress(lmux_s), digress(lmuy_s));
+        let mu0 = (c.PDY1 + c.PDY2 * dfz) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * lmuy_s;
+        Normalised {
+            fz_given,
+            loads,
+            dfz,
+            dpi,
+            gs,
+            fzr_mx,
+            fzr_my,
+            load_exp,
+            my_powers,
+            lmux_s,
+            lmux_p,
+            lmuy_s,
+            lmuy_p,
+            mu0,
+        }
+    }
+
+    /// Pure longitudinal at the load, everything but the slip:
+    /// `(Cx, Dx, Kxκ)`.
+    #[inline(always)]
+    fn longitudinal_load(&self, n: &Normalised) -> (f64, f64, f64) {
+        let c = &self.coefficients;
+        let (fz, gamma, dfz, dpi) = (n.loads.fz, n.loads.gamma, n.dfz, n.dpi);
+        let cx = c.PCX1 * c.LCX;
+        let mux = (c.PDX1 + c.PDX2 * dfz)
+            * (1.0 + c.PPX3 * dpi + c.PPX4 * dpi * dpi)
+            * (1.0 - c.PDX3 * gamma * gamma)
+            * n.lmux_s;
+        let dx = mux * fz;
+        let kxk = fz
+            * (c.PKX1 + c.PKX2 * dfz)
+            * n.load_exp
+            * (1.0 + c.PPX1 * dpi + c.PPX2 * dpi * dpi)
+            * c.LKX;
+        (cx, dx, kxk)
+    }
+
+    /// Pure lateral at the load: the camber-free factors, then the camber
+    /// terms at the point's camber and (6.x, for Mz) at zero camber; with
+    /// them, as they share the array passes, the overturning moment's load
+    /// angles `cos(QSX5·atan((QSX6·Fz/Fz0)²))` and `atan(QSX11·Fz/Fz0)`.
+    #[inline(always)]
+    fn lateral_and_overturning_load(
+        &self,
+        n: &Normalised,
+    ) -> (LateralAtLoad, LateralAtLoad, f64, f64) {
+        let c = &self.coefficients;
+        let (fz, dfz, dpi, gs, fzr_mx) = (n.loads.fz, n.dfz, n.dpi, n.gs, n.fzr_mx);
+        let fz0p = c.FNOMIN * c.LFZO;
+        let free = LateralFree {
+            kya_scale: c.PKY1 * fz0p * (1.0 + c.PPY1 * dpi) * c.LKY,
+            load_ratio: (fz / fz0p) / (1.0 + c.PPY2 * dpi),
+            svy0: fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * n.lmuy_p,
+            svyg_per_gs: fz * (c.PVY3 + c.PVY4 * dfz) * c.LKYC * n.lmuy_p,
+            kyg0: fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC,
+            shy0: (c.PHY1 + c.PHY2 * dfz) * c.LHY,
+            mu0: n.mu0,
+            ey0: (c.PEY1 + c.PEY2 * dfz) * c.LEY,
+            fz,
+        };
+        // The angles of Kyα's load curve (at the camber and at zero camber)
+        // and of the overturning moment's load terms, in two array passes.
+        let (x, x0) = (
+            free.load_ratio / (c.PKY2 + c.PKY5 * gs * gs),
+            free.load_ratio / c.PKY2,
+        );
+        let [ax, ax0, a_mx, a_mxg] =
+            kernels::atan([x, x0, (c.QSX6 * fzr_mx).powi(2), c.QSX11 * fzr_mx]);
+        let [sx, sx0, c_mx, _] = kernels::sin_cos(
+            [c.PKY4 * ax, c.PKY4 * ax0, c.QSX5 * a_mx, 0.0],
+            [false, false, true, false],
+        );
+        let lat = self.lateral_at(&free, gs, x, sx);
+        let flat = if gs == 0.0 || self.version == MfVersion::Mf52 {
+            lat
+        } else {
+            self.lateral_at(&free, 0.0, x0, sx0)
+        };
+        (lat, flat, c_mx, a_mxg)
     }
 
     /// `Bt`, `Dt` and `Dr` of the aligning moment at load `fz` (`dfz`,

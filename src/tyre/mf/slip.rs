@@ -117,7 +117,16 @@ impl MagicFormula {
                 &own
             }
         };
-        self.slip(l, kappa, astar, tan_a, vx, sgn_vx, low, low * my_reversal)
+        let point = SlipPoint {
+            kappa,
+            astar,
+            tan_a,
+            vx,
+            sgn_vx,
+            low,
+            my_low: low * my_reversal,
+        };
+        self.slip(l, &point)
     }
 
     /// The rolling resistance's factor for the wheel's direction of
@@ -182,23 +191,34 @@ impl MagicFormula {
     /// its result was known (a weight of exactly 1 at zero slip of the other
     /// kind, `SVyκ = 0` at `κ = 0`, `E = 0`) the lanes give the same result
     /// exactly: equal inputs, equal bits.
-    #[allow(clippy::too_many_arguments)]
+    ///
+    /// The stages are separate functions, all `#[inline(always)]`: one
+    /// body in the hot loop, as before the split.
     #[inline(always)]
-    fn slip(
-        &self,
-        l: &Prelude,
-        kappa: f64,
-        astar: f64,
-        tan_a: f64,
-        vx: f64,
-        sgn_vx: f64,
-        low: f64,
-        my_low: f64,
-    ) -> MfOutput {
-        let c = &self.coefficients;
+    fn slip(&self, l: &Prelude, s: &SlipPoint) -> MfOutput {
+        let set = self.curve_inputs(l, s);
+        let inner = self.inner_angles(l, s, &set);
+        let outer = self.outer_angles(l, &inner);
+        let forces = self.combined_forces(l, s, &set, &outer.curves, inner.a_rvy);
+        let (mz, mx) = self.aligning_and_overturning(l, s, &forces, outer.y_t, inner.ar_eq);
+        let my = self.rolling_resistance(l, s, forces.fx);
+        MfOutput {
+            fx: forces.fx,
+            fy: forces.fy,
+            mz,
+            mx,
+            my,
+        }
+    }
 
-        // Set-up: pure longitudinal, pure lateral at the point's camber and
-        // at zero camber (6.x Mz), the weights' slopes, the trail's angles.
+    /// Set-up: the shifted slips and curvatures of pure longitudinal, pure
+    /// lateral at the point's camber and at zero camber (6.x `Mz`), the
+    /// combined-slip weights' slopes, the trail's and residual torque's
+    /// angles.
+    #[inline(always)]
+    fn curve_inputs(&self, l: &Prelude, s: &SlipPoint) -> CurveInputs {
+        let c = &self.coefficients;
+        let (kappa, astar, low) = (s.kappa, s.astar, s.low);
         let kx = kappa + l.shx;
         let ex = self.clip_e(l.ex_load * (1.0 - c.PEX4 * sgn(kx)) * c.LEX);
         let (ay, ey, shy, svy) = self.lateral_input(&l.lat, astar, low);
@@ -207,9 +227,30 @@ impl MagicFormula {
         let byk = l.rby * cos_atan(c.RBY2 * (astar - c.RBY3)) * c.LYKA;
         let at = astar + l.sht;
         let ar = astar + shy + svy / l.lat.kya_g;
+        CurveInputs {
+            kx,
+            ex,
+            ay,
+            ey,
+            svy,
+            ay0,
+            ey0,
+            svy0,
+            bxa,
+            byk,
+            at,
+            ar,
+        }
+    }
 
-        // Stage 1: sin and cos of the trail's and the residual torque's
-        // angles (their tangents).
+    /// Stages 1 and 2: sin and cos of the trail's and the residual torque's
+    /// angles (their tangents), then the inner atan of every curve,
+    /// atan(RVY6·κ), Et's atan and the equivalent angles.
+    #[inline(always)]
+    fn inner_angles(&self, l: &Prelude, s: &SlipPoint, set: &CurveInputs) -> InnerAngles {
+        let c = &self.coefficients;
+        let (kappa, astar) = (s.kappa, s.astar);
+        let (at, ar) = (set.at, set.ar);
         let [s_at, c_at, s_ar, c_ar] =
             kernels::sin_cos([at, at, ar, ar], [false, true, false, true]);
         // TNO (A54/A55): the equivalent angles combine tangents,
@@ -219,18 +260,16 @@ impl MagicFormula {
         let eq = |s: f64, co: f64| ((s * s + k2 * co * co).sqrt(), co.abs());
         let ((n_at, d_at), (n_ar, d_ar)) = (eq(s_at, c_at), eq(s_ar, c_ar));
 
-        // Stage 2: the inner atan of every curve, atan(RVY6·κ), Et's atan
-        // and the equivalent angles.
         let bx = [
-            l.bx * kx,
-            l.lat.by * ay,
-            l.flat.by * ay0,
-            bxa * (astar + c.RHX1),
-            bxa * c.RHX1,
-            byk * (kappa + l.shyk),
-            byk * l.shyk,
+            l.bx * set.kx,
+            l.lat.by * set.ay,
+            l.flat.by * set.ay0,
+            set.bxa * (astar + c.RHX1),
+            set.bxa * c.RHX1,
+            set.byk * (kappa + l.shyk),
+            set.byk * l.shyk,
         ];
-        let e = [ex, ey, ey0, l.exa, l.exa, l.eyk, l.eyk];
+        let e = [set.ex, set.ey, set.ey0, l.exa, l.exa, l.eyk, l.eyk];
         let [i0, i1, i2, i3, i4, i5, i6, a_rvy, a_et, eq_t, eq_r, _] = kernels::atan_ratio(
             [
                 bx[0],
@@ -248,7 +287,6 @@ impl MagicFormula {
             ],
             [1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, d_at, d_ar, 1.0],
         );
-        let inner = [i0, i1, i2, i3, i4, i5, i6];
         let equivalent = |a: f64, q: f64| {
             if k2 == 0.0 && a.abs() < 0.5 * PI {
                 a
@@ -256,44 +294,71 @@ impl MagicFormula {
                 q * sgn(a)
             }
         };
-        let at_eq = equivalent(at, eq_t);
-        let ar_eq = equivalent(ar, eq_r);
+        InnerAngles {
+            bx,
+            e,
+            inner: [i0, i1, i2, i3, i4, i5, i6],
+            a_rvy,
+            a_et,
+            at_eq: equivalent(at, eq_t),
+            ar_eq: equivalent(ar, eq_r),
+        }
+    }
 
-        // Stage 3: the outer atan of every curve, the trail's inner one.
+    /// Stage 3: the outer atan of every curve, `B·x − E·(B·x − atan(B·x))`
+    /// under it, and the trail's inner atan with its curvature `Et`.
+    #[inline(always)]
+    fn outer_angles(&self, l: &Prelude, a: &InnerAngles) -> OuterAngles {
+        let (bx, e, inner) = (&a.bx, &a.e, &a.inner);
         let y: [f64; 7] = std::array::from_fn(|k| bx[k] - e[k] * (bx[k] - inner[k]));
-        let bt_at = l.bt * at_eq;
+        let bt_at = l.bt * a.at_eq;
         let [o0, o1, o2, o3, o4, o5, o6, i_t] =
             kernels::atan([y[0], y[1], y[2], y[3], y[4], y[5], y[6], bt_at]);
-        let et = self.clip_e(l.et_load * (1.0 + l.et_gamma * a_et));
-        let y_t = bt_at - et * (bt_at - i_t);
+        let et = self.clip_e(l.et_load * (1.0 + l.et_gamma * a.a_et));
+        OuterAngles {
+            curves: [o0, o1, o2, o3, o4, o5, o6],
+            y_t: bt_at - et * (bt_at - i_t),
+        }
+    }
 
-        // Stage 4: sin (pure forces) or cos (weights) of C·θ, the sine of
-        // SVyκ.
+    /// Stage 4: the pure-slip curves (sin of C·θ) and the combined-slip
+    /// weights (cos of C·θ), the sine of `SVyκ`; from them `Fx`, `Fy` and
+    /// the lateral force the trail multiplies.
+    #[inline(always)]
+    fn combined_forces(
+        &self,
+        l: &Prelude,
+        s: &SlipPoint,
+        set: &CurveInputs,
+        o: &[f64; 7],
+        a_rvy: f64,
+    ) -> CombinedForces {
+        let c = &self.coefficients;
         let (cxa, cyk) = (c.RCX1, c.RCY1);
         let [f_x, f_y, f_y0, gx_n, gx_d, gy_n, gy_d, s_rvy] = kernels::sin_cos(
             [
-                l.cx * o0,
-                l.lat.cy * o1,
-                l.flat.cy * o2,
-                cxa * o3,
-                cxa * o4,
-                cyk * o5,
-                cyk * o6,
+                l.cx * o[0],
+                l.lat.cy * o[1],
+                l.flat.cy * o[2],
+                cxa * o[3],
+                cxa * o[4],
+                cyk * o[5],
+                cyk * o[6],
                 c.RVY5 * a_rvy,
             ],
             [false, false, false, true, true, true, true, false],
         );
 
-        let fx0 = l.dx * f_x + l.svx * low;
-        let fy0 = l.lat.dy * f_y + svy;
-        let fy0_flat = l.flat.dy * f_y0 + svy0;
+        let fx0 = l.dx * f_x + l.svx * s.low;
+        let fy0 = l.lat.dy * f_y + set.svy;
+        let fy0_flat = l.flat.dy * f_y0 + set.svy0;
         // Combined slip: weighting functions (exactly 1 at zero slip of the
         // other kind: numerator and denominator are then the same number).
         let fx = gx_n / gx_d * fx0;
         // `svyk_per_mu`: SVyκ per unit μy (eqs. 4.E66/4.E67), so that the
         // 5.2 aligning moment can take it at the zero-camber μy as MFeval
         // does.
-        let svyk_per_mu = l.svyk_load * cos_atan(c.RVY4 * astar) * s_rvy * c.LVYKA * low;
+        let svyk_per_mu = l.svyk_load * cos_atan(c.RVY4 * s.astar) * s_rvy * c.LVYKA * s.low;
         let gyk = gy_n / gy_d;
         let fy = gyk * fy0 + l.lat.muy * svyk_per_mu;
         // The lateral force the trail multiplies: TNO 6.1's `Fy'` (eq.
@@ -304,18 +369,32 @@ impl MagicFormula {
         } else {
             gyk * fy0_flat
         };
+        CombinedForces { fx, fy, fy_trail }
+    }
 
+    /// Stages 5 and 6 and the two moments they feed: the trail's outer
+    /// atan and cosine beside the overturning moment's atan and sine (they
+    /// need `Fy`), and `cos α*`; `(Mz, Mx)`.
+    #[inline(always)]
+    fn aligning_and_overturning(
+        &self,
+        l: &Prelude,
+        s: &SlipPoint,
+        f: &CombinedForces,
+        y_t: f64,
+        ar_eq: f64,
+    ) -> (f64, f64) {
+        let c = &self.coefficients;
+        let (vx, sgn_vx, fx, fy) = (s.vx, s.sgn_vx, f.fx, f.fy);
         // Aligning moment. cos'α = Vcx/(Vc + εV) (Pacejka 2012 eq. 4.E6)
         // with Vsy = tan α·|Vx| in either α* mode (MFeval); TNO scales the
         // trail by λ_Fz0 as well.
-        let vsy = vx.abs() * tan_a;
+        let vsy = vx.abs() * s.tan_a;
         let cos_a = vx / ((vx * vx + vsy * vsy).sqrt() + EPS_V);
-        // Stages 5 and 6: the trail's outer atan and cosine, beside the
-        // overturning moment's atan and sine (they need Fy), and cos α*.
         let fz0 = c.FNOMIN;
         let [o_t, a_mx, ..] = kernels::atan([y_t, c.QSX9 * fy / fz0, 0.0, 0.0]);
         let [cos_t, sin_mx, cos_astar, _] = kernels::sin_cos(
-            [c.QCZ1 * o_t, c.QSX7 * l.gamma + c.QSX8 * a_mx, astar, 0.0],
+            [c.QCZ1 * o_t, c.QSX7 * l.gamma + c.QSX8 * a_mx, s.astar, 0.0],
             [true, false, true, false],
         );
         let t = l.dt * sgn_vx * cos_t * cos_a * c.LFZO;
@@ -324,8 +403,8 @@ impl MagicFormula {
         let mzr = l.dr * sgn_vx * cos_astar * cos_atan(l.br * ar_eq);
         // TNO (A56): Fy/Fz0 with the unscaled Fz0 and γ itself.
         let r0 = c.UNLOADED_RADIUS;
-        let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + l.s_gamma) * c.LS;
-        let mz = -t * fy_trail + mzr + s * fx;
+        let arm = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + l.s_gamma) * c.LS;
+        let mz = -t * f.fy_trail + mzr + arm * fx;
 
         // Overturning moment (TNO 6.1; 5.2 files leave the 6.1 terms at 0).
         let mixed = if l.mx_mixed == 0.0 {
@@ -335,13 +414,77 @@ impl MagicFormula {
         };
         let mx = l.mx_scale * (l.mx_const + c.QSX3 * fy / fz0 + mixed + l.mx_load_camber)
             + (fy * l.mx_fy + l.mx_gamma);
+        (mz, mx)
+    }
 
-        // Rolling-resistance moment (TNO 6.1 form; 5.2 without the powers).
-        let vr = vx / c.LONGVL;
+    /// Rolling-resistance moment `My` (TNO 6.1 form; 5.2 without the
+    /// powers) at longitudinal force `fx`.
+    #[inline(always)]
+    fn rolling_resistance(&self, l: &Prelude, s: &SlipPoint, fx: f64) -> f64 {
+        let c = &self.coefficients;
+        let fz0 = c.FNOMIN;
+        let vr = s.vx / c.LONGVL;
         let vr2 = vr * vr;
         let poly =
             c.QSY1 + c.QSY2 * fx / fz0 + c.QSY3 * vr.abs() + c.QSY4 * (vr2 * vr2) + l.my_gamma;
-        let my = l.my_scale * poly * l.my_powers * sgn_vx * my_low;
-        MfOutput { fx, fy, mz, mx, my }
+        l.my_scale * poly * l.my_powers * s.sgn_vx * s.my_low
     }
+}
+
+/// One point's slip as the slip part takes it: `κ` and `α*` after the limit
+/// checks, `tan α`, the speed `Vx` and its sign, the low-speed fade of the
+/// vertical shifts and that of `My` (with the rolling direction).
+struct SlipPoint {
+    kappa: f64,
+    astar: f64,
+    tan_a: f64,
+    vx: f64,
+    sgn_vx: f64,
+    low: f64,
+    my_low: f64,
+}
+
+/// The curves' shifted slips and curvatures and the moments' angles,
+/// before any transcendental function (see [`MagicFormula::curve_inputs`]).
+struct CurveInputs {
+    kx: f64,
+    ex: f64,
+    ay: f64,
+    ey: f64,
+    svy: f64,
+    ay0: f64,
+    ey0: f64,
+    svy0: f64,
+    bxa: f64,
+    byk: f64,
+    at: f64,
+    ar: f64,
+}
+
+/// The seven curves' `B·x`, `E` and `atan(B·x)` (pure `Fx0`, `Fy0`, `Fy0`
+/// at zero camber, `Gxα`'s and `Gyκ`'s numerators and denominators), with
+/// `atan(RVY6·κ)`, Et's atan and the equivalent angles of trail and
+/// residual torque.
+struct InnerAngles {
+    bx: [f64; 7],
+    e: [f64; 7],
+    inner: [f64; 7],
+    a_rvy: f64,
+    a_et: f64,
+    at_eq: f64,
+    ar_eq: f64,
+}
+
+/// The seven curves' outer atans and the trail's `Bt·x − Et·(Bt·x −
+/// atan(Bt·x))`.
+struct OuterAngles {
+    curves: [f64; 7],
+    y_t: f64,
+}
+
+/// The combined-slip forces and the lateral force the trail multiplies.
+struct CombinedForces {
+    fx: f64,
+    fy: f64,
+    fy_trail: f64,
 }

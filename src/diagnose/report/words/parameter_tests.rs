@@ -225,3 +225,44 @@ fn a_fit_that_enlarges_the_held_out_gap_says_larger_not_only_a_negative_share() 
         "the fit on all runs removes 39 % of the gap but makes it 8 % larger on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
     );
 }
+
+/// Where the model leaves a gap above noise, the larger of the asymptotic
+/// standard error and the fold refits' spread is reported and said; where
+/// it fits to the noise, or the spread is smaller, the asymptotic one.
+#[test]
+fn a_fit_that_leaves_a_gap_reports_its_fold_spread_where_larger() {
+    use crate::diagnose::report::StdErrorBasis;
+    let [x] = EffectKind::AccelerometerPosition.parameters() else {
+        panic!("an accelerometer position has one parameter");
+    };
+    let v = ParameterValue::of("accelerometer_position", x, 0.8282, 0.00438);
+    // Five folds at ±0.004 about 0.828: the jackknife √(4/5·Σd²) = 0.00716,
+    // 1.6× the asymptotic error, below the 3× that says it understates.
+    let folds = [0.824, 0.832, 0.828, 0.824, 0.832];
+    let j = crate::diagnose::report::jackknife(&folds).unwrap();
+    let with = v.clone().with_folds(&folds, Some((1.0, 4.0)));
+    assert!(!with.understated());
+    let inexact = with.clone().with_model_error(true);
+    assert_eq!(inexact.std_error_basis, StdErrorBasis::FoldSpread);
+    assert_eq!(
+        (inexact.std_error, inexact.asymptotic_std_error),
+        (j, 0.00438)
+    );
+    assert_eq!(
+        parameter(&inexact),
+        "accelerometer_position.x = 0.8282 ± 0.00716 m (the fold refits' spread: the model leaves a gap above noise, and its asymptotic ± 0.00438 covers the noise alone)"
+    );
+    // Fitted to the noise: the asymptotic error, as before.
+    let exact = with.with_model_error(false);
+    assert_eq!(exact.std_error_basis, StdErrorBasis::Asymptotic);
+    assert_eq!(
+        parameter(&exact),
+        "accelerometer_position.x = 0.8282 ± 0.00438 m"
+    );
+    // A spread below the asymptotic error changes nothing.
+    let tight = v
+        .with_folds(&[0.827, 0.829, 0.828, 0.827, 0.829], Some((1.0, 4.0)))
+        .with_model_error(true);
+    assert_eq!(tight.std_error_basis, StdErrorBasis::Asymptotic);
+    assert_eq!(tight.std_error, 0.00438);
+}

@@ -6,7 +6,7 @@
 
 use super::{std_error, value};
 use crate::diagnose::effects::Bound;
-use crate::diagnose::report::ParameterValue;
+use crate::diagnose::report::{ParameterValue, StdErrorBasis};
 
 /// A parameter on the end of its search range, to four decimals: its
 /// name, value and unit (a ratio's unit, `-`, not written).
@@ -104,7 +104,8 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
     }
     let Some(bound) = p.bound else {
         return if p.determined {
-            let said = format!("{} = {v} ± {}{unit}", p.name, std_error(p.std_error));
+            let se = p.asymptotic_std_error;
+            let said = format!("{} = {v} ± {}{unit}", p.name, std_error(se));
             let yardstick = p.fold_yardstick();
             match p.fold_std_error.filter(|_| p.understated()) {
                 // The runs of equal information: the standard error is
@@ -113,22 +114,31 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
                     "{said} (the fold refits scatter ± {}, {:.0}× {}: the standard error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
                     std_error(j),
                     j / yardstick,
-                    if yardstick <= p.std_error {
+                    if yardstick <= se {
                         "it".to_string()
                     } else {
                         format!("the ± {} the runs' noise alone moves them by", std_error(yardstick))
                     }
                 ),
-                Some(j) if yardstick <= p.std_error => format!(
+                Some(j) if yardstick <= se => format!(
                     "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
                     std_error(j),
-                    j / p.std_error
+                    j / se
                 ),
                 Some(j) => format!(
                     "{said} (the fold refits scatter ± {}, {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)",
                     std_error(j),
                     j / yardstick,
                     std_error(yardstick)
+                ),
+                // The model leaves a gap above noise and the refits scatter
+                // beyond the asymptotic error, though not beyond chance:
+                // the larger is the one reported.
+                None if p.std_error_basis == StdErrorBasis::FoldSpread => format!(
+                    "{} = {v} ± {}{unit} (the fold refits' spread: the model leaves a gap above noise, and its asymptotic ± {} covers the noise alone)",
+                    p.name,
+                    std_error(p.std_error),
+                    std_error(se)
                 ),
                 None => said,
             }

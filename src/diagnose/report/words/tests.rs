@@ -402,7 +402,7 @@ fn a_steering_compliance_is_given_in_the_unit_of_its_scenario_key_too() {
         0.003,
         None,
     );
-    p.std_error = 2e-4;
+    (p.std_error, p.asymptotic_std_error) = (2e-4, 2e-4);
     p.determined = true;
     assert_eq!(
         parameter(&p),

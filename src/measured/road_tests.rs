@@ -1,0 +1,243 @@
+//! The road's bank and grade estimates of [`super`] on runs whose
+//! readings are exact: a steady turn on a bank and a grade, offsets, a
+//! unit slip, masked samples, a step steer with and without its sideslip.
+
+use super::*;
+
+#[test]
+fn an_angle_that_rounds_to_zero_is_said_without_a_sign() {
+    assert_eq!(deg(-1e-5), "0.0");
+    assert_eq!(deg(-0.01), "-0.6");
+    assert_eq!(deg(0.1), "5.7");
+}
+
+/// A steady left turn (u = 25 m/s, r = 0.2 rad/s) whose road banks from
+/// 0 to −10° and back (left edge lower), on a 3 % uphill grade while the
+/// car speeds up at 1 m/s²: what the accelerometers of a car that
+/// neither rolls nor pitches read, exactly.
+fn run() -> (MeasuredRun, Vec<f64>) {
+    let n = 1001;
+    let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+    let bank: Vec<f64> = t
+        .iter()
+        .map(|&t| -10f64.to_radians() * (std::f64::consts::PI * t / 10.0).sin())
+        .collect();
+    let grade = 0.03f64.atan();
+    let speed: Vec<f64> = t.iter().map(|&t| 25.0 + t).collect();
+    let r = 0.2;
+    let ay: Vec<f64> = (0..n).map(|k| speed[k] * r + G * bank[k].sin()).collect();
+    let ax = vec![1.0 + G * grade.sin(); n];
+    (
+        MeasuredRun::new("turn.csv", t, speed, vec![0.02; n], vec![r; n])
+            .with_ay(ay)
+            .with_ax(ax),
+        bank,
+    )
+}
+
+#[test]
+fn the_bank_and_grade_of_exact_readings_come_back() {
+    let (r, bank) = run();
+    let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
+    // The 1 s average of a 10 s half-sine differs from it by at most
+    // its curvature over the window, (π/10)²·(0.5²/6)·10° ≈ 0.041°,
+    // plus the sine's curvature (the average is taken of sin θ).
+    // Within half a window of the ends the average is one-sided.
+    for k in 50..r.t.len() - 50 {
+        assert!(
+            (est[k] - bank[k]).abs() < 0.045f64.to_radians(),
+            "t {}: {} vs {}",
+            r.t[k],
+            est[k].to_degrees(),
+            bank[k].to_degrees()
+        );
+    }
+    let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
+    let b = g.bank.unwrap();
+    assert_eq!(b.source, AngleSource::LateralKinematics);
+    assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
+    let gr = g.grade.unwrap();
+    assert_eq!(gr.source, AngleSource::LongitudinalKinematics);
+    for x in [gr.mean, gr.min, gr.max, gr.p05, gr.median, gr.p95] {
+        assert!((x - 0.03f64.atan()).abs() < 1e-9, "{gr:?}");
+    }
+    let line = g.line().unwrap();
+    assert!(
+        line.contains("bank estimated from ay − u·r -9.9° to "),
+        "{line}"
+    );
+    assert!(
+        line.contains("grade estimated from ax − du/dt 1.7° to 1.7° (5–95 %; median 1.7°)"),
+        "{line}"
+    );
+    assert!(!line.contains("steeper than"), "{line}");
+    // A 12 % grade read from ax: beyond a road's, said to be likely
+    // something else.
+    let mut steep = r.clone();
+    steep.ax = Some(vec![1.0 + G * 0.12f64.atan().sin(); steep.t.len()]);
+    let line = RoadGeometry::of("turn", &steep, SensorOffsets::default(), 0.0)
+        .line()
+        .unwrap();
+    assert!(
+        line.contains("grade estimated from ax − du/dt 6.8° to 6.8° (5–95 %; median 6.8°) (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade"),
+        "{line}"
+    );
+    // The bank's 5th percentile of a half-sine to −10°: −10°·cos(0.05·π/2).
+    let p05 = (-10f64 * (0.05 * std::f64::consts::FRAC_PI_2).cos()).to_radians();
+    assert!((b.p05 - p05).abs() < 0.05f64.to_radians(), "{b:?}");
+}
+
+/// A flat road read by an accelerometer mounted with an offset of
+#[test] // A speed in km/h reads as a bank past any road's.
+fn a_bank_past_any_road_is_warned_of_as_a_unit_slip() {
+    let (mut r, _) = run();
+    r.speed.iter_mut().for_each(|u| *u *= 3.6);
+    let line = RoadGeometry::of("kmh", &r, SensorOffsets::default(), 0.0).line();
+    let line = line.unwrap();
+    assert!(line.starts_with("kmh: bank estimated from ay − u·r -90.0°"));
+    assert!(line.contains("(warning: steeper than any road's 35°: more likely a unit"));
+}
+
+/// −0.6 m/s² and a gyro reading 0.005 rad/s high: −3.6° of bank
+/// without the offsets, none with them.
+#[test]
+fn the_offsets_the_calibration_measured_are_no_bank() {
+    let (mut r, bank) = run();
+    let (b_ay, b_r) = (-0.6, 0.005);
+    let ay: Vec<f64> = (0..r.t.len())
+        .map(|k| r.ay.as_ref().unwrap()[k] - G * bank[k].sin() + b_ay)
+        .collect();
+    r.ay = Some(ay);
+    r.yaw_rate.iter_mut().for_each(|x| *x += b_r);
+    let g = RoadGeometry::of("flat", &r, SensorOffsets::default(), 0.0);
+    let median = g.bank.unwrap().median.to_degrees();
+    let unseen = ((b_ay - 25.0 * b_r) / G).asin().to_degrees();
+    assert!((median - unseen).abs() < 0.35, "{median} vs {unseen}");
+    assert!(median < -3.0, "{median}");
+    let offsets = SensorOffsets {
+        ay: b_ay,
+        yaw_rate: b_r,
+        beta: 0.0,
+    };
+    let g = RoadGeometry::of("flat", &r, offsets, 0.0);
+    let b = g.bank.unwrap();
+    for x in [b.p05, b.median, b.p95] {
+        assert!(x.to_degrees().abs() < 1e-9, "{b:?}");
+    }
+    let line = g.line().unwrap();
+    assert!(
+        line.contains("bank estimated from ay − u·r less the offsets the calibration measured (ay -0.600 m/s², yaw rate 0.0050 rad/s) 0.0° to 0.0°"),
+        "{line}"
+    );
+    // A measured bank is taken as logged: no offset is said removed.
+    r.bank = Some(bank);
+    assert_eq!(
+        RoadGeometry::of("flat", &r, offsets, 0.0).offsets_removed,
+        None
+    );
+}
+
+#[test]
+fn a_bank_column_is_reported_as_measured_and_masked_samples_are_left_out() {
+    let (mut r, bank) = run();
+    r.bank = Some(bank);
+    let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
+    assert_eq!(g.bank.unwrap().source, AngleSource::Measured);
+    // A 0.5 s glitch of ay at 9 g, masked: the estimate does not see it.
+    let (mut r, _) = run();
+    let ay = r.ay.as_mut().unwrap();
+    for a in &mut ay[400..450] {
+        *a = 90.0;
+    }
+    r.masked = (400..450).collect();
+    let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
+    assert!(
+        est.iter().all(|b| b.is_finite() && b.abs() < 0.2),
+        "no glitch in it"
+    );
+    // Without ay and bank, no bank; without ax, no grade.
+    let (mut r, _) = run();
+    (r.ay, r.ax) = (None, None);
+    let g = RoadGeometry::of("turn", &r, SensorOffsets::default(), 0.0);
+    assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
+}
+
+/// A 2° step steer at 80 km/h on a flat road: the sideslip settles to
+/// −0.02 rad with a 0.3 s lag and the accelerometer reads `u·r + v̇`.
+/// With `beta` the estimate finds the flat road; without, `v̇` reads as
+/// bank at the step and the line says why.
+#[test]
+fn a_step_on_a_flat_road_is_no_bank_when_the_run_has_its_sideslip() {
+    let n = 601;
+    let u = 22.2;
+    let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+    let lag = |t: f64| {
+        if t < 2.0 {
+            0.0
+        } else {
+            1.0 - (-(t - 2.0) / 0.3).exp()
+        }
+    };
+    let beta: Vec<f64> = t.iter().map(|&t| -0.02 * lag(t)).collect();
+    let r: Vec<f64> = t.iter().map(|&t| 0.2 * lag(t)).collect();
+    let ay: Vec<f64> = (0..n)
+        .map(|k| {
+            let v_dot = -0.02 * u * (-(t[k] - 2.0) / 0.3).exp() / 0.3;
+            u * r[k]
+                + if t[k] < 2.0 {
+                    0.0
+                } else {
+                    v_dot / beta_cos(beta[k])
+                }
+        })
+        .collect();
+    let mut run = MeasuredRun::new("step.csv", t, vec![u; n], vec![0.0; n], r)
+        .with_ay(ay)
+        .with_beta(beta);
+    let with = RoadGeometry::of("step", &run, SensorOffsets::default(), 0.0);
+    let b = with.bank.unwrap();
+    assert_eq!(b.source, AngleSource::LateralKinematicsWithSideslip);
+    // Central differences of a 0.3 s lag at 100 Hz: within 0.05°.
+    for x in [b.min, b.max] {
+        assert!(x.to_degrees().abs() < 0.05, "{b:?}");
+    }
+    assert!(with
+        .line()
+        .unwrap()
+        .contains("bank estimated from ay − u·r − d(u·β)/dt"));
+    run.beta = None;
+    let without = RoadGeometry::of("step", &run, SensorOffsets::default(), 0.0);
+    let b = without.bank.unwrap();
+    assert_eq!(b.source, AngleSource::LateralKinematics);
+    // The 1 s average of v̇ over the step: −0.02·22.2/1 s = −0.44 m/s²,
+    // −2.6° at its largest.
+    assert!(b.min.to_degrees() < -2.0, "{b:?}");
+    assert!(without
+        .line()
+        .unwrap()
+        .contains("no beta column: the sideslip's rate v̇ is left out"));
+    // A masked sample's neighbours take no difference across it.
+    run.beta = with_beta(&run);
+    run.masked = vec![300];
+    let est = bank_estimate(&run, run.ay.as_ref().unwrap(), SensorOffsets::default());
+    assert!(est
+        .iter()
+        .all(|x| x.is_finite() && x.to_degrees().abs() < 0.05));
+}
+
+/// `v = u·tan β`: the lateral velocity's rate is `u·β̇/cos²β` at a
+/// steady speed; the factor the readings carry.
+fn beta_cos(beta: f64) -> f64 {
+    beta.cos().powi(2)
+}
+
+fn with_beta(run: &MeasuredRun) -> Option<Vec<f64>> {
+    let lag = |t: f64| {
+        if t < 2.0 {
+            0.0
+        } else {
+            1.0 - (-(t - 2.0) / 0.3).exp()
+        }
+    };
+    Some(run.t.iter().map(|&t| -0.02 * lag(t)).collect())
+}

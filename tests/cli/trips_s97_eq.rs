@@ -23,7 +23,7 @@ fn sweep_file(sweep: &str) -> String {
 
 /// √(−l/K) of `REARWARD` on `LINEAR`: K = (m/l)(b/Cf − a/Cr).
 fn critical_speed() -> f64 {
-    let (m, a, b, c) = (1530.0, 1.67, 1.11, 2.0 * 57296.0);
+    let (m, a, b, c): (f64, f64, f64, f64) = (1530.0, 1.67, 1.11, 2.0 * 57296.0);
     let l = a + b;
     let k = m / l * (b / c - a / c);
     (-l / k).sqrt()

@@ -59,7 +59,7 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
-use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
+use crate::diagnose::report::summary::{base_run_gap, dominant, gap_summary, parts_table};
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::baseline;
@@ -164,31 +164,6 @@ fn below_scatter(n: &ChannelNoise) -> Option<Note> {
         },
     )
 }
-
-/// The channel whose share of the base model's held-out error `J²`
-/// exceeds [`DOMINANT_SHARE`], when more than one channel is measured.
-fn dominant(e: &ChannelErrors, scales: &[f64; 3]) -> Option<GapFinding> {
-    let parts: Vec<(Channel, f64)> = Channel::ALL
-        .into_iter()
-        .filter(|c| e.count[c.index()] > 0)
-        .map(|c| (c, e.sum_sq[c.index()] / scales[c.index()].powi(2)))
-        .collect();
-    let total: f64 = parts.iter().map(|p| p.1).sum();
-    if parts.len() < 2 || total <= 0.0 {
-        return None;
-    }
-    parts
-        .into_iter()
-        .find(|p| p.1 / total > DOMINANT_SHARE)
-        .map(|(channel, part)| GapFinding::Dominant {
-            channel,
-            share_percent: 100.0 * part / total,
-        })
-}
-
-/// A channel carrying more than this share of the base's combined error
-/// decides every fit: the report names it.
-pub const DOMINANT_SHARE: f64 = 2.0 / 3.0;
 
 /// Held-out replays of every run, before and after, largest base gap first.
 fn overlays(ctx: &Context, before: &[Observed], after: &[Observed]) -> Vec<Overlay> {
@@ -521,7 +496,7 @@ fn run(
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
-    findings.extend(dominant(&base.heldout, &scales));
+    findings.extend(dominant(&base.heldout, &scales, &findings));
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),

@@ -61,6 +61,13 @@ pub enum Evidence {
         reduction_percent: f64,
         /// Its parameters on a search bound.
         pressed: Vec<ParameterValue>,
+        /// Each pressed parameter's range searched, as [`Searched`].
+        pressed_ranges: Vec<Searched>,
+        /// The verdict's parameters in the unit of a pressed one, with the
+        /// ranges they lie inside: a verdict whose parameters add up to
+        /// the look-alike's pressed value (a steer path's delay and lag,
+        /// summing to a sensor's 0.3 s delay) says why it is not pressed.
+        verdict_inside: Vec<Searched>,
     },
     /// A look-alike that leaves less of the gap but leaves a parameter
     /// idle, passed over for a simpler candidate ([`Parsimony`]).
@@ -73,6 +80,19 @@ pub enum Evidence {
     /// A yaw inertia in the verdict, and the vehicle mass that would fit
     /// the runs the same ([`MassAlike`]).
     MassAlike(MassAlike),
+}
+
+/// A parameter's value and the range its fit searched, in its unit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Searched {
+    /// `effect.parameter`.
+    pub name: String,
+    /// Its unit.
+    pub unit: &'static str,
+    /// Fitted value.
+    pub value: f64,
+    /// The range searched (lower, upper).
+    pub range: (f64, f64),
 }
 
 /// A verdict's yaw inertia scale `s`, and the vehicle mass that would fit

@@ -17,7 +17,7 @@ use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 pub use crate::diagnose::report::evidence::{
-    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, ThroughBank,
+    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, Searched, ThroughBank,
     CALIBRATION_AGREES,
 };
 pub use crate::diagnose::report::lookalike::{InSet, Lookalike, Lookalikes, Window};
@@ -409,8 +409,10 @@ pub enum GapFinding {
     Dominant {
         /// The channel.
         channel: Channel,
-        /// Its share of `J²`, %.
+        /// Its share of `J²`, %, each channel's steady offset set aside.
         share_percent: f64,
+        /// The channels whose steady offset was set aside.
+        less_offsets: Vec<Channel>,
     },
     /// Runs without an ay channel: their |ay| levels are u·r.
     WithoutAy {

@@ -529,9 +529,11 @@ pub fn finding(f: &GapFinding) -> String {
         GapFinding::Dominant {
             channel,
             share_percent,
+            less_offsets,
         } => format!(
-            "{} carries {share_percent:.0} % of the base model's held-out error (each channel over its noise floor): it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
-            channel.name()
+            "{} carries {share_percent:.0} % of the base model's held-out error (each channel over its noise floor{}): it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
+            channel.name(),
+            gap::offsets_aside(less_offsets)
         ),
         GapFinding::WithoutAy { runs, of } => {
             format!("|ay| levels are u·r on the {runs} of {of} runs without an ay channel")

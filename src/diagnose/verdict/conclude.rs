@@ -15,7 +15,7 @@ use crate::diagnose::report::outcome::EXPLAINS_MOST;
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
     NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony, Part, RankWarning,
-    Ranked, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    Ranked, Searched, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::calibration::calibration_evidence;
@@ -63,7 +63,7 @@ pub(crate) fn verdict(
                     no_tyre: base_no_tyre.to_vec(),
                 });
             }
-            evidence.extend(chosen_over(found, singles, base, &r.effects));
+            evidence.extend(chosen_over(found, singles, base, &r));
             evidence.extend(fallback(found, singles, base));
             Verdict::Explained(Explained {
                 evidence,
@@ -136,16 +136,22 @@ fn chosen_over(
     found: &Search,
     singles: &[Scored],
     base: &Baseline,
-    effects: &[EffectKind],
+    verdict: &Ranked,
 ) -> Vec<Evidence> {
     let mut out = Vec::new();
+    let effects = &verdict.effects;
     if let Some(i) = found
         .passed_over
         .filter(|&i| !effects.contains(&singles[i].kinds[0]))
     {
         let p = base.rank(&singles[i]);
+        let pressed = on_search_bound(&p.parameters);
+        let units: Vec<&str> = pressed.iter().map(|v| v.unit).collect();
+        let inside = (verdict.parameters.iter()).filter(|v| units.contains(&v.unit));
         out.push(Evidence::LookalikePressed {
-            pressed: on_search_bound(&p.parameters),
+            pressed_ranges: searched(&p.effects, pressed.iter()),
+            verdict_inside: searched(effects, inside),
+            pressed,
             effects: p.effects,
             reduction_percent: p.reduction_percent,
         });
@@ -174,6 +180,30 @@ fn chosen_over(
         }));
     }
     out
+}
+
+/// The parameters `values` of `effects` with the ranges their fits
+/// searched (a value whose name no effect's parameter has is left out).
+fn searched<'a>(
+    effects: &[EffectKind],
+    values: impl Iterator<Item = &'a ParameterValue>,
+) -> Vec<Searched> {
+    values
+        .filter_map(|v| {
+            let range = effects.iter().find_map(|e| {
+                e.parameters()
+                    .iter()
+                    .find(|q| v.name == format!("{}.{}", e.name(), q.name))
+                    .map(|q| q.bounds)
+            })?;
+            Some(Searched {
+                name: v.name.clone(),
+                unit: v.unit,
+                value: v.value,
+                range,
+            })
+        })
+        .collect()
 }
 
 /// Where the verdict was reached from a pair of the best singles in

@@ -365,7 +365,10 @@ fn greedy(
         // The restricted fits first: where they screen the step, the sets'
         // polish is spared (`restricted`).
         if screening {
-            let restricted: Vec<Scored> = started.par_iter().map(|s| ctx.restricted(s)).collect();
+            let restricted: Vec<Scored> = started
+                .par_iter()
+                .map(|s| ctx.restricted(s, &current))
+                .collect();
             if let Some(rows) = screened_restricted(ctx, base, &current, &restricted) {
                 out.screened.extend(rows);
                 break;

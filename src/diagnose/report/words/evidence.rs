@@ -5,10 +5,10 @@
 //! parameter idle where a simpler candidate does about as well (held-out
 //! errors J dimensionless, reductions in percent).
 
-use super::{no_tyre_list, parameter, std_error};
+use super::{no_tyre_list, parameter, std_error, value};
 use crate::diagnose::effects::joined;
 use crate::diagnose::report::outcome::{
-    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, ThroughBank,
+    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, Searched, ThroughBank,
 };
 
 /// What the runs show beside a verdict's fit, in one line.
@@ -56,18 +56,73 @@ pub fn evidence(e: &Evidence) -> String {
             effects,
             reduction_percent,
             pressed,
+            pressed_ranges,
+            verdict_inside,
         } => {
             let at: Vec<String> = pressed.iter().map(super::parameters::on_bound).collect();
+            let ranges: Vec<String> = pressed_ranges.iter().map(|r| range(r.unit, r.range)).collect();
+            let ranges = if ranges.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", ranges.join(", "))
+            };
             format!(
-                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges",
+                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched{ranges}; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges{}",
                 joined(effects, "+"),
-                at.join(", ")
+                at.join(", "),
+                inside(verdict_inside, pressed_ranges)
             )
         }
         Evidence::ChosenForParsimony(c) => parsimony(c),
         Evidence::PairsFallback(f) => fallback(f),
         Evidence::MassAlike(m) => mass_alike(m),
     }
+}
+
+/// A range searched, `low–high unit`.
+fn range(unit: &str, (low, high): (f64, f64)) -> String {
+    let unit = if unit == "-" { "" } else { unit };
+    format!("{}–{} {unit}", value(low), value(high))
+        .trim_end()
+        .to_string()
+}
+
+/// The verdict's parameters in a pressed one's unit, each with its range
+/// searched, and where several share it, their sum against the pressed
+/// range's end: a steer path whose delay and lag add up to the 0.3 s a
+/// sensor delay is pressed on holds that total inside its ranges, which
+/// a sensor's delay does not.
+fn inside(verdict: &[Searched], pressed: &[Searched]) -> String {
+    if verdict.is_empty() {
+        return String::new();
+    }
+    let each: Vec<String> = verdict
+        .iter()
+        .map(|v| {
+            let unit = if v.unit == "-" { "" } else { v.unit };
+            format!(
+                "{} = {} {unit} (range {})",
+                v.name,
+                value(v.value),
+                range(v.unit, v.range)
+            )
+        })
+        .collect();
+    let unit = verdict[0].unit;
+    let sum = (verdict.len() > 1 && verdict.iter().all(|v| v.unit == unit))
+        .then(|| verdict.iter().map(|v| v.value).sum::<f64>());
+    let end = pressed.iter().find(|p| p.unit == unit).map(|p| p.range.1);
+    let total = match (sum, end) {
+        (Some(t), Some(e)) => format!(
+            "; their sum, {} {unit}, is {} the end of the look-alike's range ({} {unit}) but inside what the verdict's reach together ({} {unit}): the ranges say what each effect plausibly is, and the size that presses the look-alike is plausible for the verdict's",
+            value(t),
+            if t >= 0.9 * e { "near" } else { "below" },
+            value(e),
+            value(verdict.iter().map(|v| v.range.1).sum::<f64>()),
+        ),
+        _ => String::new(),
+    };
+    format!(": {}{total}", each.join(", "))
 }
 
 /// A verdict reached from a pair of the best singles in sample, where the

@@ -5,7 +5,7 @@
 use super::evidence;
 use super::tests::fitted;
 use crate::diagnose::effects::{Bound, EffectKind};
-use crate::diagnose::report::{Evidence, ParameterValue, Parsimony};
+use crate::diagnose::report::{Evidence, ParameterValue, Parsimony, Searched};
 
 /// The steer path's lag on its physical limit, as the ranking gives it.
 fn lag_on_limit() -> ParameterValue {
@@ -106,6 +106,43 @@ fn a_ratio_pressed_on_its_bound_is_said_without_a_unit() {
             1.5,
             Some(Bound::Search),
         )],
+        pressed_ranges: Vec::new(),
+        verdict_inside: Vec::new(),
     };
     assert!(evidence(&ratio).contains("only with road_friction.friction_scale = 1.5000 at the end"));
+}
+
+/// Putnam (fresh-eyes round 27B): a sensor delay pressed on its 0.3 s
+/// end was passed over for a steer path whose delay and lag add up to
+/// 0.298 s. The line gives both ranges and the sum, so the verdict's own
+/// numbers do not contradict why the look-alike was refused.
+#[test]
+fn a_lookalike_pressed_on_a_size_the_verdict_reaches_inside_its_ranges_says_both_ranges() {
+    let searched = |name: &str, v: f64, high: f64| Searched {
+        name: name.to_string(),
+        unit: "s",
+        value: v,
+        range: (0.0, high),
+    };
+    let e = Evidence::LookalikePressed {
+        effects: vec![EffectKind::SensorDelay],
+        reduction_percent: 52.6,
+        pressed: vec![fitted("sensor_delay.delay", "s", 0.3, Some(Bound::Search))],
+        pressed_ranges: vec![searched("sensor_delay.delay", 0.3, 0.3)],
+        verdict_inside: vec![
+            searched("steer_path.delay", 0.1702, 0.5),
+            searched("steer_path.lag", 0.128, 0.5),
+        ],
+    };
+    let s = evidence(&e);
+    assert!(
+        s.contains(
+            "sensor_delay.delay = 0.3000 s at the end of the range searched (0.0000–0.3000 s);"
+        ),
+        "{s}"
+    );
+    assert!(
+        s.ends_with("explains the gap from inside its ranges: steer_path.delay = 0.1702 s (range 0.0000–0.5000 s), steer_path.lag = 0.1280 s (range 0.0000–0.5000 s); their sum, 0.2982 s, is near the end of the look-alike's range (0.3000 s) but inside what the verdict's reach together (1.0000 s): the ranges say what each effect plausibly is, and the size that presses the look-alike is plausible for the verdict's"),
+        "{s}"
+    );
 }

@@ -3,6 +3,7 @@
 //! steady offset the RMS does not single out. RMS values and offsets in the
 //! channel's unit (rad/s, m/s², rad).
 
+use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{above_noise, GapFinding, SIGNIFICANT_NOISE_FLOORS};
 use crate::diagnose::report::Part;
 
@@ -167,4 +168,14 @@ pub fn band_lines(findings: &[GapFinding], runs: usize) -> Vec<String> {
             ),
         })
         .collect()
+}
+
+/// The steady offsets a channel's dominance was judged without
+/// ([`GapFinding::Dominant`]'s `less_offsets`).
+pub(super) fn offsets_aside(channels: &[Channel]) -> String {
+    let names: Vec<&str> = channels.iter().map(|c| c.name()).collect();
+    if names.is_empty() {
+        return String::new();
+    }
+    format!(", less the steady offset of {}", names.join(" and "))
 }

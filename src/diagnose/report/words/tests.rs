@@ -338,6 +338,8 @@ fn a_lookalike_passed_over_for_its_search_bound_is_named_with_the_value_it_neede
         effects: vec![EffectKind::SensorDelay],
         reduction_percent: 54.3,
         pressed: vec![fitted("sensor_delay.delay", "s", 0.3, Some(Bound::Search))],
+        pressed_ranges: Vec::new(),
+        verdict_inside: Vec::new(),
     };
     assert_eq!(
         evidence(&e),

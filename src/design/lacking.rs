@@ -215,7 +215,7 @@ fn pair(
             labels: members.iter().map(|m| m.label()).collect(),
             limits,
             logging: &log,
-            runs: &Prepared::campaign_runs(c),
+            runs: &super::separation::campaign_prepared(c),
         };
         let (expected, uncertainty, campaign_separation, worth) = assess(&cx, d);
         let parts = channel_parts(oa, ob, floors, &log);

@@ -294,11 +294,7 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     // its first sample, that sample's noise starts the candidates apart
     // and the transients that follow read as separation (a linear car
     // logged 60 ms late: D = 3.8 from the first samples, 0.6 settled).
-    let runs: Vec<Prepared> = c
-        .runs
-        .iter()
-        .map(|r| separation::prepared(r, c.settings.step, c.settings.sample_rate))
-        .collect();
+    let runs = separation::campaign_prepared(c);
     let sets = sets(fitted, req)?
         .into_iter()
         .map(|(members, source)| {

@@ -114,6 +114,17 @@ pub(crate) fn prepared(run: &MeasuredRun, step: f64, rate: f64) -> Prepared {
     p
 }
 
+/// The campaign's runs made ready for replays from their settled starts
+/// ([`prepared`]): one preparation for `design` and for the diagnosis's
+/// advice on a lacking run, so both measure the same campaign separation.
+pub(crate) fn campaign_prepared(c: &Campaign) -> Vec<Prepared> {
+    let set = &c.settings;
+    c.runs
+        .iter()
+        .map(|r| prepared(r, set.step, set.sample_rate))
+        .collect()
+}
+
 /// The sum of squared residuals of `model` on `run` in units of the noise
 /// floors, over the measured channels.
 pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {

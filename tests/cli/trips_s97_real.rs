@@ -248,13 +248,13 @@ fn where_the_model_leaves_a_gap_a_parameter_reports_its_fold_spread_where_larger
     assert!(beyond_asymptotic >= 1, "{}", v["parameters"]);
     assert!(
         stdout.contains(
-            "(the fold refits' spread: the model leaves a gap above noise, and its asymptotic ± "
+            "(the fold refits' spread: its held-out error stays above the noise level, and its asymptotic ± "
         ),
         "{stdout}"
     );
     let page = fs::read_to_string(dir.path().join("out").join("report.html")).unwrap();
     assert!(
-        page.contains("the model leaves a gap above noise, and its asymptotic ± "),
+        page.contains("its held-out error stays above the noise level, and its asymptotic ± "),
         "the page says which standard error"
     );
 }

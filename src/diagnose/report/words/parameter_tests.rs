@@ -250,7 +250,7 @@ fn a_fit_that_leaves_a_gap_reports_its_fold_spread_where_larger() {
     );
     assert_eq!(
         parameter(&inexact),
-        "accelerometer_position.x = 0.8282 ± 0.00716 m (the fold refits' spread: the model leaves a gap above noise, and its asymptotic ± 0.00438 covers the noise alone)"
+        "accelerometer_position.x = 0.8282 ± 0.00716 m (the fold refits' spread: its held-out error stays above the noise level, and its asymptotic ± 0.00438 covers the noise alone)"
     );
     // Fitted to the noise: the asymptotic error, as before.
     let exact = with.with_model_error(false);

@@ -135,7 +135,7 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
                 // beyond the asymptotic error, though not beyond chance:
                 // the larger is the one reported.
                 None if p.std_error_basis == StdErrorBasis::FoldSpread => format!(
-                    "{} = {v} ± {}{unit} (the fold refits' spread: the model leaves a gap above noise, and its asymptotic ± {} covers the noise alone)",
+                    "{} = {v} ± {}{unit} (the fold refits' spread: its held-out error stays above the noise level, and its asymptotic ± {} covers the noise alone)",
                     p.name,
                     std_error(p.std_error),
                     std_error(se)

@@ -9,10 +9,10 @@ const OFFSETS: [f64; 3] = [0.004, -0.6, -0.01];
 
 /// Deterministic near-Gaussian noise of unit deviation (sum of uniforms),
 /// the same on every machine.
-struct Noise(u64);
+pub(crate) struct Noise(pub(crate) u64);
 
 impl Noise {
-    fn gauss(&mut self) -> f64 {
+    pub(crate) fn gauss(&mut self) -> f64 {
         (0..12)
             .map(|_| {
                 self.0 = self

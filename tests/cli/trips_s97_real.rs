@@ -6,23 +6,7 @@
 
 use super::*;
 
-/// Deterministic near-Gaussian noise of unit deviation (sum of uniforms).
-struct Noise(u64);
-
-impl Noise {
-    fn gauss(&mut self) -> f64 {
-        (0..12)
-            .map(|_| {
-                self.0 = self
-                    .0
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (self.0 >> 11) as f64 / (1u64 << 53) as f64
-            })
-            .sum::<f64>()
-            - 6.0
-    }
-}
+use super::calibration::Noise;
 
 const G: f64 = 9.80665;
 

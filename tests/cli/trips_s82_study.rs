@@ -38,7 +38,7 @@ fn a_study_flags_counts_and_says_the_combinations_that_slide() {
         .find(|l| l.starts_with("500,220,"))
         .expect("the 500/220 row");
     assert!(
-        row.ends_with(",,,,,,,,,,sliding,\"steady sideslip -38.8 deg, beyond 10 deg: the car slides past its grip; no handling response, metrics left empty\""),
+        row.ends_with(",,,,,,,,,,sliding,\"sideslip -38.8 deg at the end of the run, still moving (no steady value), beyond 10 deg: the car slides past its grip; no handling response, metrics left empty\""),
         "{row}"
     );
     // The good cars are still measured: the book's 500/520 pair.

@@ -85,11 +85,11 @@ fn a_study_keeps_a_combination_still_settling_and_says_how_far_it_has_to_go() {
         out.to_str().unwrap(),
     ]);
     assert!(
-        said.contains("  still settling at the end of the step: 1 of 47 combinations"),
+        said.contains("  still settling at the end of the step: 3 of 47 combinations"),
         "{said}"
     );
     let summary = read_json(&out.join("summary.json"));
-    assert_eq!(summary["still_settling"], 1, "{summary}");
+    assert_eq!(summary["still_settling"], 3, "{summary}");
     assert_eq!(summary["not_settled"], 0, "{summary}");
     let csv = fs::read_to_string(out.join("study.csv")).unwrap();
     let row = csv

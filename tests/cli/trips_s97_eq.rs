@@ -41,7 +41,7 @@ fn an_unsorted_sweep_list_is_refused_and_sorted_it_reports_the_critical_speed_on
     let dir = scratch(&[("s.toml", &unsorted), ("tyre.toml", LINEAR)]);
     let e = fails_cleanly("equilibria", &dir.path().join("s.toml"), dir.path());
     assert!(
-        e.contains("s.toml:11:")
+        e.contains("s.toml:18:")
             && e.contains("`sweep.speed[1]` = 20")
             && e.contains("increasing order"),
         "{e}"
@@ -161,7 +161,7 @@ fn a_sideslip_still_moving_is_not_called_steady_and_a_target_in_degrees_is_named
         let closed = closed_sideslip(kf, kr);
         if (end - closed).abs() > 0.01 * closed.abs() {
             assert!(
-                !note.contains("steady"),
+                !note.contains("steady sideslip"),
                 "{kf}/{kr}: {end}° vs closed form {closed:.2}°: {note}"
             );
             checked += 1;

@@ -82,7 +82,7 @@ fn log_banks(seed: u64, felt: f64, logged: Option<f64>, corner: bool) -> String 
 
 /// A campaign folder (linear tyres, one candidate: the point is the
 /// calibration, not the search) with the runs `runs`, diagnosed.
-fn diagnosed(runs: &[(&str, String)]) -> (tempfile::TempDir, String, serde_json::Value) {
+pub(crate) fn diagnosed(runs: &[(&str, String)]) -> (tempfile::TempDir, String, serde_json::Value) {
     let v = format!(
         "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
     );

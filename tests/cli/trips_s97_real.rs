@@ -6,26 +6,9 @@
 
 use super::*;
 
-use super::calibration::Noise;
+use super::calibration::{diagnosed, Noise};
 
 const G: f64 = 9.80665;
-
-/// A campaign folder (linear tyres, `sensor_bias` the one candidate: the
-/// point is what the runs' own channels say) with the runs `runs`,
-/// diagnosed into its `out`.
-fn diagnosed(runs: &[(&str, String)]) -> (tempfile::TempDir, String, serde_json::Value) {
-    let v = format!(
-        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
-    );
-    let dir = scratch(&[("vehicle.toml", &v)]);
-    linear_tyre(dir.path());
-    fs::create_dir(dir.path().join("runs")).unwrap();
-    for (name, text) in runs {
-        fs::write(dir.path().join("runs").join(name), text).unwrap();
-    }
-    let (stdout, d) = diagnose(dir.path());
-    (dir, stdout, d)
-}
 
 /// The sideslip sensor's offset in [`banked_straights`], rad.
 const BETA_OFFSET: f64 = -0.01;

@@ -44,6 +44,7 @@ mod written_checks;
 pub use two_stage::{TwoStageReport, Written};
 pub use unused_columns::Measured;
 mod staged_figure;
+mod staged_run;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
 use crate::identify::{start_tyre_of, Fit};
@@ -53,7 +54,7 @@ use crate::tyre::mf::MfCoefficients;
 use crate::tyre::Tyre;
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
-use staged::run_staged;
+use staged_run::run_staged;
 mod swarm;
 pub use staged::StagedJob;
 use std::path::PathBuf;

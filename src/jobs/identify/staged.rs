@@ -3,21 +3,19 @@
 //! ([`crate::identify::mf_staged`]) on rig data (with its `mx`, `my`
 //! columns when measured), the result written as a .tir (a
 //! template's constants and layout kept) that is read back and checked to
-//! reproduce the fitted forces.
+//! reproduce the fitted forces. This file holds the job's report and its
+//! lines; the run itself is `staged_run.rs`.
 
 use super::level_names::LevelNames;
-use super::{Options, StartArg};
-use crate::error::{Error, FitError, OptionsError};
+use super::Options;
 use crate::format::{exact, plural};
 use crate::identify::mf_staged::{
-    self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
+    self, rms_text, HoldReason, PooledSigma, RowAccount, StagedReport,
 };
-use crate::io::tir::TirDocument;
 use crate::jobs::tyre_eval::gives_none;
 use crate::report::plot::Figure;
-use crate::report::{refuse_overwrites, OutputLock};
-use crate::tyre::mf::{MagicFormula, MfCoefficients};
-use crate::tyre::StagedFit;
+use crate::report::OutputLock;
+use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
 
 /// The report of the staged Magic Formula fit.
@@ -118,38 +116,13 @@ impl StagedJob {
     }
 }
 
-/// The warning of a fitted tyre whose pure curves (of the forces it has:
-/// `PDY1`, `PDX1` not 0) go beyond any tyre's, with the numbers, or `None`.
-fn pure_curve_warning(t: &MagicFormula, hold: &[(String, f64)]) -> Option<String> {
-    let c = &t.coefficients;
-    // The cornering stiffness per unit load at FNOMIN is judged after the
-    // curves, as the readers judge it: a fit outside 1.5–100 1/rad is
-    // written and warned of, not refused, as a curve beyond any tyre's is
-    // (a long fit is not lost, the data or their units may be what to
-    // fix, and the file shows what the fit found); every reader refuses
-    // the file with the same numbers, so nothing runs on it unseen.
-    let e = t
-        .check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0)
-        .err()
-        .or_else(|| crate::io::tir::cornering_per_load(t))?;
-    let held = hold.iter().any(|(k, _)| *k == e.key);
-    Some(format!(
-        "the {} `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: {}",
-        if held { "held" } else { "fitted" },
-        e.key,
-        exact(c.get(&e.key).unwrap_or(f64::NAN)),
-        e.reason,
-        if held { "hold it at a tyre's value, or fit it" } else { "refit with --hold, or check the data" }
-    ))
-}
-
 /// The terminal's lines of each stage of `report` (indented as the
 /// summary gives them): its σ or why it was skipped, where its error lies
 /// (loads named as `named`, the grouping's levels, name them), its
 /// warnings and what it held. The written file's header repeats them
 /// without the seconds (`timed` false), so that a refit of the same data
 /// writes the same file.
-fn stage_lines(
+pub(super) fn stage_lines(
     report: &StagedReport,
     named: &[crate::identify::grouping::Levels],
     timed: bool,
@@ -206,216 +179,6 @@ fn stage_lines(
         }));
     }
     out
-}
-
-/// Runs the staged fit of `o`, version `fit` of its model's (from the
-/// model's registry entry: `mf61` fits and writes an MF 6.1, `mf62` an
-/// MF 6.2).
-pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error> {
-    let out = o.output_path();
-    let mut inputs = vec![o.data.clone()];
-    inputs.extend(o.template.clone());
-    refuse_overwrites(
-        &[
-            out.clone(),
-            out.with_extension("report.json"),
-            out.with_extension("png"),
-        ],
-        &inputs,
-    )?;
-    let lock = super::output_lock(o)?;
-    let template = o.template.as_deref().map(TirDocument::read).transpose()?;
-    let template_tyre = template.as_ref().map(|d| d.template()).transpose()?;
-    // A template's curves are judged as a tyre's, and warned of: the fit
-    // sets the coefficients it starts from (a block no stage fits is
-    // written as the template has it, and said again below).
-    let template_warning = template
-        .as_ref()
-        .zip(template_tyre.as_ref())
-        .and_then(|(d, t)| d.curve_refusal(t))
-        .map(|e| {
-            format!("the template's curves are no tyre's: {e}; its coefficients only start the fit")
-        });
-    // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
-    let (data, moments, lifted) = super::read_lifted(o)?;
-    // Nor is a sample at rest (`standstill.rs`); forces far too small for
-    // their loads are warned of as for every model (`force_scale.rs`).
-    let (data, moments, at_rest) = super::standstill::without_rest(data, moments);
-    let input_warnings = super::force_scale::small_forces(&data);
-    let default_speed = template_tyre
-        .as_ref()
-        .map_or(16.7, |t| t.coefficients.LONGVL);
-    let prepared = mf_staged::prepare(
-        &o.data,
-        &data,
-        &moments,
-        o.alpha_bin_deg.to_radians(),
-        default_speed,
-    )?;
-    // The rows' ranges as the fit's and the file's validity ranges: a
-    // template's own (a pressure range of 200–400 kPa) would saturate data
-    // outside them in the fit, and the file would extrapolate past the
-    // data silently.
-    let spans = super::ranges::row_spans(&prepared.rows);
-    let spans = match &prepared.account.thinning {
-        Some(g) => super::ranges::widened_to_reached_levels(spans, &g.levels),
-        None => spans,
-    };
-    let spans = super::ranges::widened_to_sample_slips(spans, &data);
-    let template_tyre = template_tyre.map(|mut t| {
-        t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
-        t
-    });
-    // A template's FNOMIN, NOMPRES, INFLPRES outside the data's (or no
-    // NOMPRES) is replaced by theirs (`nompres.rs`), held as by `--hold`.
-    let (rows, version) = (&prepared.rows, fit.version);
-    let recentred = super::nompres::recentred(version, template_tyre.as_ref(), rows, &o.hold);
-    let mut given = o.hold.clone();
-    given.extend(recentred.iter().map(|h| (h.name.clone(), h.value)));
-    let settings = mf_staged::Settings {
-        version: fit.version,
-        start: match o.start {
-            StartArg::Data => StartScheme::Data,
-            StartArg::Paper => StartScheme::Paper,
-            StartArg::Template if o.template.is_none() => {
-                return Err(OptionsError::TemplateMissing.into())
-            }
-            StartArg::Template => StartScheme::Template,
-        },
-        template: template_tyre,
-        max_iterations: o.max_iterations,
-        holding: Holding {
-            given,
-            // The coefficients the template file gives: a parameter the
-            // data do not determine is held at the template's value then.
-            template_keys: template.as_ref().map_or(Vec::new(), |d| {
-                MfCoefficients::NAMES
-                    .iter()
-                    .filter(|k| d.get(k).is_some())
-                    .map(|k| k.to_string())
-                    .collect()
-            }),
-        },
-    };
-    let id = mf_staged::identify(&prepared.rows, &settings)
-        .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
-    let fitted: Vec<mf_staged::Stage> = id
-        .report
-        .stages
-        .iter()
-        .filter(|s| s.skipped.is_none())
-        .map(|s| s.stage)
-        .collect();
-    let raw = mf_staged::raw_rows(&data, &moments, default_speed);
-    let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw, &fitted);
-    crate::tyre::ModelParameters::check_sizes(&id.tyre)
-        .map_err(|source| FitError::BeyondAnyTyre { source })?;
-    let mut held = super::holds::holds_of(o, &given_names(o));
-    held.extend(recentred);
-    if o.template.is_none() {
-        held.extend(super::nompres::constants_held(&id.tyre, &data, o));
-    }
-    let mut written = id.tyre.clone();
-    written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
-    let combined = prepared.rows.iter().filter(|r| is_combined(r)).count();
-    let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();
-    unfitted.extend(at_rest.map(|r| r.line()));
-    unfitted.extend(
-        settings
-            .template
-            .as_ref()
-            .and_then(super::written_checks::stiffness_branch_note),
-    );
-    unfitted.extend(unfitted_blocks(
-        &id.report,
-        o.template.is_some(),
-        &written,
-        combined,
-    ));
-    let named = prepared
-        .account
-        .thinning
-        .as_ref()
-        .map_or(&[][..], |g| g.levels.as_slice());
-    // The terminal's record of each stage, so that the file says what its
-    // fit left undetermined or unconverged.
-    let stages: String = stage_lines(&id.report, named, false)
-        .iter()
-        .chain(std::iter::once(&sigma_pooled.line()))
-        .map(|l| format!("$ {}\n", l.trim_start()))
-        .collect();
-    let curvature_above_one = super::curvature::curvature_excess(&written, &spans, &fitted);
-    let curvature: String = curvature_above_one
-        .iter()
-        .map(|e| format!("$ warning: {}\n", e.line()))
-        .collect();
-    // A fitted curve beyond any tyre's is written, marked, not refused: a
-    // long fit is not lost, and the readers refuse the file with the
-    // same numbers.
-    let pure_curve_warning: Vec<String> = template_warning
-        .into_iter()
-        .chain(pure_curve_warning(&written, &o.hold))
-        .collect();
-    let curvature = curvature
-        + &input_warnings
-            .iter()
-            .map(|w| format!("$ warning: {w}\n"))
-            .collect::<String>()
-        + &pure_curve_warning
-            .iter()
-            .map(|w| format!("$ warning: {w}\n"))
-            .collect::<String>();
-    let head = held_comment(o)
-        + &super::ranges::tir_comment(&spans, o.template.is_some())
-        + &unfitted
-            .iter()
-            .map(|l| format!("$ {l}\n"))
-            .collect::<String>()
-        + &super::holds::held_file_lines(&held, "$")
-        + &stages
-        + &curvature;
-    // The file's own checks, as `tyre-eval` makes them of it.
-    let body = crate::io::tir::tir_text(&written, template.as_ref())?;
-    let (tir, file_warnings) = super::written_checks::with_file_checks(&out, &head, &body);
-    let read_back = TirDocument::parse(std::path::Path::new("<written .tir>"), &tir)?.template()?;
-    let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
-    if back > 1e-9 {
-        return Err(FitError::RoundTrip { difference: back }.into());
-    }
-    let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows, named);
-    Ok(StagedJob {
-        held,
-        report: id.report,
-        data: o.data.display().to_string(),
-        recorded: o.recorded(),
-        rows: prepared.account,
-        sigma_pooled,
-        round_trip_relative_difference: back,
-        curvature_above_one,
-        pure_curve_warning,
-        file_warnings,
-        input_warnings,
-        figure,
-        tir,
-        unfitted,
-        options: o.clone(),
-        lock,
-    })
-}
-
-/// The comment lines that open a written .tir: the command that repeats
-/// the fit (every option that changes it) and each coefficient held at
-/// the value given, not fitted. A `$` line is a comment wherever it
-/// stands.
-fn held_comment(o: &Options) -> String {
-    let mut s = format!("$ identified by `{}`\n", o.command());
-    for (n, v) in &o.hold {
-        s += &format!(
-            "$ held: {n} = {}: given with --hold, not fitted (SI units)\n",
-            exact(*v)
-        );
-    }
-    s
 }
 
 /// The blocks the fit wrote without data, one line each: where the pure
@@ -564,19 +327,6 @@ fn combined_unfitted(
             ))
         })
         .collect()
-}
-
-/// A row of combined slip: both |κ| and |α| above 1e-3, as the combined
-/// stages take them.
-fn is_combined(r: &mf_staged::MfRow) -> bool {
-    r.kappa.abs() > 1e-3 && r.alpha.abs() > 1e-3
-}
-
-/// The names given with `--hold`: a given value is set before the stages
-/// and written whether or not a stage that fits it ran, so every hold is
-/// applied.
-fn given_names(o: &Options) -> Vec<String> {
-    o.hold.iter().map(|(n, _)| n.clone()).collect()
 }
 
 /// The terminal's lines of a stage's parameters held for want of levels

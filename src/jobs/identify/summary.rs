@@ -4,7 +4,7 @@
 
 use super::holds::{held_lines, Held};
 use super::notes::{held_as_given, later_fit_notes, undetermined_note, unfitted_notes};
-use super::{SwarmReport, Written};
+use super::{SwarmReport, TwoStageReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::{Fit, HeldFor};
 use crate::tyre::Identification;
@@ -12,6 +12,36 @@ use crate::tyre::Identification;
 impl SwarmReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
+        let mut out = self.data_lines();
+        // Each channel's held lines sit with its block: the lateral
+        // force's (and every --hold) here, before its σ table.
+        out.extend(held_lines(&self.held_in(Block::First)));
+        out.extend(self.two_stage_lines());
+        out.extend(self.first_fit_lines());
+        out.extend(self.written_line());
+        out.extend(
+            super::notes::sigma_notes(&self.fit, &self.level_names())
+                .iter()
+                .map(|n| n.line(" ")),
+        );
+        out.extend(self.later_fit_lines());
+        out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
+        out.extend(
+            self.curvature_held
+                .as_ref()
+                .map(|x| format!("  {}", x.line())),
+        );
+        out.extend(
+            self.pac89_reversal
+                .map(|x| format!("  warning: {}", x.line())),
+        );
+        out
+    }
+
+    /// The data's line (conditions, model, seed), then what was left out
+    /// (a lifted wheel's, a standstill's samples) and the grouping's
+    /// levels.
+    fn data_lines(&self) -> Vec<String> {
         let o = &self.options;
         let mut out = vec![format!(
             "{}: {}; model {}, seed {}",
@@ -23,9 +53,14 @@ impl SwarmReport {
         out.extend(self.lifted.map(|l| format!("  {}", l.line())));
         out.extend(self.at_rest.iter().map(|l| format!("  {l}")));
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
-        // Each channel's held lines sit with its block: the lateral
-        // force's (and every --hold) here, before its σ table.
-        out.extend(held_lines(&self.held_in(Block::First)));
+        out
+    }
+
+    /// The two-stage identification's line: why it was not run (asked
+    /// for by the model, but `--hold` given), or its statistics.
+    fn two_stage_lines(&self) -> Vec<String> {
+        let o = &self.options;
+        let mut out = Vec::new();
         let two_stage_asked = o
             .model
             .swarm_model()
@@ -50,15 +85,21 @@ impl SwarmReport {
                 crate::jobs::shard::plural(t.stages.stage1.len(), "condition", "conditions"),
             ));
         }
+        out
+    }
+
+    /// The first fit's σ line, its σ per condition, its parameters'
+    /// warnings and the linear window.
+    fn first_fit_lines(&self) -> Vec<String> {
         let f = &self.fit;
-        out.push(format!(
+        let mut out = vec![format!(
             "  σ {:.3} % (PSO alone {:.3} %), RMS {} N, {} evaluations, {:.2} s",
             f.sigma_percent,
             f.sigma_pso_percent,
             decimals_or_digits(f.rms, 1, 3),
             f.evaluations,
             f.seconds
-        ));
+        )];
         let names = self.level_names();
         for c in &f.curves {
             // Levels as the grouping's lines and the figure name them.
@@ -72,74 +113,91 @@ impl SwarmReport {
                 decimals_or_digits(c.rms, 1, 3)
             ));
         }
-        out.extend(parameter_warnings(f, &o.hold));
+        out.extend(parameter_warnings(f, &self.options.hold));
         if let Some(w) = &self.linear_window {
             out.extend(w.lines(" "));
         }
-        if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
-            // With the digits that tell the two apart: it was chosen for
-            // being lower, which three decimals can hide.
-            let (c, d, differ) = distinct(
-                t.polished_overall_sigma_percent,
-                t.direct_sigma_percent,
-                3,
-                6,
-            );
-            let against = if differ {
-                format!("{c} % < direct {d} %")
-            } else {
-                format!("{c} %, the direct fit's {d} % to the printed precision, lower beyond it")
-            };
-            // The file holds the result with what the data do not
-            // determine held, whose σ is not the free one compared.
-            let held = self.undetermined_held();
-            out.push(if held.is_empty() || self.fit.sigma_percent == t.polished_overall_sigma_percent {
-                format!("  writing the two-stage result (σ over all points {against})")
-            } else {
-                format!(
-                    "  writing the two-stage result with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
-                    held.join(", "),
-                    self.fit.sigma_percent
-                )
-            });
-        }
-        if let (Some(Written::Direct), Some(t)) = (self.written, &self.two_stage) {
-            let (d, c, differ) = distinct(
-                t.direct_sigma_percent,
-                t.polished_overall_sigma_percent,
-                3,
-                6,
-            );
-            let against = if differ {
-                format!("{d} % ≤ two-stage {c} %")
-            } else {
-                format!("{d} %, the two-stage result's {c} % to the printed precision, not lower beyond it")
-            };
-            // The file holds the fit with what the data do not determine
-            // held, whose σ is not the free fit's the choice compared.
-            let held = self.undetermined_held();
-            out.push(if held.is_empty() || self.fit.sigma_percent == t.direct_sigma_percent {
-                format!("  writing the direct fit (σ over all points {against})")
-            } else {
-                format!(
-                    "  writing the direct fit with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
-                    held.join(", "),
-                    self.fit.sigma_percent
-                )
-            });
-        }
-        if let (Some(Written::CurvatureHeld), Some(h)) = (self.written, &self.curvature_held) {
-            out.push(format!(
+        out
+    }
+
+    /// Which of PAC89's fits was written and why (`Written`), or `None`.
+    fn written_line(&self) -> Option<String> {
+        match (self.written?, &self.two_stage, &self.curvature_held) {
+            (Written::TwoStage, Some(t), _) => Some(self.two_stage_written(t)),
+            (Written::Direct, Some(t), _) => Some(self.direct_written(t)),
+            (Written::CurvatureHeld, _, Some(h)) => Some(format!(
                 "  writing the direct fit again with its lateral curvature held (σ over all points {} %): the better of the direct fit and the two-stage result, σ {} %, turned the lateral force around (below)",
                 crate::format::readable(h.sigma_percent, 4),
                 crate::format::readable(h.free_sigma_percent, 4)
-            ));
+            )),
+            _ => None,
         }
-        out.extend(
-            super::notes::sigma_notes(&self.fit, &self.level_names())
-                .iter()
-                .map(|n| n.line(" ")),
+    }
+
+    /// The line of the two-stage result `t` written.
+    fn two_stage_written(&self, t: &TwoStageReport) -> String {
+        // With the digits that tell the two apart: it was chosen for
+        // being lower, which three decimals can hide.
+        let (c, d, differ) = distinct(
+            t.polished_overall_sigma_percent,
+            t.direct_sigma_percent,
+            3,
+            6,
         );
+        let against = if differ {
+            format!("{c} % < direct {d} %")
+        } else {
+            format!("{c} %, the direct fit's {d} % to the printed precision, lower beyond it")
+        };
+        // The file holds the result with what the data do not
+        // determine held, whose σ is not the free one compared.
+        let held = self.undetermined_held();
+        if held.is_empty() || self.fit.sigma_percent == t.polished_overall_sigma_percent {
+            format!("  writing the two-stage result (σ over all points {against})")
+        } else {
+            format!(
+                "  writing the two-stage result with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
+                held.join(", "),
+                self.fit.sigma_percent
+            )
+        }
+    }
+
+    /// The line of the direct fit written, the two-stage result `t` not.
+    fn direct_written(&self, t: &TwoStageReport) -> String {
+        let (d, c, differ) = distinct(
+            t.direct_sigma_percent,
+            t.polished_overall_sigma_percent,
+            3,
+            6,
+        );
+        let against = if differ {
+            format!("{d} % ≤ two-stage {c} %")
+        } else {
+            format!(
+                "{d} %, the two-stage result's {c} % to the printed precision, not lower beyond it"
+            )
+        };
+        // The file holds the fit with what the data do not determine
+        // held, whose σ is not the free fit's the choice compared.
+        let held = self.undetermined_held();
+        if held.is_empty() || self.fit.sigma_percent == t.direct_sigma_percent {
+            format!("  writing the direct fit (σ over all points {against})")
+        } else {
+            format!(
+                "  writing the direct fit with {} held: σ over all points {:.3} % (the σ line above); fitted free it was {against}",
+                held.join(", "),
+                self.fit.sigma_percent
+            )
+        }
+    }
+
+    /// The later fits' lines: the aligning moment's, then the
+    /// longitudinal force's (its grouping first), each with its holds,
+    /// parameter warnings and notes.
+    fn later_fit_lines(&self) -> Vec<String> {
+        let hold = &self.options.hold;
+        let mut out = Vec::new();
         if let Some(mz) = &self.aligning {
             out.push(format!(
                 "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
@@ -149,7 +207,7 @@ impl SwarmReport {
                 mz.seconds
             ));
             out.extend(held_lines(&self.held_in(Block::Aligning)));
-            out.extend(parameter_warnings(mz, &o.hold));
+            out.extend(parameter_warnings(mz, hold));
             out.extend(later_fit_notes(self, mz).iter().map(|n| n.line(" ")));
         }
         if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
@@ -162,19 +220,9 @@ impl SwarmReport {
                 fx.seconds
             ));
             out.extend(held_lines(&self.held_in(Block::Longitudinal)));
-            out.extend(parameter_warnings(fx, &o.hold));
+            out.extend(parameter_warnings(fx, hold));
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
-        out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
-        out.extend(
-            self.curvature_held
-                .as_ref()
-                .map(|x| format!("  {}", x.line())),
-        );
-        out.extend(
-            self.pac89_reversal
-                .map(|x| format!("  warning: {}", x.line())),
-        );
         out
     }
 }

@@ -43,19 +43,21 @@
 //! evaluated at any time (a simulation's dense output) is measured by
 //! [`continuous`] instead: integrals by quadrature, events as roots. Signs: any step
 //! direction; the normalisation makes left and right steps give equal metrics.
+//! A sampled record is measured step by step in `held.rs`.
 
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
-use settling::{sideslip_scale, verdict, SETTLED_SPREAD};
+use settling::{sideslip_scale, SETTLED_SPREAD};
 pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
 
 pub mod applicability;
 pub(crate) mod continuous;
 mod divergence;
 mod filter;
+mod held;
 mod variance;
 pub(crate) use filter::zero_phase_low_pass;
-use variance::total_variance;
+pub(crate) use held::{step_metrics, step_metrics_held};
 
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
@@ -70,7 +72,7 @@ mod pulse;
 mod settling;
 mod steady_inside;
 pub(crate) use noise::HeldEvery;
-use noise::{held_noise_scale, noise_deviation, noise_gain};
+use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
 mod variance_said;
@@ -365,7 +367,7 @@ struct Normalised {
 /// `x` (raw: `raw`) normalised from its mean over the initial window,
 /// ending at `pre_end` ([`initial::initial_end`]), to its mean over the
 /// steady window; its noise read on `raw` times `scale` (a held channel's,
-/// [`held_noise_scale`]).
+/// [`noise::held_noise_scale`]).
 fn normalise(
     t: &[f64],
     (raw, x, scale): (&[f64], &[f64], f64),
@@ -394,183 +396,6 @@ fn normalise(
         samples,
         trend,
         inside,
-    })
-}
-
-/// Step-steer metrics of one record.
-pub(crate) fn step_metrics(
-    t: &[f64],
-    steer: &[f64],
-    yaw_rate: &[f64],
-    ay: Option<&[f64]>,
-    beta: Option<&[f64]>,
-    s: &MetricSettings,
-) -> Result<StepMetrics, MetricsError> {
-    step_metrics_held(t, steer, yaw_rate, ay, beta, s, HeldEvery::default())
-}
-
-/// Step-steer metrics of one record whose channels `held` were held
-/// between updates and interpolated (their noise read on the updates).
-pub(crate) fn step_metrics_held(
-    t: &[f64],
-    steer: &[f64],
-    yaw_rate: &[f64],
-    ay: Option<&[f64]>,
-    beta: Option<&[f64]>,
-    s: &MetricSettings,
-    every: HeldEvery,
-) -> Result<StepMetrics, MetricsError> {
-    let n = t.len();
-    if n < 10
-        || steer.len() != n
-        || yaw_rate.len() != n
-        || ay.is_some_and(|a| a.len() != n)
-        || beta.is_some_and(|b| b.len() != n)
-    {
-        let mut lengths = vec![
-            ("t", n),
-            ("steer", steer.len()),
-            ("yaw_rate", yaw_rate.len()),
-        ];
-        lengths.extend(ay.map(|a| ("ay", a.len())));
-        lengths.extend(beta.map(|b| ("beta", b.len())));
-        return Err(MetricsError::Shape { lengths });
-    }
-    let span = t[n - 1] - t[0];
-    if span <= s.pre_window + s.steady_window {
-        return Err(MetricsError::TooShort {
-            span,
-            pre_window: s.pre_window,
-            steady_window: s.steady_window,
-        });
-    }
-    // The stated low-pass, when one is asked for and the sampling allows it.
-    let dt = crate::measured::clean::median_interval(t);
-    let filter_hz = s.filter_hz.filter(|f| *f > 0.0 && *f < 0.4 / dt);
-    let filtered = |x: &[f64]| match filter_hz {
-        Some(f) => zero_phase_low_pass(x, dt, f),
-        None => x.to_vec(),
-    };
-    let gain = filter_hz.map_or(1.0, |f| noise_gain(dt, f));
-    let scale = |k: usize| held_noise_scale(k, dt, filter_hz);
-    let (steer_f, yaw_rate_f) = (filtered(steer), filtered(yaw_rate));
-    let ay_f = ay.map(filtered);
-    let beta_f = beta.map(filtered);
-    let no_step = || pulse::no_step(t, steer, &steer_f, s);
-    let pre_end = initial::initial_end(t, steer, s);
-    let d = normalise(
-        t,
-        (steer, &steer_f, scale(every.steer)),
-        pre_end,
-        s,
-        "steer",
-    )
-    .map_err(|_| no_step())?;
-    if d.steady.abs() < MIN_STEP {
-        return Err(no_step());
-    }
-    let r = normalise(
-        t,
-        (yaw_rate, &yaw_rate_f, scale(every.yaw_rate)),
-        pre_end,
-        s,
-        "yaw rate",
-    )?;
-    let a = match (ay, ay_f.as_deref()) {
-        (Some(raw), Some(f)) => Some(normalise(
-            t,
-            (raw, f, scale(every.ay)),
-            pre_end,
-            s,
-            "lateral acceleration",
-        )?),
-        _ => None,
-    };
-    let r_noise = gain * r.noise;
-    let t0 = first_crossing(t, &d.values, 0.5, t[0]).ok_or(MetricsError::NoHalfStep)?;
-    // The 90 % crossings are looked for from the steer's onset, not from
-    // time zero: at a crawl the lateral acceleration (through v̇) leads the
-    // steer's half-way point, and a search from t₀ would find t₀ itself.
-    let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
-    // A yaw rate growing exponentially once the steer is held: refused.
-    let held = first_crossing(t, &d.values, 0.9, onset).unwrap_or(onset);
-    let sd_r = every.yaw_rate.max(1) as f64 * noise_deviation(yaw_rate);
-    divergence::refuse(t, &yaw_rate_f, held, sd_r, r.steady)?;
-    let tr =
-        first_crossing(t, &r.values, 0.9, onset).ok_or(MetricsError::NoCrossing("yaw rate"))?;
-    let ta = match &a {
-        Some(a) => Some(
-            first_crossing(t, &a.values, 0.9, onset)
-                .ok_or(MetricsError::NoCrossing("lateral acceleration"))?,
-        ),
-        None => None,
-    };
-    // The peak: the first local maximum after the 90 % crossing that stands
-    // above the steady state by more than the noise allows, and by more
-    // than the low-pass alone makes of the steer step; a maximum at the
-    // record's end is not one.
-    let ringing = filter_ringing(t, steer, &steer_f, &d, t0);
-    let threshold = (PEAK_NOISE * r_noise)
-        .max(2.0 * r.spread)
-        .max(s.min_overshoot / 100.0)
-        .max(ringing)
-        .max(1e-9);
-    // A dip of the noise alone does not end the overshoot (peak.rs).
-    let level = (1.0 + threshold, (PEAK_DIP_NOISE * r_noise).min(threshold));
-    let v = &r.values;
-    let peak_at = peak::peak_index(t, v, tr, level);
-    let peak_time = peak_at.map(|i| t[i] - t0);
-    let spread = peak_at.and(peak::peak_spread(t, v, (tr, level), r.noise, &filtered));
-    let beta_n = beta
-        .zip(beta_f.as_deref())
-        .map(|(raw, b)| normalise(t, (raw, b, scale(every.beta)), pre_end, s, "sideslip").ok());
-    let beta_steady = beta_n
-        .as_ref()
-        .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
-    // The sideslip's spread and noise on the scale of [`sideslip_scale`].
-    let settling = ChannelSettling {
-        yaw_rate: verdict(&r, r_noise, 1.0),
-        ay: a.as_ref().map(|a| verdict(a, gain * a.noise, 1.0)),
-        beta: beta_n.flatten().map(|nb| {
-            let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, d.steady);
-            verdict(&nb, gain * nb.noise, to_scale)
-        }),
-    };
-    let tb = match (peak_time, beta_steady) {
-        (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
-        _ => None,
-    };
-    let window = (onset, onset + s.variance_window);
-    let e_r = total_variance(t, &d.values, &r.values, window.0, window.1);
-    let e_ay = a
-        .as_ref()
-        .map(|a| total_variance(t, &d.values, &a.values, window.0, window.1));
-    Ok(StepMetrics {
-        steer_step: d.steady,
-        time_zero: t0,
-        yaw_rate_response_time: tr - t0,
-        yaw_rate_peak_time: peak_time,
-        yaw_rate_overshoot: peak_at.map(|i| (v[i] - 1.0) * 100.0),
-        ay_response_time: ta.map(|ta| ta - t0),
-        yaw_rate_gain: r.steady / d.steady,
-        yaw_rate_steady: r.steady,
-        ay_steady: a.as_ref().map(|a| a.steady),
-        beta_steady,
-        tb,
-        yaw_rate_total_variance: e_r,
-        ay_total_variance: e_ay,
-        er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
-        settled: settling.settled(),
-        settling,
-        yaw_rate_noise: r_noise,
-        ay_noise: a.as_ref().map(|a| gain * a.noise),
-        yaw_rate_peak_threshold: threshold * 100.0,
-        yaw_rate_filter_ringing: ringing * 100.0,
-        filter_hz,
-        yaw_rate_peak_time_spread: spread.map(|s| s.sd),
-        yaw_rate_peak_found_share: spread.map(|s| s.found),
-        yaw_rate_overshoot_spread: spread.map(|s| 100.0 * s.overshoot_sd),
-        yaw_rate_peak_unmeasured: false,
     })
 }
 

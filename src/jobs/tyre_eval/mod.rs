@@ -47,6 +47,8 @@
 mod camber;
 mod checks;
 mod columns;
+mod evaluate;
+pub use evaluate::run;
 mod fitted;
 pub use fitted::{one_level, past_end};
 mod file_checks;
@@ -90,16 +92,11 @@ pub use unread::Unread;
 
 use crate::error::Error;
 use crate::io::fitted_ranges::FittedRanges;
-use crate::io::load_tyre_with_ranges;
-use crate::io::tir::set_tyre_mode;
-use crate::report::{refuse_overwrite, write_columns};
+use crate::report::write_columns;
 use crate::tyre::mf::{MfInput, TyreSide};
-use crate::tyre::sizes::POINTS_MEDIAN_LOAD;
 use crate::tyre::Tyre;
-use columns::Outputs;
-use points::{read_points, PointColumns};
 use serde::Serialize;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// The report of `tyre-eval`: the points with their forces and moments.
 #[derive(Debug, Clone, Serialize)]
@@ -288,156 +285,6 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
         not_carried,
         radius_above_free,
     }
-}
-
-/// Evaluates the tyre of `tyre_path` at the points of `points`, for the
-/// output file `out` (never one of the inputs); `mode` is MFeval's
-/// `useMode` for a Magic Formula tyre (`None`: 121).
-pub fn run(
-    tyre_path: &Path,
-    points: &Path,
-    out: &Path,
-    mode: Option<u32>,
-) -> Result<TyreEvalReport, Error> {
-    refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
-    crate::error::OutputError::unless_a_file(out, "forces", "csv")?;
-    crate::error::OutputError::unless_extension(out, "tyre-eval's forces", "csv")?;
-    order::refuse_points_as_tyre(tyre_path)?;
-    let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
-    if let Some(code) = mode {
-        set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
-    }
-    let PointColumns {
-        file,
-        mut inputs,
-        pressure,
-        measured,
-    } = read_points(
-        points,
-        pressure::tyre_pressures(&tyre, fitted_ranges.as_ref()),
-    )?;
-    let p = pressure.clone().unwrap_or_default();
-    let given = unread::Points {
-        columns: [0, 1, 2, 3, 4].map(|i| &inputs[i].1[..]),
-        pressure: &p,
-    };
-    let [fz, kappa, alpha, camber, speed] = given.columns;
-    // A tyre with no load of its own (linear) is checked at the points'.
-    let mut on_road: Vec<f64> = fz.iter().copied().filter(|f| *f > 0.0).collect();
-    if !on_road.is_empty() {
-        let load = (
-            POINTS_MEDIAN_LOAD,
-            crate::measured::clean::median(&mut on_road),
-        );
-        crate::io::check_tyre_at_load(tyre_path, &tyre, load)?;
-    }
-    let f = tyre.evaluate_points(fz, kappa, alpha, camber, speed, &p);
-    let count = fz.len();
-    let unread = unread::unread(&tyre, &given, &f);
-    // The file's own checks, as `identify` makes them of a file it writes.
-    let FileChecks {
-        peak_friction,
-        longitudinal_turn,
-    } = file_checks::of_tyre_file(tyre_path, &tyre);
-    let sign_changes = stiffness::sign_changes(&tyre, fz);
-    let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
-    let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
-        let r = reads::read_ranges(&tyre, r);
-        fitted::beyond(&r, [fz, kappa, alpha, camber], &p, &file.lines)
-    });
-    let unfitted_lateral =
-        unfitted_lateral::unfitted_lateral(fitted_ranges.as_ref(), alpha, camber, &file.lines);
-    let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
-    let opposed = opposed::opposed(&tyre, fitted_ranges.as_ref(), &given, &f, &file.lines);
-    let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
-    let rolling_beyond = rolling::rolling_beyond(&tyre, &given, &f, &file.lines);
-    let slip_past_lock = if unread::is_unread(&unread, "kappa") {
-        None
-    } else {
-        slip_ratio::past_lock(kappa, &file.lines)
-    };
-    let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
-    let at_rest = standstill::at_rest(&tyre, &given, &f, &file.lines);
-    let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
-    let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
-    let mut extras = magic_formula_extras(&tyre, &given, &file.lines);
-    let light_load = light_load::light_load(&tyre, fz, &file.lines);
-    let radius_above_free = std::mem::take(&mut extras.radius_above_free);
-    let loads_left =
-        model_loads::loads_left((&tyre, tyre_path), fitted_ranges.as_ref(), fz, &file.lines);
-    let not_meant = meant::not_meant(&tyre, fz, alpha, &file.lines);
-    let camber_read = !unread::is_unread(&unread, "camber");
-    let steep_camber = camber::steep_camber(
-        &tyre,
-        fitted_ranges.as_ref(),
-        camber_read,
-        [fz, camber],
-        &f,
-        &file.lines,
-    );
-    not_carried::refuse_not_carried(points, &file, &extras.not_carried)?;
-    let tyre_side = match &tyre {
-        Tyre::MagicFormula(m) => Some(m.side),
-        _ => None,
-    };
-    let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
-    let below_fzmin = extras.below_fzmin;
-    // Every model gives no force off the road: said for each, not only
-    // where a loaded radius is written.
-    let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
-    let outputs = Outputs {
-        inputs: std::mem::take(&mut inputs),
-        pressure,
-        forces: &f,
-        loaded_radius: extras.loaded_radius,
-        measured: measured.clone(),
-    };
-    let columns = columns::columns(&tyre, outputs);
-    let kept = measured::kept_line(&measured, &columns);
-    let measured = measured::differences(&measured, &columns, &columns[0].1, &file.lines);
-    // (The first five columns are the inputs, checked when read.)
-    columns::refuse_non_finite(points, &file, &columns, tyre.model_name())?;
-    let not_written = columns::not_written(&file, &columns);
-    Ok(TyreEvalReport {
-        measured,
-        kept,
-        peak_friction,
-        not_written,
-        points: points.display().to_string(),
-        count,
-        model: tyre.model_name(),
-        mode,
-        tyre_side,
-        mirrored: tyre_side == Some(TyreSide::Right),
-        clamped,
-        below_fzmin,
-        ranges_left,
-        loads_left,
-        not_meant,
-        radius_above_free,
-        light_load,
-        steep_camber,
-        off_road,
-        zero_outputs,
-        beyond_my_speed,
-        rolling_beyond,
-        slip_past_lock,
-        beyond_friction,
-        fx_at_zero_slip,
-        uncoupled,
-        at_rest,
-        standstill_mz,
-        unread,
-        longitudinal_turn,
-        sign_changes,
-        against_slip,
-        opposed,
-        fitted_ranges,
-        beyond_fitted,
-        unfitted_lateral,
-        columns,
-        out: out.to_path_buf(),
-    })
 }
 
 impl TyreEvalReport {

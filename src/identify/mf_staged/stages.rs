@@ -9,7 +9,7 @@ use super::paper_lm::paper_lm;
 use super::params::{names_of, physical_bounds, Need, Stage, ANY};
 use super::problem::{unbounded, Derivatives, StageProblem};
 use super::start::{data_start, level_counts, template_value};
-use super::uncertainty::uncertainty;
+use super::uncertainty::{uncertainty, Uncertainty};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
 use crate::error::{SkipReason, StageRows};
 use crate::optim::bounded::BoundedLm;
@@ -235,13 +235,7 @@ pub(super) fn run_stage(
     let t0 = Instant::now();
     let table = stage.parameters();
     let have = level_counts(rows);
-    let free: Vec<(&'static str, Need)> = table
-        .iter()
-        .copied()
-        .filter(|(name, need)| {
-            held_reason(name, *need, have).is_none() && run.holding.given(name).is_none()
-        })
-        .collect();
+    let free = free_parameters(table, have, run);
     if let Some(why) = only_pure_longitudinal(stage, rows) {
         return StageReport::skipped(stage, why);
     }
@@ -258,14 +252,7 @@ pub(super) fn run_stage(
         run.derivatives,
     );
     let (sigma_start, ..) = sigma(stage, &base, rows);
-    let bounds: Vec<(f64, f64)> = match run.start {
-        StartScheme::Paper => unbounded(names.len()),
-        StartScheme::Data | StartScheme::Template => names
-            .iter()
-            .zip(&starts)
-            .map(|(k, v)| physical_bounds(k, *v))
-            .collect(),
-    };
+    let bounds = start_bounds(run.start, &names, &starts);
     let result = match run.start {
         StartScheme::Paper => paper_lm(&problem, &starts, 1.0, run.max_iterations.max(500)),
         StartScheme::Data | StartScheme::Template => {
@@ -280,11 +267,81 @@ pub(super) fn run_stage(
         bounds,
         starts,
     };
+    let held = held_undetermined(&mut fit, run, &mut evaluations);
+    *tyre = fit.problem.tyre(&fit.p);
+    let (sigma_end, rms, ..) = sigma(stage, tyre, rows);
+    let u = uncertainty(&fit.problem, &fit.p);
+    // Stopped on its cap at a point a Gauss–Newton step would barely
+    // improve (after its holds), the stage is at its optimum for the
+    // report (`Uncertainty::at_optimum`); the strict test per iteration
+    // is the optimiser's, not the data's.
+    let converged = result.converged || (run.start != StartScheme::Paper && u.at_optimum());
+    let parameters = stage_parameters(table, tyre, (&fit, &held, &u), run, have);
+    StageReport {
+        stage,
+        skipped: None,
+        points: rows.len(),
+        levels: have,
+        sigma_start_percent: sigma_start,
+        sigma_percent: sigma_end,
+        paper_sigma_percent: stage.paper_sigma_percent(),
+        rms,
+        condition_number: u.condition,
+        converged: Some(converged),
+        evaluations: evaluations * fit.problem.count(),
+        seconds: t0.elapsed().as_secs_f64(),
+        parameters,
+        warnings: u
+            .near_singular
+            .into_iter()
+            .chain(not_converged(converged, run))
+            .collect(),
+        error_spread: None,
+    }
+}
+
+/// The parameters of the stage's `table` the stage fits: those the data's
+/// levels (`have`) determine and the user does not give.
+fn free_parameters(
+    table: &[(&'static str, Need)],
+    have: [usize; 3],
+    run: &StageRun,
+) -> Vec<(&'static str, Need)> {
+    table
+        .iter()
+        .copied()
+        .filter(|(name, need)| {
+            held_reason(name, *need, have).is_none() && run.holding.given(name).is_none()
+        })
+        .collect()
+}
+
+/// The bounds of the parameters `names` starting at `starts`: none for
+/// the paper's scheme, the physical ones otherwise.
+fn start_bounds(start: StartScheme, names: &[&'static str], starts: &[f64]) -> Vec<(f64, f64)> {
+    match start {
+        StartScheme::Paper => unbounded(names.len()),
+        StartScheme::Data | StartScheme::Template => names
+            .iter()
+            .zip(starts)
+            .map(|(k, v)| physical_bounds(k, *v))
+            .collect(),
+    }
+}
+
+/// The parameters of `fit` the data do not determine, held at their
+/// stated values and the rest refitted (`holds.rs`; none for the paper's
+/// scheme), the evaluations counted into `evaluations`.
+fn held_undetermined(
+    fit: &mut StageFit,
+    run: &StageRun,
+    evaluations: &mut usize,
+) -> Vec<(&'static str, f64, HoldReason)> {
     // Judged even where the stage stopped on its cap: a fit crawling
     // along a direction the data barely see (PKY1 against PKY4) does not
     // converge because of it, and the holds are its remedy; the stage's
     // warning says the judgement is taken where it stopped.
-    let held = match run.start {
+    match run.start {
         StartScheme::Paper => Vec::new(),
         StartScheme::Data | StartScheme::Template => {
             let stated = |name: &str| {
@@ -301,24 +358,22 @@ pub(super) fn run_stage(
                         .collect();
                     released_fit(problem, &free, starts, bounds, run.max_iterations)
                 };
-            hold_undetermined(
-                &mut fit,
-                &stated,
-                &refit,
-                run.max_iterations,
-                &mut evaluations,
-            )
+            hold_undetermined(fit, &stated, &refit, run.max_iterations, evaluations)
         }
-    };
-    *tyre = fit.problem.tyre(&fit.p);
-    let (sigma_end, rms, ..) = sigma(stage, tyre, rows);
-    let u = uncertainty(&fit.problem, &fit.p);
-    // Stopped on its cap at a point a Gauss–Newton step would barely
-    // improve (after its holds), the stage is at its optimum for the
-    // report (`Uncertainty::at_optimum`); the strict test per iteration
-    // is the optimiser's, not the data's.
-    let converged = result.converged || (run.start != StartScheme::Paper && u.at_optimum());
-    let parameters = table
+    }
+}
+
+/// The report of each parameter of the stage's `table` in the fitted
+/// `tyre`: fitted (with its start, standard error `u` and any warning)
+/// or held, and why (`held` by the data, given, or for want of levels).
+fn stage_parameters(
+    table: &[(&'static str, Need)],
+    tyre: &MagicFormula,
+    (fit, held, u): (&StageFit, &[(&'static str, f64, HoldReason)], &Uncertainty),
+    run: &StageRun,
+    have: [usize; 3],
+) -> Vec<StageParameter> {
+    table
         .iter()
         .map(|(name, need)| {
             let value = tyre.coefficients.get(name).unwrap_or(0.0);
@@ -347,28 +402,7 @@ pub(super) fn run_stage(
                     .or_else(|| fitted.and_then(|k| u.warning(k, value))),
             }
         })
-        .collect();
-    StageReport {
-        stage,
-        skipped: None,
-        points: rows.len(),
-        levels: have,
-        sigma_start_percent: sigma_start,
-        sigma_percent: sigma_end,
-        paper_sigma_percent: stage.paper_sigma_percent(),
-        rms,
-        condition_number: u.condition,
-        converged: Some(converged),
-        evaluations: evaluations * fit.problem.count(),
-        seconds: t0.elapsed().as_secs_f64(),
-        parameters,
-        warnings: u
-            .near_singular
-            .into_iter()
-            .chain(not_converged(converged, run))
-            .collect(),
-        error_spread: None,
-    }
+        .collect()
 }
 
 /// The bound of `(lo, hi)` that `v` ends on (within 1e-6 of the box's

@@ -181,72 +181,16 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     rec: &mut R,
     s: &MetricSettings,
 ) -> Result<StepMetrics, MetricsError> {
-    let (t_first, t_last) = rec.span();
-    let span = t_last - t_first;
-    if span <= s.pre_window + s.steady_window {
-        return Err(MetricsError::TooShort {
-            span,
-            pre_window: s.pre_window,
-            steady_window: s.steady_window,
-        });
-    }
-    let pre = (t_first, t_first + s.pre_window);
-    let steady = (t_last - s.steady_window, t_last);
-    let mean = |rec: &mut R, (a, b): (f64, f64)| {
-        integrate(rec, a, b, |_, x| [x.steer, x.yaw_rate, x.ay, x.beta]).map(|v| v / (b - a))
-    };
-    let [d0, r0, a0, b0] = mean(rec, pre);
-    let [ds, rs, as_, bs] = mean(rec, steady);
-    let (d_step, r_step, a_step) = (ds - d0, rs - r0, as_ - a0);
-    if d_step == 0.0 || !d_step.is_finite() || d_step.abs() < MIN_STEP {
-        return Err(MetricsError::NoStep {
-            initial: d0,
-            steady: ds,
-            min: MIN_STEP,
-            pre_window: s.pre_window,
-        });
-    }
-    for (step, name) in [(r_step, "yaw rate"), (a_step, "lateral acceleration")] {
-        if step == 0.0 || !step.is_finite() {
-            return Err(MetricsError::NoResponse(name));
-        }
-    }
-    // Spreads of the normalised responses in the steady window, about the
-    // mean (a second pass: E[x²] − m² would cancel to rounding).
-    let [vr, va, vb] = integrate(rec, steady.0, steady.1, |_, x| {
-        [
-            (x.yaw_rate - rs).powi(2),
-            (x.ay - as_).powi(2),
-            (x.beta - bs).powi(2),
-        ]
-    });
-    // The means over sixths of the steady window and of the window before
-    // it (within the record), each channel's normalised by its step, for
-    // where its trend heads.
-    let from = (t_last - 2.0 * s.steady_window).max(t_first);
-    let w = (t_last - from) / super::settling::TREND_PARTS as f64;
-    let parts: [[f64; 4]; super::settling::TREND_PARTS] = std::array::from_fn(|k| {
-        let a = from + k as f64 * w;
-        mean(rec, (a, a + w))
-    });
-    let trend = |i: usize, x0: f64, step: f64| {
-        super::settling::trend_of_parts(parts.map(|m| (m[i] - x0) / step), 0.0)
-    };
-    let b_scale = super::sideslip_scale(bs - b0, d_step);
-    let b_trend = trend(3, b0, bs - b0).map(|tr| super::settling::Trend {
-        heads: tr.heads * ((bs - b0) / b_scale).abs(),
-        ..tr
-    });
-    let r_spread = (vr / s.steady_window).sqrt() / r_step.abs();
-    let a_spread = (va / s.steady_window).sqrt() / a_step.abs();
-    let b_spread = (vb / s.steady_window).sqrt() / b_scale;
-    let dn = |x: &Sample| (x.steer - d0) / d_step;
-    let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
-    let an = |x: &Sample| (x.ay - a0) / a_step;
-    let t0 = first_reach(rec, t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoHalfStep)?;
+    let st = Steps::of(rec, s)?;
+    let t_last = st.t_last;
+    let (settling, r_spread) = steady_settling(rec, s, &st);
+    let dn = |x: &Sample| (x.steer - st.d0) / st.d_step;
+    let rn = |x: &Sample| (x.yaw_rate - st.r0) / st.r_step;
+    let an = |x: &Sample| (x.ay - st.a0) / st.a_step;
+    let t0 = first_reach(rec, st.t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoHalfStep)?;
     // From the steer's onset, not t₀: a response may lead the steer's
     // half-way point ([`super`]).
-    let onset = first_reach(rec, t_first, |x| dn(x) - 0.05).unwrap_or(t0);
+    let onset = first_reach(rec, st.t_first, |x| dn(x) - 0.05).unwrap_or(t0);
     let tr =
         first_reach(rec, onset, |x| rn(x) - 0.9).ok_or(MetricsError::NoCrossing("yaw rate"))?;
     let ta = first_reach(rec, onset, |x| an(x) - 0.9)
@@ -257,32 +201,27 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let threshold = (2.0 * r_spread).max(s.min_overshoot / 100.0).max(1e-9);
     let level = 1.0 + threshold;
     let peak = first_reach(rec, tr, |x| rn(x) - level).and_then(|above| {
-        let tp = first_reach(rec, above, |x| -x.yaw_acceleration / r_step)?;
+        let tp = first_reach(rec, above, |x| -x.yaw_acceleration / st.r_step)?;
         (tp < t_last).then(|| (tp, rn(&rec.sample(tp))))
     });
     let peak_time = peak.map(|(tp, _)| tp - t0);
-    let beta_steady = bs - b0;
+    let beta_steady = st.bs - st.b0;
     let tb = peak_time.map(|tp| tp * beta_steady.abs().to_degrees());
     let to = (onset + s.variance_window).min(t_last);
     let [e_r, e_ay] = integrate(rec, onset, to, |_, x| {
         let d = dn(x);
         [(d - rn(x)).powi(2), (d - an(x)).powi(2)]
     });
-    let settling = super::ChannelSettling {
-        yaw_rate: super::Settling::of_spread(r_spread, trend(1, r0, r_step)),
-        ay: Some(super::Settling::of_spread(a_spread, trend(2, a0, a_step))),
-        beta: Some(super::Settling::of_spread(b_spread, b_trend)),
-    };
     Ok(StepMetrics {
-        steer_step: d_step,
+        steer_step: st.d_step,
         time_zero: t0,
         yaw_rate_response_time: tr - t0,
         yaw_rate_peak_time: peak_time,
         yaw_rate_overshoot: peak.map(|(_, v)| (v - 1.0) * 100.0),
         ay_response_time: Some(ta - t0),
-        yaw_rate_gain: r_step / d_step,
-        yaw_rate_steady: r_step,
-        ay_steady: Some(a_step),
+        yaw_rate_gain: st.r_step / st.d_step,
+        yaw_rate_steady: st.r_step,
+        ay_steady: Some(st.a_step),
         beta_steady: Some(beta_steady),
         tb,
         yaw_rate_total_variance: e_r,
@@ -301,4 +240,130 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_overshoot_spread: None,
         yaw_rate_peak_unmeasured: false,
     })
+}
+
+/// The means of steer, yaw rate, lateral acceleration and sideslip over
+/// `(a, b)`.
+fn window_means<R: ContinuousRecord + ?Sized>(rec: &mut R, (a, b): (f64, f64)) -> [f64; 4] {
+    integrate(rec, a, b, |_, x| [x.steer, x.yaw_rate, x.ay, x.beta]).map(|v| v / (b - a))
+}
+
+/// The record's span, its channels' initial values (means over the
+/// initial window) and steady values (over the steady window), and the
+/// steps between them.
+struct Steps {
+    t_first: f64,
+    t_last: f64,
+    d0: f64,
+    r0: f64,
+    a0: f64,
+    b0: f64,
+    rs: f64,
+    as_: f64,
+    bs: f64,
+    d_step: f64,
+    r_step: f64,
+    a_step: f64,
+}
+
+impl Steps {
+    /// The steps of `rec`; a record no longer than the two windows, a
+    /// steer without a step (below [`MIN_STEP`]) or a response without
+    /// one refused.
+    fn of<R: ContinuousRecord + ?Sized>(
+        rec: &mut R,
+        s: &MetricSettings,
+    ) -> Result<Self, MetricsError> {
+        let (t_first, t_last) = rec.span();
+        let span = t_last - t_first;
+        if span <= s.pre_window + s.steady_window {
+            return Err(MetricsError::TooShort {
+                span,
+                pre_window: s.pre_window,
+                steady_window: s.steady_window,
+            });
+        }
+        let pre = (t_first, t_first + s.pre_window);
+        let steady = (t_last - s.steady_window, t_last);
+        let [d0, r0, a0, b0] = window_means(rec, pre);
+        let [ds, rs, as_, bs] = window_means(rec, steady);
+        let (d_step, r_step, a_step) = (ds - d0, rs - r0, as_ - a0);
+        if d_step == 0.0 || !d_step.is_finite() || d_step.abs() < MIN_STEP {
+            return Err(MetricsError::NoStep {
+                initial: d0,
+                steady: ds,
+                min: MIN_STEP,
+                pre_window: s.pre_window,
+            });
+        }
+        for (step, name) in [(r_step, "yaw rate"), (a_step, "lateral acceleration")] {
+            if step == 0.0 || !step.is_finite() {
+                return Err(MetricsError::NoResponse(name));
+            }
+        }
+        Ok(Steps {
+            t_first,
+            t_last,
+            d0,
+            r0,
+            a0,
+            b0,
+            rs,
+            as_,
+            bs,
+            d_step,
+            r_step,
+            a_step,
+        })
+    }
+}
+
+/// Each channel's settling verdict from its spread in the steady window
+/// and where its trend heads, with the yaw rate's spread (normalised by
+/// its step), which sets the peak's threshold.
+fn steady_settling<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    s: &MetricSettings,
+    st: &Steps,
+) -> (super::ChannelSettling, f64) {
+    let (t_first, t_last) = (st.t_first, st.t_last);
+    let (rs, as_, bs, b0) = (st.rs, st.as_, st.bs, st.b0);
+    // Spreads of the normalised responses in the steady window, about the
+    // mean (a second pass: E[x²] − m² would cancel to rounding).
+    let [vr, va, vb] = integrate(rec, t_last - s.steady_window, t_last, |_, x| {
+        [
+            (x.yaw_rate - rs).powi(2),
+            (x.ay - as_).powi(2),
+            (x.beta - bs).powi(2),
+        ]
+    });
+    // The means over sixths of the steady window and of the window before
+    // it (within the record), each channel's normalised by its step, for
+    // where its trend heads.
+    let from = (t_last - 2.0 * s.steady_window).max(t_first);
+    let w = (t_last - from) / super::settling::TREND_PARTS as f64;
+    let parts: [[f64; 4]; super::settling::TREND_PARTS] = std::array::from_fn(|k| {
+        let a = from + k as f64 * w;
+        window_means(rec, (a, a + w))
+    });
+    let trend = |i: usize, x0: f64, step: f64| {
+        super::settling::trend_of_parts(parts.map(|m| (m[i] - x0) / step), 0.0)
+    };
+    let b_scale = super::sideslip_scale(bs - b0, st.d_step);
+    let b_trend = trend(3, b0, bs - b0).map(|tr| super::settling::Trend {
+        heads: tr.heads * ((bs - b0) / b_scale).abs(),
+        ..tr
+    });
+    let r_spread = (vr / s.steady_window).sqrt() / st.r_step.abs();
+    let a_spread = (va / s.steady_window).sqrt() / st.a_step.abs();
+    let b_spread = (vb / s.steady_window).sqrt() / b_scale;
+    let settling = super::ChannelSettling {
+        yaw_rate: super::Settling::of_spread(r_spread, trend(1, st.r0, st.r_step)),
+        ay: Some(super::Settling::of_spread(
+            a_spread,
+            trend(2, st.a0, st.a_step),
+        )),
+        beta: Some(super::Settling::of_spread(b_spread, b_trend)),
+    };
+    (settling, r_spread)
 }

@@ -232,87 +232,14 @@ pub(super) fn data_start(
     rows: &[&MfRow],
 ) -> Vec<(&'static str, f64)> {
     let c = &base.coefficients;
-    let fz0 = c.FNOMIN * c.LFZO;
-    let dfz = |fz: f64| (fz - fz0) / fz0;
-    let groups = by_load(rows, c.NOMPRES);
-    let mut out: Vec<(&'static str, f64)> = Vec::new();
     match stage {
-        Stage::PureFx | Stage::PureFy => {
-            let lat = stage == Stage::PureFy;
-            let slip = |r: &MfRow| if lat { r.alpha } else { r.kappa };
-            let force = |r: &MfRow| if lat { r.fy } else { r.fx };
-            let mut mu = Vec::new();
-            let mut stiff = Vec::new();
-            for (fz, g) in &groups {
-                let peak = g.iter().map(|r| force(r).abs()).fold(0.0, f64::max);
-                mu.push((dfz(*fz), peak / fz));
-                let pts: Vec<(f64, f64)> = g.iter().map(|r| (slip(r), force(r))).collect();
-                let range = if lat { 1.5f64.to_radians() } else { 0.02 };
-                if let Some(k) = slope(&pts, range).filter(|k| *k > 0.0) {
-                    stiff.push((*fz, k));
-                }
-            }
-            let (d1, d2) = if mu.is_empty() { (1.0, 0.0) } else { line(&mu) };
-            if lat {
-                out.extend([("PCY1", 1.3), ("PDY1", d1), ("PDY2", d2), ("PEY1", 0.0)]);
-                let (pky1, pky2) = cornering_stiffness_law(&stiff, fz0, c.PKY4);
-                out.extend([("PKY1", pky1), ("PKY2", pky2)]);
-            } else {
-                let kx: Vec<(f64, f64)> = stiff.iter().map(|(fz, k)| (dfz(*fz), k / fz)).collect();
-                let (k1, k2) = if kx.is_empty() {
-                    (20.0, 0.0)
-                } else {
-                    line(&kx)
-                };
-                out.extend([
-                    ("PCX1", 1.65),
-                    ("PDX1", d1),
-                    ("PDX2", d2),
-                    ("PEX1", 0.0),
-                    ("PKX1", k1),
-                    ("PKX2", k2),
-                ]);
-            }
-        }
-        Stage::PureMz => {
-            // Pneumatic trail near zero slip: the slope of mz over fy; with
-            // Dt = Fz·(R0/Fz0)·(QDZ1 + QDZ2·dfz) (the trail at α = 0).
-            let r0 = c.UNLOADED_RADIUS;
-            let trail: Vec<(f64, f64)> = groups
-                .iter()
-                .filter_map(|(fz, g)| {
-                    let pts: Vec<(f64, f64)> = g
-                        .iter()
-                        .filter(|r| r.alpha.abs() <= 2f64.to_radians())
-                        .map(|r| (r.fy, r.mz))
-                        .collect();
-                    let t = slope(&pts, f64::INFINITY)?;
-                    Some((dfz(*fz), t * fz0 / (r0 * fz)))
-                })
-                .collect();
-            let (q1, q2) = if trail.is_empty() {
-                (0.1, 0.0)
-            } else {
-                line(&trail)
-            };
-            // QBZ10 must start off zero: at Br = 0 the residual torque's
-            // cos(atan(Br·αr)) has no slope in Br.
-            out.extend([
-                ("QBZ1", 10.0),
-                ("QBZ10", 1.0),
-                ("QCZ1", 1.2),
-                ("QDZ1", q1),
-                ("QDZ2", q2),
-                ("QEZ1", 0.0),
-            ]);
-        }
-        Stage::CombinedFx => {
-            out.extend([("RBX1", 10.0), ("RBX2", 8.0), ("RCX1", 1.0), ("REX1", 0.0)]);
-        }
-        Stage::CombinedMz => {}
+        Stage::PureFx | Stage::PureFy => pure_force_start(stage, c, &by_load(rows, c.NOMPRES)),
+        Stage::PureMz => aligning_start(c, &by_load(rows, c.NOMPRES)),
+        Stage::CombinedFx => vec![("RBX1", 10.0), ("RBX2", 8.0), ("RCX1", 1.0), ("REX1", 0.0)],
+        Stage::CombinedMz => Vec::new(),
         // Off zero, where the products' gradients vanish: a unit sine
         // amplitude over a gentle load cosine and a small force slope.
-        Stage::Mx => out.extend([
+        Stage::Mx => vec![
             ("QSX4", 1.0),
             ("QSX5", 0.5),
             ("QSX6", 1.0),
@@ -321,13 +248,13 @@ pub(super) fn data_start(
             ("QSX9", 0.1),
             ("QSX10", 0.1),
             ("QSX11", 1.0),
-        ]),
+        ],
         // The load power multiplies the polynomial: QSY1 starts at a
         // typical rolling-resistance coefficient, not at 0.
-        Stage::My => out.push(("QSY1", 0.01)),
+        Stage::My => vec![("QSY1", 0.01)],
         Stage::CombinedFy => {
             let rby1 = lateral_weight_stiffness(base, rows, 8.0).unwrap_or(10.0);
-            out.extend([
+            vec![
                 ("RBY1", rby1),
                 ("RBY2", 8.0),
                 ("RCY1", 1.0),
@@ -335,8 +262,92 @@ pub(super) fn data_start(
                 ("RVY4", 50.0),
                 ("RVY5", 2.0),
                 ("RVY6", 10.0),
-            ]);
+            ]
         }
     }
+}
+
+/// The pure lateral (`stage` PureFy) or longitudinal force's start from
+/// the rows grouped by load (`groups`): the peak friction's and the slip
+/// stiffness's lines in the load increment `dfz`.
+fn pure_force_start(
+    stage: Stage,
+    c: &MfCoefficients,
+    groups: &[(f64, Vec<&MfRow>)],
+) -> Vec<(&'static str, f64)> {
+    let fz0 = c.FNOMIN * c.LFZO;
+    let dfz = |fz: f64| (fz - fz0) / fz0;
+    let lat = stage == Stage::PureFy;
+    let slip = |r: &MfRow| if lat { r.alpha } else { r.kappa };
+    let force = |r: &MfRow| if lat { r.fy } else { r.fx };
+    let mut mu = Vec::new();
+    let mut stiff = Vec::new();
+    for (fz, g) in groups {
+        let peak = g.iter().map(|r| force(r).abs()).fold(0.0, f64::max);
+        mu.push((dfz(*fz), peak / fz));
+        let pts: Vec<(f64, f64)> = g.iter().map(|r| (slip(r), force(r))).collect();
+        let range = if lat { 1.5f64.to_radians() } else { 0.02 };
+        if let Some(k) = slope(&pts, range).filter(|k| *k > 0.0) {
+            stiff.push((*fz, k));
+        }
+    }
+    let (d1, d2) = if mu.is_empty() { (1.0, 0.0) } else { line(&mu) };
+    let mut out: Vec<(&'static str, f64)> = Vec::new();
+    if lat {
+        out.extend([("PCY1", 1.3), ("PDY1", d1), ("PDY2", d2), ("PEY1", 0.0)]);
+        let (pky1, pky2) = cornering_stiffness_law(&stiff, fz0, c.PKY4);
+        out.extend([("PKY1", pky1), ("PKY2", pky2)]);
+    } else {
+        let kx: Vec<(f64, f64)> = stiff.iter().map(|(fz, k)| (dfz(*fz), k / fz)).collect();
+        let (k1, k2) = if kx.is_empty() {
+            (20.0, 0.0)
+        } else {
+            line(&kx)
+        };
+        out.extend([
+            ("PCX1", 1.65),
+            ("PDX1", d1),
+            ("PDX2", d2),
+            ("PEX1", 0.0),
+            ("PKX1", k1),
+            ("PKX2", k2),
+        ]);
+    }
     out
+}
+
+/// The aligning moment's start from the rows grouped by load (`groups`):
+/// the pneumatic trail near zero slip, the slope of mz over fy; with
+/// Dt = Fz·(R0/Fz0)·(QDZ1 + QDZ2·dfz) (the trail at α = 0).
+fn aligning_start(c: &MfCoefficients, groups: &[(f64, Vec<&MfRow>)]) -> Vec<(&'static str, f64)> {
+    let fz0 = c.FNOMIN * c.LFZO;
+    let dfz = |fz: f64| (fz - fz0) / fz0;
+    let r0 = c.UNLOADED_RADIUS;
+    let trail: Vec<(f64, f64)> = groups
+        .iter()
+        .filter_map(|(fz, g)| {
+            let pts: Vec<(f64, f64)> = g
+                .iter()
+                .filter(|r| r.alpha.abs() <= 2f64.to_radians())
+                .map(|r| (r.fy, r.mz))
+                .collect();
+            let t = slope(&pts, f64::INFINITY)?;
+            Some((dfz(*fz), t * fz0 / (r0 * fz)))
+        })
+        .collect();
+    let (q1, q2) = if trail.is_empty() {
+        (0.1, 0.0)
+    } else {
+        line(&trail)
+    };
+    // QBZ10 must start off zero: at Br = 0 the residual torque's
+    // cos(atan(Br·αr)) has no slope in Br.
+    vec![
+        ("QBZ1", 10.0),
+        ("QBZ10", 1.0),
+        ("QCZ1", 1.2),
+        ("QDZ1", q1),
+        ("QDZ2", q2),
+        ("QEZ1", 0.0),
+    ]
 }

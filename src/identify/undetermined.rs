@@ -223,82 +223,19 @@ fn restarted(
 /// `fit` and the rest refitted.
 fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSettings) -> Fit {
     let t0 = Instant::now();
+    let rounds = hold_rounds(&fit, start, conditions, settings);
+    if rounds.held.is_empty() {
+        return refusals_said(fit, &rounds.tried_at);
+    }
+    let HoldRounds {
+        problem,
+        p,
+        free,
+        held,
+        tried_at,
+        evaluations,
+    } = rounds;
     let channel = fit.channel;
-    let mut free: Vec<bool> = fit.parameters.iter().map(|p| p.free).collect();
-    let mut problem = FitProblem::for_channel(&fit.tyre, channel, &free, conditions)
-        .with_derivatives(settings.derivatives);
-    let now = channel.parameters(&fit.tyre);
-    let mut p: Vec<f64> = problem.free.iter().map(|&i| now[i]).collect();
-    let stated = channel.parameters(start);
-    let bounds = channel.bounds(start);
-    let mut held: Vec<(usize, HeldFor)> = Vec::new();
-    // Parameters (full index) whose hold the guard refused, with the
-    // value tried: left free, with their warning, and not tried again at
-    // that value (`spare.rs`). A later round, with others held, may narrow
-    // a parameter's interval and so try it nearer its free value (UniTire's
-    // aligning `c9` on the Hoosier file: refused at its start value 0.0708,
-    // 63 standard errors off once the rest were held, where its ±2 edge
-    // 0.00244 costs less than the free fit's holds).
-    let mut refused: Vec<(usize, f64)> = Vec::new();
-    // With the value each was tried at, for its warning.
-    let mut tried_at: Vec<(usize, f64)> = Vec::new();
-    let mut evaluations = 0;
-    while p.len() > 1 {
-        let spread = Spread::at(&problem, &p);
-        if spread.covariance.is_none() {
-            break;
-        }
-        let round = spare(
-            &problem,
-            &p,
-            &spread,
-            &Stated {
-                values: &stated,
-                bounds: &bounds,
-                refused: &refused,
-            },
-            settings.local,
-        );
-        evaluations += round.evaluations;
-        let now_refused: Vec<(usize, f64)> = round
-            .refused
-            .iter()
-            .map(|&k| {
-                let i = problem.free[k];
-                (
-                    i,
-                    held_value(stated[i], p[k], spread.std_error(k), bounds[i]),
-                )
-            })
-            .collect();
-        tried_at.extend(&now_refused);
-        refused.extend(&now_refused);
-        let Some(t) = round.kept else {
-            if round.refused.is_empty() {
-                break;
-            }
-            continue;
-        };
-        let i = problem.free[t.k];
-        let se = spread.std_error(t.k);
-        held.push((
-            i,
-            HeldFor::Undetermined {
-                fitted: p[t.k],
-                std_error: se,
-                effect_percent: se.map(|_| 100.0 * spread.effect[t.k]),
-                stated: stated[i],
-                held_at: t.value,
-                standard_errors_away: standard_errors_away(stated[i], p[t.k], se),
-            },
-        ));
-        free[i] = false;
-        problem = t.problem;
-        p = t.p;
-    }
-    if held.is_empty() {
-        return refusals_said(fit, &tried_at);
-    }
     let tyre = problem.tyre(&p).canonical();
     let all = channel.parameters(&tyre);
     let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
@@ -327,6 +264,121 @@ fn held_from(fit: Fit, start: &Tyre, conditions: &[Condition], settings: &FitSet
         ..fit
     };
     refusals_said(fit, &tried_at)
+}
+
+/// Where [`hold_rounds`] ends: the problem and its free values with the
+/// holds made, which parameters (full index) are free, those held and
+/// why, those whose hold the guard refused with the value tried, and the
+/// evaluations spent.
+struct HoldRounds {
+    problem: FitProblem,
+    p: Vec<f64>,
+    free: Vec<bool>,
+    held: Vec<(usize, HeldFor)>,
+    tried_at: Vec<(usize, f64)>,
+    evaluations: usize,
+}
+
+/// The rounds of holds from the free fit `fit`: each round holds the
+/// parameter the data determine least (`spare`) at its stated value (the
+/// start's) and refits the rest, until none is left to hold.
+fn hold_rounds(
+    fit: &Fit,
+    start: &Tyre,
+    conditions: &[Condition],
+    settings: &FitSettings,
+) -> HoldRounds {
+    let channel = fit.channel;
+    let mut free: Vec<bool> = fit.parameters.iter().map(|p| p.free).collect();
+    let mut problem = FitProblem::for_channel(&fit.tyre, channel, &free, conditions)
+        .with_derivatives(settings.derivatives);
+    let now = channel.parameters(&fit.tyre);
+    let mut p: Vec<f64> = problem.free.iter().map(|&i| now[i]).collect();
+    let stated = channel.parameters(start);
+    let bounds = channel.bounds(start);
+    let mut held: Vec<(usize, HeldFor)> = Vec::new();
+    // Parameters (full index) whose hold the guard refused, with the
+    // value tried: left free, with their warning, and not tried again at
+    // that value (`spare.rs`). A later round, with others held, may narrow
+    // a parameter's interval and so try it nearer its free value (UniTire's
+    // aligning `c9` on the Hoosier file: refused at its start value 0.0708,
+    // 63 standard errors off once the rest were held, where its ±2 edge
+    // 0.00244 costs less than the free fit's holds).
+    let mut refused: Vec<(usize, f64)> = Vec::new();
+    // With the value each was tried at, for its warning.
+    let mut tried_at: Vec<(usize, f64)> = Vec::new();
+    let mut evaluations = 0;
+    while p.len() > 1 {
+        let spread = Spread::at(&problem, &p);
+        if spread.covariance.is_none() {
+            break;
+        }
+        let values = Stated {
+            values: &stated,
+            bounds: &bounds,
+            refused: &refused,
+        };
+        let round = spare(&problem, &p, &spread, &values, settings.local);
+        evaluations += round.evaluations;
+        let now_refused = tried_values(&round.refused, (&problem, &p), &spread, &values);
+        tried_at.extend(&now_refused);
+        refused.extend(&now_refused);
+        let Some(t) = round.kept else {
+            if round.refused.is_empty() {
+                break;
+            }
+            continue;
+        };
+        let i = problem.free[t.k];
+        let se = spread.std_error(t.k);
+        held.push((
+            i,
+            HeldFor::Undetermined {
+                fitted: p[t.k],
+                std_error: se,
+                effect_percent: se.map(|_| 100.0 * spread.effect[t.k]),
+                stated: stated[i],
+                held_at: t.value,
+                standard_errors_away: standard_errors_away(stated[i], p[t.k], se),
+            },
+        ));
+        free[i] = false;
+        problem = t.problem;
+        p = t.p;
+    }
+    HoldRounds {
+        problem,
+        p,
+        free,
+        held,
+        tried_at,
+        evaluations,
+    }
+}
+
+/// The parameters (free indices `refused`) whose hold the guard refused
+/// this round, each by its full index with the value it was tried at
+/// ([`held_value`]: its stated value, or the edge of its ±2 standard
+/// errors nearest it).
+fn tried_values(
+    refused: &[usize],
+    (problem, p): (&FitProblem, &[f64]),
+    spread: &Spread,
+    stated: &Stated,
+) -> Vec<(usize, f64)> {
+    refused
+        .iter()
+        .map(|&k| {
+            let i = problem.free[k];
+            let value = held_value(
+                stated.values[i],
+                p[k],
+                spread.std_error(k),
+                stated.bounds[i],
+            );
+            (i, value)
+        })
+        .collect()
 }
 
 /// `fit` with the warning of each parameter (full index) whose hold the

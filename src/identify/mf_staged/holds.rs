@@ -37,7 +37,7 @@
 
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
-use super::uncertainty::uncertainty;
+use super::uncertainty::{uncertainty, Uncertainty};
 use crate::format::{exact, readable};
 use crate::identify::spare::{
     candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
@@ -416,19 +416,7 @@ pub(super) fn hold_undetermined(
         let values: Vec<f64> = fit.problem.names.iter().map(|n| stated(n).0).collect();
         let (problem, p) = (&fit.problem, &fit.p);
         let ways = HoldWays {
-            without: |k: usize, value: f64| {
-                let mut base = problem.tyre(p);
-                base.coefficients.set(problem.names[k], value);
-                let mut names = problem.names.clone();
-                names.remove(k);
-                StageProblem::new(
-                    base,
-                    problem.stage,
-                    names,
-                    problem.rows.clone(),
-                    problem.derivatives,
-                )
-            },
+            without: |k: usize, value: f64| held_out(problem, p, k, value),
             stated: |k: usize| values[k],
             compensating: |k: usize, dv: f64| u.compensating(k, dv),
             refit: |sub: &StageProblem, x: &[f64], b: &[(f64, f64)]| lm.minimize(sub, x, b),
@@ -438,7 +426,7 @@ pub(super) fn hold_undetermined(
         // at the end of ±2 of them (QBZ1 was said held at the template's
         // 11.692 and written as 2.98, twice a meaningless error off 0).
         let std_errors: Vec<Option<f64>> = (0..p.len())
-            .map(|k| u.std_error[k].filter(|_| near_bound(p[k], fit.bounds[k]).is_none()))
+            .map(|k| off_bound_error(&u, k, p[k], fit.bounds[k]))
             .collect();
         let holding = HoldFit {
             problem,
@@ -462,33 +450,64 @@ pub(super) fn hold_undetermined(
             }
             continue;
         };
-        let k = tried.k;
-        let name = fit.problem.names[k];
-        let (value, source) = stated(name);
-        // At a bound the standard error and its effect are taken as if the
-        // box were not there: not reported (null in the report too).
-        let at_bound = near_bound(fit.p[k], fit.bounds[k]);
-        let std_error = u.std_error[k].filter(|_| at_bound.is_none());
-        held.push((
-            name,
-            tried.value,
-            HoldReason::NotIdentifiable {
-                fitted: fit.p[k],
-                std_error,
-                effect_percent: match at_bound {
-                    None => 100.0 * u.effect[k],
-                    Some(_) => f64::NAN,
-                },
-                source,
-                stated: value,
-                held_at: tried.value,
-                standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
-                at_bound,
-            },
-        ));
+        let name = fit.problem.names[tried.k];
+        let why = not_identifiable(fit, &u, tried.k, stated(name), tried.value);
+        held.push((name, tried.value, why));
         keep(fit, tried, refit, evaluations);
     }
     held
+}
+
+/// The stage's `problem` at `p` with its `k`-th parameter held at
+/// `value`: the tyre with it set, and the rest free.
+fn held_out<'a>(problem: &StageProblem<'a>, p: &[f64], k: usize, value: f64) -> StageProblem<'a> {
+    let mut base = problem.tyre(p);
+    base.coefficients.set(problem.names[k], value);
+    let mut names = problem.names.clone();
+    names.remove(k);
+    StageProblem::new(
+        base,
+        problem.stage,
+        names,
+        problem.rows.clone(),
+        problem.derivatives,
+    )
+}
+
+/// The standard error of the `k`-th parameter (at `v`, within `bounds`),
+/// none where it stopped at a bound: a standard error taken there means
+/// nothing.
+fn off_bound_error(u: &Uncertainty, k: usize, v: f64, bounds: (f64, f64)) -> Option<f64> {
+    u.std_error[k].filter(|_| near_bound(v, bounds).is_none())
+}
+
+/// Why the `k`-th parameter of `fit` is held at `held_at`: not
+/// identifiable, with its fitted value, standard error and effect, its
+/// stated value and source (`stated`), and the bound it stopped at.
+fn not_identifiable(
+    fit: &StageFit,
+    u: &Uncertainty,
+    k: usize,
+    (value, source): (f64, HoldSource),
+    held_at: f64,
+) -> HoldReason {
+    // At a bound the standard error and its effect are taken as if the
+    // box were not there: not reported (null in the report too).
+    let at_bound = near_bound(fit.p[k], fit.bounds[k]);
+    let std_error = u.std_error[k].filter(|_| at_bound.is_none());
+    HoldReason::NotIdentifiable {
+        fitted: fit.p[k],
+        std_error,
+        effect_percent: match at_bound {
+            None => 100.0 * u.effect[k],
+            Some(_) => f64::NAN,
+        },
+        source,
+        stated: value,
+        held_at,
+        standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
+        at_bound,
+    }
 }
 
 /// `fit` with the hold `tried` kept: its problem, and of its refit from

@@ -26,44 +26,23 @@ use crate::tyre::{Identification, ModelName, Tyre};
 /// The swarm fit of `model`: the first channel, PAC89's two stages, the
 /// aligning moment and the longitudinal force.
 pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
-    let mut settings = FitSettings::new(o.seed);
-    settings.local = o.local.into();
-    // What the data do not determine is held, not written where the
-    // optimiser left it (`identify/undetermined.rs`).
-    settings.hold_undetermined = true;
-    // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
-    let (read, moments) = read_rig_with_moments(&o.data)?;
-    let measured = super::Measured::of(&read, &moments);
-    // The rows a selection keeps, to count what it leaves unfitted there.
-    let selecting = o.load.is_some() || o.pressure.is_some() || o.camber.is_some();
-    let whole = selecting.then(|| read.clone());
-    let (data, lifted) = without_lifted(read);
-    // Nor is a sample at rest, for any model (`standstill.rs`).
-    let (data, _, at_rest) = super::standstill::without_rest(data, [None, None]);
-    let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
-    // Each force is fitted to its pure slip (`identify/pure.rs`).
-    let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
-    if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
-        return Err(FitError::NoLateralData {
-            data: o.data.clone(),
-            model: model.as_str(),
-        }
-        .into());
-    }
+    let settings = swarm_settings(o);
+    let d = SwarmData::read(o, model)?;
     let grouping = grouping_of(o);
     // After a lateral fit, an `fx` without a slip-ratio sweep is no
     // longitudinal test: not fitted, and said so.
-    let long_view = long_view.filter(|_| set_aside.has_kappa_sweep() || !lateral.has_lateral());
-    let (first, grouped) = first_channel(o, &lateral, long_view.as_ref(), &grouping)?;
+    let long_view = d
+        .long_view
+        .filter(|_| d.set_aside.has_kappa_sweep() || !d.lateral.has_lateral());
+    let (first, grouped) = first_channel(o, &d.lateral, long_view.as_ref(), &grouping)?;
     let (conditions, window) = fitted_conditions(o, model, first, &grouped)?;
-    let measured = match &whole {
-        Some(whole) => measured.of_rows(whole, &moments, &grouped.report.selected),
-        None => measured,
+    let measured = match &d.whole {
+        Some(whole) => d
+            .measured
+            .of_rows(whole, &d.moments, &grouped.report.selected),
+        None => d.measured,
     };
-    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
-    loads.sort_by(f64::total_cmp);
-    let median_load = loads[loads.len() / 2];
-    let tyre0 = start_tyre_of(model, median_load)?;
+    let tyre0 = start_tyre_of(model, median_load(&conditions))?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;
     // Counted over the conditions fitted, not the file's levels.
@@ -92,12 +71,12 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         recorded: o.recorded(),
         held: Vec::new(),
         notes: Vec::new(),
-        flat_alpha,
-        lifted,
-        at_rest: at_rest.map(|r| r.line_of(false)),
+        flat_alpha: d.flat_alpha,
+        lifted: d.lifted,
+        at_rest: d.at_rest,
         measured,
-        set_aside,
-        small_forces: force_scale::small_forces(&data),
+        set_aside: d.set_aside,
+        small_forces: force_scale::small_forces(&d.data),
         sample_slips: [None; 2],
         sample_spans: Vec::new(),
         grouping: grouped.report,
@@ -111,13 +90,13 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         lock,
     };
     let first_data = match first {
-        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&lateral),
-        _ => &lateral,
+        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&d.lateral),
+        _ => &d.lateral,
     };
     ranges::set_first_sample_slips(&mut r, first_data);
     let inputs = further::Inputs {
         first,
-        has_mz: data.mz.is_some(),
+        has_mz: d.data.mz.is_some(),
         long_view: long_view.as_ref(),
         grouping: &grouping,
         settings: &settings,
@@ -125,6 +104,80 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     later_fits(o, &mut r, &tyre0, stages, inputs)?;
     finish(o, &mut r)?;
     Ok(r)
+}
+
+/// The fit's settings from the options `o`: the seed, the local polish,
+/// and what the data do not determine held, not written where the
+/// optimiser left it (`identify/undetermined.rs`).
+fn swarm_settings(o: &Options) -> FitSettings {
+    let mut settings = FitSettings::new(o.seed);
+    settings.local = o.local.into();
+    settings.hold_undetermined = true;
+    settings
+}
+
+/// The median load of the `conditions`, N, which the start tyre is
+/// built at.
+fn median_load(conditions: &[Condition]) -> f64 {
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.sort_by(f64::total_cmp);
+    loads[loads.len() / 2]
+}
+
+/// The rig data of a swarm fit as read: what was measured, the whole
+/// file where a selection keeps part of it, the wheel moments, the
+/// samples fitted (without a lifted wheel's, those at rest, or a lateral
+/// force without slip angles), what was left out and why, and the pure
+/// lateral and longitudinal rows with those set aside.
+struct SwarmData {
+    measured: super::Measured,
+    whole: Option<RigData>,
+    moments: [Option<Vec<f64>>; 2],
+    data: RigData,
+    lifted: Option<crate::identify::lifted::Lifted>,
+    at_rest: Option<String>,
+    flat_alpha: Option<String>,
+    lateral: RigData,
+    long_view: Option<RigData>,
+    set_aside: crate::identify::pure::SetAside,
+}
+
+impl SwarmData {
+    /// The data of `o` for `model`; a file without lateral data refused
+    /// for a model without longitudinal terms.
+    fn read(o: &Options, model: ModelName) -> Result<Self, Error> {
+        // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
+        let (read, moments) = read_rig_with_moments(&o.data)?;
+        let measured = super::Measured::of(&read, &moments);
+        // The rows a selection keeps, to count what it leaves unfitted there.
+        let selecting = o.load.is_some() || o.pressure.is_some() || o.camber.is_some();
+        let whole = selecting.then(|| read.clone());
+        let (data, lifted) = without_lifted(read);
+        // Nor is a sample at rest, for any model (`standstill.rs`).
+        let (data, _, at_rest) = super::standstill::without_rest(data, [None, None]);
+        let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
+        // Each force is fitted to its pure slip (`identify/pure.rs`).
+        let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
+        if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
+            return Err(FitError::NoLateralData {
+                data: o.data.clone(),
+                model: model.as_str(),
+            }
+            .into());
+        }
+        Ok(SwarmData {
+            measured,
+            whole,
+            moments,
+            data,
+            lifted,
+            at_rest: at_rest.map(|r| r.line_of(false)),
+            flat_alpha,
+            lateral,
+            long_view,
+            set_aside,
+        })
+    }
 }
 
 /// The fits after the first channel's direct one: PAC89's two stages

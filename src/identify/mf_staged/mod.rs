@@ -457,64 +457,11 @@ pub fn identify_with(
         holding: &settings.holding,
         template: settings.template.as_ref(),
     };
-    let mut reports: Vec<StageReport> = Vec::new();
-    for stage in Stage::ALL {
-        let skipped = |need: &&Stage| {
-            reports
-                .iter()
-                .any(|r| r.stage == **need && r.skipped.is_some())
-        };
-        if let Some(need) = stage.needs().iter().find(skipped) {
-            reports.push(StageReport::skipped(
-                stage,
-                SkipReason::BuildsOnSkipped {
-                    stage: need.label(),
-                },
-            ));
-            continue;
-        }
-        let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
-        let rep = run_stage(stage, &mut tyre, &sel, &run);
-        reports.push(rep);
+    let mut reports = run_stages(rows, &mut tyre, &run);
+    if let Some(e) = none_fitted(rows, &reports) {
+        return Err(e);
     }
-    if reports.iter().all(|r| r.skipped.is_some()) {
-        let why: Vec<StageSkip> = reports
-            .iter()
-            .filter_map(|r| {
-                r.skipped.map(|reason| StageSkip {
-                    stage: r.stage.label(),
-                    reason,
-                })
-            })
-            .collect();
-        let combined = rows
-            .iter()
-            .filter(|r| r.kappa.abs() > 1e-3 && r.alpha.abs() > 1e-3)
-            .count();
-        return Err(FitError::NoStageFitted {
-            skips: why,
-            rows: rows.len(),
-            combined,
-        });
-    }
-    // Report the sign-blind coefficients in one conventional sign.
-    let c = &mut tyre.coefficients;
-    for name in EVEN {
-        c.set(name, c.get(name).unwrap_or(0.0).abs());
-    }
-    // sin(RVY5·atan(RVY6·κ)) is unchanged when both flip.
-    let flip_rvy = c.RVY5 < 0.0;
-    if flip_rvy {
-        c.RVY5 = -c.RVY5;
-        c.RVY6 = -c.RVY6;
-    }
-    for r in &mut reports {
-        for p in &mut r.parameters {
-            if EVEN.contains(&p.name) || (flip_rvy && (p.name == "RVY5" || p.name == "RVY6")) {
-                p.value = tyre.coefficients.get(p.name).unwrap_or(p.value);
-            }
-        }
-    }
+    conventional_signs(&mut tyre, &mut reports);
     // Each stage's σ and RMS of the final tyre (a later stage may move a
     // channel an earlier one fitted: `SSZ*` the pure rows' `Mz` through
     // their small `Fx`), so that the written file reproduces them.
@@ -538,6 +485,77 @@ pub fn identify_with(
         },
         tyre,
     })
+}
+
+/// Each stage in order on the rows it takes, updating `tyre`; a stage
+/// that builds on a skipped one skipped too.
+fn run_stages(rows: &[MfRow], tyre: &mut MagicFormula, run: &StageRun) -> Vec<StageReport> {
+    let mut reports: Vec<StageReport> = Vec::new();
+    for stage in Stage::ALL {
+        let skipped = |need: &&Stage| {
+            reports
+                .iter()
+                .any(|r| r.stage == **need && r.skipped.is_some())
+        };
+        if let Some(need) = stage.needs().iter().find(skipped) {
+            let why = SkipReason::BuildsOnSkipped {
+                stage: need.label(),
+            };
+            reports.push(StageReport::skipped(stage, why));
+            continue;
+        }
+        let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
+        reports.push(run_stage(stage, tyre, &sel, run));
+    }
+    reports
+}
+
+/// The error of a fit whose every stage was skipped (each with why, and
+/// the rows and combined-slip rows there were), or `None`.
+fn none_fitted(rows: &[MfRow], reports: &[StageReport]) -> Option<FitError> {
+    if !reports.iter().all(|r| r.skipped.is_some()) {
+        return None;
+    }
+    let skips: Vec<StageSkip> = reports
+        .iter()
+        .filter_map(|r| {
+            r.skipped.map(|reason| StageSkip {
+                stage: r.stage.label(),
+                reason,
+            })
+        })
+        .collect();
+    let combined = rows
+        .iter()
+        .filter(|r| r.kappa.abs() > 1e-3 && r.alpha.abs() > 1e-3)
+        .count();
+    Some(FitError::NoStageFitted {
+        skips,
+        rows: rows.len(),
+        combined,
+    })
+}
+
+/// The sign-blind coefficients of `tyre` (`EVEN`, and `RVY5`, `RVY6`
+/// together) in one conventional sign, as the stages' `reports` give them.
+fn conventional_signs(tyre: &mut MagicFormula, reports: &mut [StageReport]) {
+    let c = &mut tyre.coefficients;
+    for name in EVEN {
+        c.set(name, c.get(name).unwrap_or(0.0).abs());
+    }
+    // sin(RVY5·atan(RVY6·κ)) is unchanged when both flip.
+    let flip_rvy = c.RVY5 < 0.0;
+    if flip_rvy {
+        c.RVY5 = -c.RVY5;
+        c.RVY6 = -c.RVY6;
+    }
+    for r in reports {
+        for p in &mut r.parameters {
+            if EVEN.contains(&p.name) || (flip_rvy && (p.name == "RVY5" || p.name == "RVY6")) {
+                p.value = tyre.coefficients.get(p.name).unwrap_or(p.value);
+            }
+        }
+    }
 }
 
 /// The largest difference of `fx`, `fy`, `mz` between `tyre` and `back`

@@ -54,11 +54,38 @@ pub(super) fn read_points(
         .into_iter()
         .map(|n| (n, c.take(n)))
         .collect();
+    let mut errors = not_physical(points, &c, &inputs, pressure.as_deref());
+    errors.extend(bad_cells);
+    if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
+        return Err(e.into());
+    }
+    refuse_pressure_units(points, &c, pressure.as_deref(), known)?;
+    // A car's loads written in kN; the points off the road do not count.
+    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
+        return Err(c.error_at(points, i, "fz", slip.into()).into());
+    }
+    Ok(PointColumns {
+        file: c,
+        inputs,
+        pressure,
+        measured,
+    })
+}
+
+/// Every point no tyre is evaluated at (`physical.rs`), in row order
+/// (then column), each as the error at its cell of `c` (read from
+/// `points`): the five `inputs` and the `pressure` where given, a
+/// pressure at or below zero said as such, with the rest.
+fn not_physical(
+    points: &Path,
+    c: &crate::io::Columns,
+    inputs: &[(&'static str, Vec<f64>)],
+    pressure: Option<&[f64]>,
+) -> Vec<crate::error::InputError> {
     let given = inputs
         .iter()
-        .map(|(n, v)| (*n, v))
-        .chain(pressure.as_ref().map(|p| ("pressure", p)));
-    // Every point no tyre is evaluated at, in row order (then column).
+        .map(|(n, v)| (*n, &v[..]))
+        .chain(pressure.map(|p| ("pressure", p)));
     let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
         .enumerate()
         .flat_map(|(k, (name, values))| {
@@ -67,8 +94,7 @@ pub(super) fn read_points(
                 .map(move |(i, problem)| (i, k, name, problem))
         })
         .collect();
-    // A pressure at or below zero is said as such, with the rest.
-    if let Some(p) = &pressure {
+    if let Some(p) = pressure {
         refused.retain(|(i, _, name, _)| *name != "pressure" || p[*i] > 0.0);
         refused.extend(
             p.iter()
@@ -84,39 +110,32 @@ pub(super) fn read_points(
                 }),
         );
     }
-    let mut errors: Vec<crate::error::InputError> = refused
+    refused
         .into_iter()
         .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
-        .collect();
-    errors.extend(bad_cells);
-    if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
-        return Err(e.into());
-    }
-    // A pressure written in kPa, bar or psi (a .tir clamps it to its
-    // range without a word of the unit).
-    // One unit for the whole column is said once, by its median; cells
-    // in different units (2.2 in bar beside 220 in kPa) each with its own.
-    let mixed = pressure
-        .as_deref()
-        .is_some_and(|p| pressure::mixed_units(p, known));
+        .collect()
+}
+
+/// A `pressure` written in kPa, bar or psi refused (a .tir clamps it to
+/// its range without a word of the unit), read against the pressures
+/// `known` of the tyre. One unit for the whole column is said once, by
+/// its median; cells in different units (2.2 in bar beside 220 in kPa)
+/// each with its own.
+fn refuse_pressure_units(
+    points: &Path,
+    c: &crate::io::Columns,
+    pressure: Option<&[f64]>,
+    known: Option<pressure::Known>,
+) -> Result<(), Error> {
+    let mixed = pressure.is_some_and(|p| pressure::mixed_units(p, known));
     if let Some((i, slip)) = pressure
-        .as_deref()
         .filter(|_| !mixed)
         .and_then(|p| pressure_not_in_pa(p, known))
     {
         return Err(c.error_at(points, i, "pressure", slip.into()).into());
     }
-    if let Some(p) = &pressure {
-        pressure::refuse_rows_not_in_pa(points, &c, p, known)?;
+    if let Some(p) = pressure {
+        pressure::refuse_rows_not_in_pa(points, c, p, known)?;
     }
-    // A car's loads written in kN; the points off the road do not count.
-    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
-        return Err(c.error_at(points, i, "fz", slip.into()).into());
-    }
-    Ok(PointColumns {
-        file: c,
-        inputs,
-        pressure,
-        measured,
-    })
+    Ok(())
 }

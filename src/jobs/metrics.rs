@@ -120,39 +120,8 @@ pub fn run_with_degrees(
     // warning replaces: this one must not).
     m.warnings.extend(unchecked);
     // Settings the run cannot honour are said, not dropped.
-    if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
-        m.warnings.push(format!(
-            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered",
-            crate::error::Num(f)
-        ));
-    }
-    let piece = m.t_end - m.t_start;
     m.warnings
-        .extend(windows_said(&m.metrics, settings, &clock, m.t_end));
-    m.warnings.extend(noise_said::noise_in_variance(
-        &m.metrics,
-        settings.variance_window.min(piece),
-        (settings.e1, settings.e2),
-    ));
-    let dt = crate::measured::clean::median_interval(&clock);
-    m.warnings.extend(peak_time_said(&m.metrics, dt));
-    m.warnings
-        .extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
-    // A cutoff suggested is measured through, so that following it is
-    // not warned of again.
-    let response_at = |f: f64| {
-        let at = MetricSettings {
-            filter_hz: Some(f),
-            ..*settings
-        };
-        let m = measured_step_metrics(run.clone(), min_speed, &at).ok()?;
-        Some(m.metrics.yaw_rate_response_time)
-    };
-    m.warnings.extend(filter_speed::filter_measures_itself_with(
-        &m.metrics,
-        dt,
-        &response_at,
-    ));
+        .extend(settings_said(&m, &run, (settings, min_speed), &clock));
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,
@@ -165,6 +134,53 @@ pub fn run_with_degrees(
         t_start: m.t_start,
         t_end: m.t_end,
     })
+}
+
+/// What the run's measurement `m` (of `run`, sampled at `clock`) says of
+/// the `settings` it was asked (with `min_speed`): a low-pass the
+/// sampling does not allow, windows it cannot honour, noise in the total
+/// variance, a peak time or response coarser than the sampling, and a
+/// cutoff that moves the response it measures (measured through, so that
+/// following it is not warned of again).
+fn settings_said(
+    m: &MeasuredMetrics,
+    run: &MeasuredRun,
+    (settings, min_speed): (&MetricSettings, f64),
+    clock: &[f64],
+) -> Vec<String> {
+    let mut out = Vec::new();
+    if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
+        out.push(format!(
+            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered",
+            crate::error::Num(f)
+        ));
+    }
+    let piece = m.t_end - m.t_start;
+    out.extend(windows_said(&m.metrics, settings, clock, m.t_end));
+    out.extend(noise_said::noise_in_variance(
+        &m.metrics,
+        settings.variance_window.min(piece),
+        (settings.e1, settings.e2),
+    ));
+    let dt = crate::measured::clean::median_interval(clock);
+    out.extend(peak_time_said(&m.metrics, dt));
+    out.extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
+    // A cutoff suggested is measured through, so that following it is
+    // not warned of again.
+    let response_at = |f: f64| {
+        let at = MetricSettings {
+            filter_hz: Some(f),
+            ..*settings
+        };
+        let m = measured_step_metrics(run.clone(), min_speed, &at).ok()?;
+        Some(m.metrics.yaw_rate_response_time)
+    };
+    out.extend(filter_speed::filter_measures_itself_with(
+        &m.metrics,
+        dt,
+        &response_at,
+    ));
+    out
 }
 
 /// The windows the run cannot honour as asked, each said: a total-variance

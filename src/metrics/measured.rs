@@ -9,10 +9,9 @@
 
 use super::step_shape::last_crossing;
 use super::{MetricSettings, StepMetrics};
-use crate::error::{InputError, InputProblem, RefusedPiece};
+use crate::error::{InputError, InputProblem};
 use crate::measured::clean::{
     clean_single_reported, median, median_interval, quantile, CleanSettings, CleaningReport,
-    GlitchKind,
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -360,6 +359,7 @@ pub struct MeasuredMetrics {
 
 mod ay_check;
 mod coarse_grid;
+mod no_step;
 mod piece;
 mod steady_advice;
 mod uniform;
@@ -484,35 +484,7 @@ pub fn measured_step_metrics(
         |piece, found| piece::measure(piece, found, settings),
     );
     let Some((piece, (metrics, filled, said))) = found else {
-        let problem = if cleaning.dropped_pieces.is_empty() {
-            InputProblem::NoMovingSamples {
-                min_speed,
-                slow: cleaning.samples_slow,
-                read: cleaning.samples_read,
-            }
-        } else {
-            let whole = path.display().to_string();
-            let pieces = cleaning
-                .dropped_pieces
-                .iter()
-                .filter_map(|p| {
-                    Some(RefusedPiece {
-                        // A piece named as the file is the whole run.
-                        name: (p.name != whole).then(|| p.name.clone()),
-                        t_start: p.t_start,
-                        t_end: p.t_end,
-                        reason: p.reason.clone()?,
-                    })
-                })
-                .collect();
-            let gaps = cleaning
-                .glitches
-                .iter()
-                .filter(|g| g.kind == GlitchKind::TimeGap)
-                .map(|g| (g.t, g.value))
-                .collect();
-            InputProblem::NoSteerStep { pieces, gaps }
-        };
+        let problem = no_step::no_step_problem(&cleaning, &path, min_speed);
         return Err(InputError::problem(&path, problem));
     };
     let steer_rise_time = steer_rise(&filled, &metrics, settings);

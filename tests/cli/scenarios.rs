@@ -399,6 +399,23 @@ pub(crate) fn simulate_to(scenario: &Path, out: &Path) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// The linear car of [`VEHICLE`] on [`linear_tyre`] driven through
+/// `manoeuvre` (the lines of its `[manoeuvre]` table), written to
+/// `dir/name.toml` with a row every 0.01 s and simulated into
+/// `dir/sim_name`: its history's rows (the first six columns, as
+/// [`super::trips_s94_met::history_rows`] reads them).
+pub(crate) fn simulated_rows(dir: &Path, name: &str, manoeuvre: &str) -> Vec<Vec<f64>> {
+    linear_tyre(dir);
+    let scenario = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\n{manoeuvre}\n[simulation]\nstep = 0.01\n"
+    );
+    let path = dir.join(format!("{name}.toml"));
+    fs::write(&path, scenario).unwrap();
+    let out = dir.join(format!("sim_{name}"));
+    simulate_to(&path, &out);
+    super::trips_s94_met::history_rows(&out.join("history.csv"))
+}
+
 /// The reference tolerance of the convergence checks: a hundred times
 /// tighter than the default rtol (1e-9), so the reference's own error is
 /// two orders below the difference measured.

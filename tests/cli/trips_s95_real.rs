@@ -4,7 +4,7 @@
 //! Each on runs the `simulate`d car drove (the linear tyre, the shared
 //! vehicle), logged as a logger would, diagnosed as a user runs it.
 
-use super::trips_s94_met::history_rows;
+use super::scenarios::simulated_rows;
 use super::*;
 
 /// Deterministic white noise: a 64-bit linear congruential generator
@@ -31,20 +31,10 @@ impl Lcg {
 /// simulated at 100 Hz in `dir`: its history's rows (t, steer, speed,
 /// beta, yaw_rate, ay).
 fn sine(dir: &Path, name: &str, speed: f64, amplitude: f64, frequency: f64) -> Vec<Vec<f64>> {
-    linear_tyre(dir);
-    let scenario = format!(
-        "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"sine\"\nspeed = {speed:?}\namplitude = {amplitude:?}\nfrequency = {frequency:?}\nstart = 1.0\nend = 31.0\n\n[simulation]\nstep = 0.01\n"
+    let manoeuvre = format!(
+        "kind = \"sine\"\nspeed = {speed:?}\namplitude = {amplitude:?}\nfrequency = {frequency:?}\nstart = 1.0\nend = 31.0\n"
     );
-    let path = dir.join(format!("{name}.toml"));
-    fs::write(&path, scenario).unwrap();
-    let out = dir.join(format!("sim_{name}"));
-    succeeds(&[
-        "simulate",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    history_rows(&out.join("history.csv"))
+    simulated_rows(dir, name, &manoeuvre)
 }
 
 /// A campaign folder `dir/campaign` on the same car and tyre, with

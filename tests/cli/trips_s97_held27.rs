@@ -7,7 +7,7 @@
 //! `simulate`d car drove (the linear tyre, the shared vehicle), logged as a
 //! logger would, diagnosed as a user runs it.
 
-use super::trips_s94_met::history_rows;
+use super::scenarios::simulated_rows;
 use super::trips_s95_real::{campaign, logged};
 use super::*;
 
@@ -17,7 +17,6 @@ use super::*;
 /// steady 1.9 s, a 0.4 s unwind, the sign turning each time; its
 /// history's rows. The kinks fall between the updates of a 20 Hz logger.
 fn turns(dir: &Path, name: &str, speed: f64, amplitude: f64) -> Vec<Vec<f64>> {
-    linear_tyre(dir);
     let (mut t, mut steer) = (vec![0.0], vec![0.0]);
     for k in 0..3 {
         let (s, a) = (
@@ -35,22 +34,13 @@ fn turns(dir: &Path, name: &str, speed: f64, amplitude: f64) -> Vec<Vec<f64>> {
             .collect::<Vec<_>>()
             .join(", ")
     };
-    let scenario = format!(
-        "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"schedule\"\nt = [{}]\nsteer = [{}]\nspeed = [{}]\n\n[simulation]\nstep = 0.01\n",
+    let manoeuvre = format!(
+        "kind = \"schedule\"\nt = [{}]\nsteer = [{}]\nspeed = [{}]\n",
         list(&t),
         list(&steer),
         list(&vec![speed; t.len()])
     );
-    let path = dir.join(format!("{name}.toml"));
-    fs::write(&path, scenario).unwrap();
-    let out = dir.join(format!("sim_{name}"));
-    succeeds(&[
-        "simulate",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    history_rows(&out.join("history.csv"))
+    simulated_rows(dir, name, &manoeuvre)
 }
 
 /// Two runs of [`turns`] (20 m/s, 0.03 rad; 15 m/s, 0.04 rad) logged at

@@ -1,7 +1,8 @@
-//! Session 98 (`real28`, issue 39): a logged body roll was "compared with
-//! nothing" while the accelerometer read `g·sin φ` of gravity in roll, so
-//! the fit took the roll for whatever else grows with `ay`; a sideslip
-//! offset stayed in the bank estimate's `d(u·β)/dt`.
+//! What a fresh-eyes round tripped on with a logged body roll (session 98):
+//! the roll was "compared with nothing" while the accelerometer read
+//! `g·sin φ` of gravity in roll, so the fit took the roll for whatever
+//! else grows with `ay`; a sideslip offset stayed in the bank estimate's
+//! `d(u·β)/dt`.
 
 use super::calibration::{diagnosed, log};
 

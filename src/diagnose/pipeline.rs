@@ -201,7 +201,8 @@ const VISIBLE_AX: f64 = 0.5;
 
 /// The campaign's candidate effects that its runs can show, and a note for
 /// each one left out (an effect of braking and throttle without a
-/// longitudinal acceleration, a bank profile without a `bank` channel).
+/// longitudinal acceleration, a bank profile without a `bank` channel, an
+/// accelerometer roll where every run logs the roll that levels its `ay`).
 fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
     // The acceleration the replays use: the measured ax, else the
     // smoothed speed derivative (a raw difference of a noisy speed would
@@ -212,6 +213,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
             .any(|a| a.abs() > VISIBLE_AX)
     });
     let banked = c.runs.iter().any(|r| r.bank.is_some());
+    let rolled = c.runs.iter().all(|r| r.roll.is_some() && r.ay.is_some());
     // Linear base tyres have no limit for a friction scale to lower.
     let linear = |t: &crate::tyre::Tyre| matches!(t, crate::tyre::Tyre::Linear(_));
     let linear_base = match &c.tyres {
@@ -235,6 +237,8 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
                 }
                 Needs::BankChannel if !banked => Unseen::BankChannel,
                 Needs::FrictionLimit if linear_base => Unseen::FrictionLimit,
+                // A logged roll levels ay (`io::campaign`'s reading).
+                _ if *e == EffectKind::AccelerometerRoll && rolled => Unseen::RollLogged,
                 _ => return true,
             };
             notes.push(Note::NotACandidate { effect: *e, lacks });

@@ -178,6 +178,9 @@ pub enum Unseen {
     BankChannel,
     /// Base tyres with a friction limit (the base model's are linear).
     FrictionLimit,
+    /// An accelerometer roll not already known: every run logs its body
+    /// roll, which levels `ay` before the fit.
+    RollLogged,
 }
 
 impl std::fmt::Display for Unseen {
@@ -188,6 +191,9 @@ impl std::fmt::Display for Unseen {
                 "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
             ),
             Unseen::BankChannel => f.write_str("no run has a bank channel"),
+            Unseen::RollLogged => f.write_str(
+                "every run logs its body roll, which levels ay before the fit: the accelerometer's g·sin φ is known, not fitted",
+            ),
             Unseen::FrictionLimit => f.write_str(
                 "the base model's tyres are linear, with no friction limit for a friction scale to lower: its fit would hold it at 1 whatever the runs show (give tyres with a limit, rig data or none, for axles identified from the runs)",
             ),

@@ -27,7 +27,11 @@
 //! `a_y` offset of 0.1 m/s² reads as 0.6° of bank). The offsets the runs'
 //! standstills or straights measured ([`SensorOffsets`]) are removed
 //! first, and the line says so: on a flat road an accelerometer mounted
-//! with an offset of −0.6 m/s² would otherwise read a bank of −3.5°.
+//! with an offset of −0.6 m/s² would otherwise read a bank of −3.5°, and a
+//! sideslip offset `b_β` in `d(u·β)/dt` reads `b_β·u̇/g` of bank wherever
+//! the car speeds up or brakes (0.01 rad at 3 m/s², 0.2°). A logged body
+//! roll has levelled `a_y` before (the diagnosis's reading,
+//! [`super::calibration::roll`]): its `g·φ` is then not in the estimate.
 //! Masked samples are left out. Units: rad.
 
 use super::clean::quantile;
@@ -126,6 +130,12 @@ pub struct SensorOffsets {
     pub beta: f64,
 }
 
+/// The sideslip offset the bank estimate of `run` removes: `offsets`'s
+/// where the run has a `beta` column, else 0 (none is read).
+fn beta_offset(run: &MeasuredRun, offsets: SensorOffsets) -> f64 {
+    run.beta.as_ref().map_or(0.0, |_| offsets.beta)
+}
+
 /// The road under one run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RoadGeometry {
@@ -173,8 +183,12 @@ impl RoadGeometry {
         });
         Self {
             run: name.to_string(),
-            offsets_removed: (estimated && (offsets.ay, offsets.yaw_rate) != (0.0, 0.0))
-                .then_some(offsets),
+            offsets_removed: (estimated
+                && (offsets.ay, offsets.yaw_rate, beta_offset(run, offsets)) != (0.0, 0.0, 0.0))
+                .then_some(SensorOffsets {
+                    beta: beta_offset(run, offsets),
+                    ..offsets
+                }),
             bank,
             grade,
         }
@@ -197,7 +211,7 @@ impl RoadGeometry {
             AngleSource::LateralKinematics | AngleSource::LateralKinematicsWithSideslip
         );
         let offsets = match self.offsets_removed {
-            Some(o) if lateral => super::road_words::removed(o.ay, o.yaw_rate),
+            Some(o) if lateral => super::road_words::removed(o.ay, o.yaw_rate, o.beta),
             _ => String::new(),
         };
         let caveat = match p.source {
@@ -242,14 +256,18 @@ impl RoadGeometry {
     }
 }
 
-/// `asin((a_y − b_ay − u·(r − b_r) − d(u·β)/dt)/g)` smoothed, rad per
+/// `asin((a_y − b_ay − u·(r − b_r) − d(u·(β − b_β))/dt)/g)` smoothed, rad per
 /// sample: the sensors' offsets `b` removed, the sideslip's rate where the
 /// run has `beta` (a sample beside a masked one has none: NaN, left out).
 pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Vec<f64> {
-    let lateral: Option<Vec<f64>> = run
-        .beta
-        .as_ref()
-        .map(|b| b.iter().zip(&run.speed).map(|(b, u)| u * b.tan()).collect());
+    let lateral: Option<Vec<f64>> = run.beta.as_ref().map(|b| {
+        // The sideslip's offset is no lateral velocity: d(u·b_β)/dt =
+        // b_β·u̇ would read as bank wherever the car speeds up.
+        b.iter()
+            .zip(&run.speed)
+            .map(|(b, u)| u * (b - offsets.beta).tan())
+            .collect()
+    });
     let masked = |k: usize| run.masked.binary_search(&k).is_ok();
     let raw: Vec<f64> = (0..run.t.len())
         .map(|k| {

@@ -1,11 +1,12 @@
 //! The words of a road estimate's offsets ([`super::road`]): the sensor
-//! offsets removed from `ay` (m/s²) and the yaw rate (rad/s) before the
-//! bank was estimated from `ay − u·r` (ISO 8855), those not 0 only.
+//! offsets removed from `ay` (m/s²), the yaw rate (rad/s) and the sideslip
+//! (rad) before the bank was estimated from `ay − u·r − d(u·β)/dt` (ISO
+//! 8855), those not 0 only.
 
 /// The offsets removed, in words: those not 0 only (an offset the
 /// calibration did not take, as an `ay` beyond a mounted sensor's, is not
 /// removed, and is not said to be).
-pub(super) fn removed(ay: f64, yaw_rate: f64) -> String {
+pub(super) fn removed(ay: f64, yaw_rate: f64, beta: f64) -> String {
     let mut parts = Vec::new();
     if ay != 0.0 {
         parts.push(format!("ay {ay:.3} m/s²"));
@@ -19,6 +20,9 @@ pub(super) fn removed(ay: f64, yaw_rate: f64) -> String {
             crate::format::readable(yaw_rate, 2)
         };
         parts.push(format!("yaw rate {r} rad/s"));
+    }
+    if beta != 0.0 {
+        parts.push(format!("beta {} rad", crate::format::readable(beta, 3)));
     }
     let what = if parts.len() == 1 {
         "offset"

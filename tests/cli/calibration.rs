@@ -33,7 +33,7 @@ impl Noise {
 /// 0.15 s lag, ay = u·r + g·sin(bank), sideslip 0.1·steer; the offsets
 /// [`OFFSETS`] and white noise (0.002 rad/s, 0.05 m/s², 0.001 rad) on top.
 /// The `bank` column is written when `bank_logged`; no `ax`.
-fn log(seed: u64, parked_bank: f64, corner: bool, bank_logged: bool) -> String {
+pub(crate) fn log(seed: u64, parked_bank: f64, corner: bool, bank_logged: bool) -> String {
     log_banks(
         seed,
         parked_bank,

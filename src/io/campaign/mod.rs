@@ -34,6 +34,7 @@ mod copies;
 mod degrees;
 mod glob;
 mod kind;
+mod levelled;
 mod run_checks;
 mod runs;
 mod swept;

@@ -3,7 +3,8 @@
 //! each read, checked (long enough; the steer's sign and unit judged against
 //! the yaw rate it gives, ISO 8855 signs), calibrated on its standstills and
 //! straights as read ([`crate::measured::calibration`]) and cleaned
-//! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
+//! ([`crate::measured::clean`]), cut into segments if asked, `ay` levelled
+//! by a logged roll ([`super::levelled`]). Units: SI, rad.
 
 use super::run_checks::{checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal};
 use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
@@ -305,7 +306,10 @@ pub(super) fn read_runs(
     if let Some(seg) = segment.filter(|_| !cut.was_cut && !runs.is_empty()) {
         notes.push(uncut_note(seg, cut.longest));
     }
-    notes.extend(unscored_roll(&raw, degrees.contains(&AngleColumn::Roll)));
+    // A logged roll levels ay: gravity's part of it is known, not fitted.
+    let (runs, roll_note) =
+        super::levelled::level_by_roll(&raw, runs, degrees.contains(&AngleColumn::Roll));
+    notes.extend(roll_note);
     notes.extend(absent_notes(absent, files.len())?);
     Ok((runs, notes, cleaning, calibrate(&raw), top_speeds(&raw)))
 }
@@ -433,24 +437,6 @@ fn uncut_note(segment: f64, longest: f64) -> String {
         crate::error::Num(segment),
         crate::format::fixed(longest, 1)
     )
-}
-
-/// The note of a logged roll channel (`declared` in degrees under
-/// `[runs]`): read, and converted where declared, but no channel of the
-/// gap, which says so rather than leave it out in silence.
-fn unscored_roll(raw: &[MeasuredRun], declared: bool) -> Option<String> {
-    let with = raw.iter().filter(|r| r.roll.is_some()).count();
-    let unit = match declared {
-        true => ", converted from the degrees `degrees` under [runs] declares",
-        false => "",
-    };
-    (with > 0).then(|| {
-        format!(
-            "roll: logged in {with} of {} run{}{unit}, not scored: the gap is the yaw rate's, ay's and beta's alone, and the logged roll is compared with nothing, so the roll dynamics (the campaign's [roll], and roll.frequency and roll.damping where a candidate fits them) are judged only by what they do to those channels",
-            raw.len(),
-            if raw.len() == 1 { "" } else { "s" }
-        )
-    })
 }
 
 #[cfg(test)]

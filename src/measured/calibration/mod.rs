@@ -72,10 +72,12 @@
 //! [`calibrate`]; `spans.rs` finds the spans, `stats.rs` measures and pools
 //! them, `bank.rs` checks a logged bank against the standstills' `a_y`
 //! (as logged, not acting, reversed), `report.rs` holds the report and its
-//! lines.
+//! lines, `roll.rs` levels `a_y` by a logged body roll (its own offset
+//! from the standstills).
 
 mod bank;
 mod report;
+pub mod roll;
 mod spans;
 pub(crate) mod stats;
 #[cfg(test)]

@@ -119,6 +119,8 @@ pub fn advised(effect: EffectKind) -> Result<&'static [Kind], Missing> {
         E::SteerPath => &[Step, SpeedChange],
         // Steps at two speeds (one factor at both) and two levels.
         E::SteeringRatio => &[Step],
+        // Braking and throttle on a straight read as a lateral acceleration.
+        E::MountYaw => &[SpeedChange],
         E::RoadBank | E::SensorBias => return Err(Missing::StraightBothWays),
         E::BankProfile => return Err(Missing::BankedCorner),
     })

@@ -373,7 +373,7 @@ fn logged_run(
     let drive = Drive::new(&m, 1e-3).with_channels(&p.t, Some(&p.ax), Some(&p.bank));
     let drive = truth.steered(&drive, &p.t, &p.steer);
     let x0 = truth.initial_state(&drive, 0.0, 0.0);
-    let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
+    let o = truth.observe_driven(&truth.simulate(&drive, x0), &drive, &p.t);
     let (yaw_rate, ay, beta) = (o.yaw_rate, o.ay, o.beta);
     // Drawn in this order (the existing programmes' noise unchanged).
     let yaw_rate = with_noise(&yaw_rate, noise.yaw_rate, rng);

@@ -434,6 +434,7 @@ impl Effects {
             ("beta_bias", sensors.beta_bias),
             ("accelerometer_x", sensors.accelerometer_x),
             ("roll_gradient", sensors.roll_gradient),
+            ("mount_yaw", sensors.mount_yaw),
         ] {
             ParamError::finite(key, v).map_err(|e| e.within("sensors"))?;
         }

@@ -17,7 +17,20 @@
 //!   whatever the accelerometer's position (None: at the inertial unit);
 //! - `roll_gradient` (rad per m/s²): the body rolls by φ = k·ay (ISO 8855:
 //!   positive φ puts the right side down, outward in a left turn) and a
-//!   body-fixed accelerometer reads `ay·cos φ + g·sin φ`.
+//!   body-fixed accelerometer reads `ay·cos φ + g·sin φ`;
+//! - `mount_yaw` (rad): the inertial unit turned by ψₘ in its mount about
+//!   the body's z axis (ISO 8855: z up, ψₘ > 0 turns the unit's x axis to
+//!   the left, counter-clockwise seen from above). The unit's y axis is
+//!   then (−sin ψₘ, cos ψₘ) in body axes, so its accelerometer reads the
+//!   body's specific force (ax, ay) as `ay_m = ay·cos ψₘ − ax·sin ψₘ`: a
+//!   unit turned left reads braking (ax < 0) as a left acceleration. The
+//!   ax it mixes in is the run's longitudinal acceleration as the model
+//!   reads it (a logged `ax` channel, else the speed's derivative), which
+//!   the same unit logs as `ax·cos ψₘ + ay·sin ψₘ`: taking it for the
+//!   body's leaves `ay·sin²ψₘ`, 0.1 % of ay at 2°. The gyro's yaw rate is
+//!   a rate about z, which a turn about z leaves as it is; a sideslip the
+//!   unit measures in its own axes is off by −ψₘ, a constant, which the
+//!   sideslip offset `beta_bias` carries (not this term).
 //!
 //! The numbers may be dual numbers ([`crate::scalar`]): what the sensors
 //! record then carries their derivatives. Units: SI, rad.
@@ -41,6 +54,9 @@ pub struct Sensors<T = f64> {
     pub accelerometer_x: T,
     /// Body roll per unit lateral acceleration, rad per m/s².
     pub roll_gradient: T,
+    /// The inertial unit's yaw in its mount, rad (ISO 8855: positive
+    /// turns its x axis to the left).
+    pub mount_yaw: T,
     /// The sideslip's own measurement point ahead of the centre of
     /// gravity, m, where stated (None: at the inertial unit,
     /// `accelerometer_x`). Stated, never fitted: a plain number.
@@ -57,6 +73,7 @@ impl<T: Copy> Sensors<T> {
             beta_bias: f(self.beta_bias),
             accelerometer_x: f(self.accelerometer_x),
             roll_gradient: f(self.roll_gradient),
+            mount_yaw: f(self.mount_yaw),
             beta_at: self.beta_at,
         }
     }
@@ -90,26 +107,48 @@ impl<T: Scalar> Sensors<T> {
         x * r / u.max(SIDESLIP_MIN_SPEED)
     }
 
+    /// Whether the accelerometer reads the longitudinal acceleration (its
+    /// mount is yawed): only then does [`Sensors::seen`] read its `ax`.
+    pub fn reads_ax(&self) -> bool {
+        !off(self.mount_yaw)
+    }
+
     /// What the sensors record of a response (yaw rate, `ay` and sideslip
-    /// at times `t`, at forward speeds `speed`), at the same times: (yaw
-    /// rate, ay, sideslip).
+    /// at times `t`, at forward speeds `speed` and longitudinal
+    /// accelerations `ax`), at the same times: (yaw rate, ay, sideslip).
+    /// `ax` is read only where [`Sensors::reads_ax`] (it may be empty
+    /// otherwise).
+    ///
+    /// # Panics
+    /// When the mount is yawed and `ax` is not one value per time.
     pub fn seen(
         &self,
         t: &[f64],
         speed: &[f64],
+        ax: &[f64],
         yaw_rate: &[T],
         ay: &[T],
         beta: &[T],
     ) -> [Vec<T>; 3] {
         let yaw_acc = derivative(t, yaw_rate);
-        let ay_seen: Vec<T> = ay
+        let mut ay_seen: Vec<T> = ay
             .iter()
             .zip(&yaw_acc)
             .map(|(&ay, &ra)| {
                 let phi = self.roll_gradient * ay;
-                ay * phi.cos() + phi.sin() * G + self.accelerometer_x * ra + self.ay_bias
+                ay * phi.cos() + phi.sin() * G + self.accelerometer_x * ra
             })
             .collect();
+        if self.reads_ax() {
+            assert_eq!(ax.len(), t.len(), "one ax per time");
+            let (sin, cos) = (self.mount_yaw.sin(), self.mount_yaw.cos());
+            for (a, &x) in ay_seen.iter_mut().zip(ax) {
+                *a = *a * cos - sin * x;
+            }
+        }
+        for a in &mut ay_seen {
+            *a += self.ay_bias;
+        }
         let yaw_seen: Vec<T> = yaw_rate.iter().map(|&r| r + self.yaw_rate_bias).collect();
         let late = |y: &[T]| -> Vec<T> {
             if off(self.delay) {
@@ -152,7 +191,9 @@ mod tests {
     fn measure(s: &Sensors) -> [Vec<f64>; 3] {
         let [t, r, ay, beta] = history();
         let u = vec![20.0; t.len()];
-        s.seen(&t, &u, &r, &ay, &beta)
+        // Braking at 3 m/s² through the sine.
+        let ax = vec![-3.0; t.len()];
+        s.seen(&t, &u, &ax, &r, &ay, &beta)
     }
 
     #[test]
@@ -208,5 +249,37 @@ mod tests {
         // true acceleration.
         let j = 100;
         assert!(ay[j] > 0.0 && rolled[1][j] > ay[j]);
+    }
+
+    #[test]
+    fn a_unit_yawed_in_its_mount_reads_part_of_ax_as_ay() {
+        let [_, r, ay, beta] = history();
+        // Turned 2° to the left: its y axis leans back, so braking (ax =
+        // −3 m/s²) reads 3·sin 2° = 0.105 m/s² to the left, on top of
+        // ay·cos 2°, with the bias added after.
+        let psi = 2f64.to_radians();
+        let yawed = measure(&Sensors {
+            mount_yaw: psi,
+            ay_bias: 0.1,
+            ..Default::default()
+        });
+        for i in [0, 123, 400, 777] {
+            let want = ay[i] * psi.cos() + 3.0 * psi.sin() + 0.1;
+            assert!((yawed[1][i] - want).abs() < 1e-12, "{i}");
+        }
+        // At 0 the ax is not read (none given, the same record).
+        let t: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.01).collect();
+        let u = vec![20.0; t.len()];
+        let plain = Sensors::default().seen(&t, &u, &[], &r, &ay, &beta);
+        assert_eq!(plain, [r.clone(), ay.clone(), beta.clone()]);
+        // A turn about z leaves the gyro and the sideslip as they are.
+        assert_eq!(yawed[0], r);
+        assert_eq!(yawed[2], beta);
+        // The opposite turn reads braking to the right: the sign is odd.
+        let right = measure(&Sensors {
+            mount_yaw: -psi,
+            ..Default::default()
+        });
+        assert!((right[1][400] - (ay[400] * psi.cos() - 3.0 * psi.sin())).abs() < 1e-12);
     }
 }

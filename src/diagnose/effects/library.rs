@@ -70,6 +70,9 @@ effect_library! {
     /// The steering ratio's error: the road wheels turn g·(δ + k₃·δ³) for
     /// a logged steer δ.
     SteeringRatio,
+    /// An inertial unit yawed in its mount: its accelerometer reads part
+    /// of the longitudinal acceleration as lateral.
+    MountYaw,
 }
 
 impl Effect for RelaxationLength {
@@ -394,5 +397,30 @@ impl Effect for SteeringRatio {
     fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
         e.steer_path.gain = p[0];
         e.steer_path.cubic = p[1];
+    }
+}
+
+impl Effect for MountYaw {
+    const NAME: &'static str = "mount_yaw";
+    /// ψₘ, ISO 8855 (z up): positive turns the unit's x axis to the left,
+    /// and its accelerometer reads ay·cos ψₘ − ax·sin ψₘ
+    /// ([`crate::vehicle::Sensors`]). Its bounds ±0.1 rad (±5.7°) are a
+    /// search range: a unit squared to the car's centre line by eye or
+    /// against a bracket sits within a few degrees of it (a 0.3 m unit
+    /// with one end 1.5 cm off the line is turned 2.9°), and a turn
+    /// beyond 5° is plain to see on the car.
+    const PARAMETERS: &'static [Parameter] = &[par("angle", "rad", 0.0, -0.1, 0.1)];
+    /// A sensor offset reads the same at every ax, a position ahead of
+    /// the centre of gravity adds x·ṙ (zero on a straight and in a steady
+    /// turn), a rolling unit g·sin φ (with ay): only the mount's yaw reads
+    /// braking and throttle on a straight as a lateral acceleration,
+    /// −ax·sin ψₘ, with the yaw rate and the sideslip unmoved.
+    const SIGNATURE: &'static str = "a lateral acceleration read in proportion to the longitudinal one (−ax·sin ψₘ) while the yaw rate and the sideslip agree: braking and accelerating on a straight read as a lateral acceleration, where a sensor offset stays the same at every ax, an accelerometer ahead of the centre of gravity reads the yaw acceleration (nothing on a straight) and a rolling one g·sin φ with ay: a straight braked and accelerated";
+    const NEEDS: Needs = Needs::LongitudinalAcceleration;
+    const USES_ROLL: bool = false;
+    /// Turned 3° to the left.
+    const TRUTH: &'static [f64] = &[0.05236];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.sensors.mount_yaw = p[0];
     }
 }

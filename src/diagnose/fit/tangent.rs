@@ -151,9 +151,10 @@ where
         .quasi_static_of(&m.scalars, beta, r, first.speed, steer0);
     let h = m.replay(drive, steer.as_deref(), x0);
     let speed = run.speed_at(&h.t);
+    let ax = run.ax_for(&effects.sensors, &h.t);
     let seen = effects
         .sensors
-        .seen(&h.t, &speed, &h.yaw_rate, &h.ay, &h.beta);
+        .seen(&h.t, &speed, &ax, &h.yaw_rate, &h.ay, &h.beta);
     let mut rows = Vec::with_capacity(run.count());
     for (c, measured) in &run.measured {
         let ys = &seen[match c {

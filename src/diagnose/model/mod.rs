@@ -156,13 +156,52 @@ impl Augmented {
     }
 
     /// What the sensors record of a response, interpolated at `times`:
-    /// (yaw rate, ay, β).
+    /// (yaw rate, ay, β). A yawed accelerometer's longitudinal
+    /// acceleration is the response's speed rate (a simulation's own
+    /// du/dt); a replay of a drive with an `ax` of its own reads that one
+    /// ([`Augmented::observe_driven`]).
     pub(crate) fn observe(&self, response: &TimeHistory, times: &[f64]) -> Observed {
+        let ax = if self.effects().sensors.reads_ax() {
+            speed_rate(&response.t, &response.speed)
+        } else {
+            Vec::new()
+        };
+        self.observe_with_ax(response, &ax, times)
+    }
+
+    /// [`Augmented::observe`] of a replay of `drive`, whose longitudinal
+    /// acceleration ([`Drive::ax_samples`]: a logged `ax`, else the
+    /// speed's smoothed derivative) a yawed accelerometer reads.
+    pub(crate) fn observe_driven(
+        &self,
+        response: &TimeHistory,
+        drive: &Drive,
+        times: &[f64],
+    ) -> Observed {
+        let ax = if self.effects().sensors.reads_ax() {
+            let (t, ax) = grid_ax(drive);
+            let mut nodes = Interpolator::new(&t);
+            response.t.iter().map(|&s| nodes.at(&ax, s)).collect()
+        } else {
+            Vec::new()
+        };
+        self.observe_with_ax(response, &ax, times)
+    }
+
+    /// [`Augmented::observe`] with the longitudinal acceleration `ax` at
+    /// the response's times (empty where the sensors do not read it,
+    /// [`crate::vehicle::Sensors::reads_ax`]).
+    pub(crate) fn observe_with_ax(
+        &self,
+        response: &TimeHistory,
+        ax: &[f64],
+        times: &[f64],
+    ) -> Observed {
         let h = response;
         let [yaw_rate, ay, beta] =
             self.effects()
                 .sensors
-                .seen(&h.t, &h.speed, &h.yaw_rate, &h.ay, &h.beta);
+                .seen(&h.t, &h.speed, ax, &h.yaw_rate, &h.ay, &h.beta);
         let at = |ys: &[f64]| -> Vec<f64> {
             let mut nodes = Interpolator::new(&h.t);
             times.iter().map(|&t| nodes.at(ys, t)).collect()
@@ -174,6 +213,33 @@ impl Augmented {
             roll: at(&response.roll),
         }
     }
+}
+
+/// The longitudinal acceleration `drive` gives the model at its grid
+/// times (the first stage of every step is at its grid time, [`Drive`]'s
+/// layout for either method): (times, ax), m/s².
+pub(crate) fn grid_ax(drive: &Drive) -> (Vec<f64>, Vec<f64>) {
+    let (times, ax) = (drive.stage_times(), drive.ax_samples());
+    let per = (ax.len() - 1) / drive.steps.max(1);
+    (0..=drive.steps)
+        .map(|i| (times[per * i], ax[per * i]))
+        .unzip()
+}
+
+/// The rate of `speed` over `t` by central differences (one-sided at the
+/// ends), m/s².
+fn speed_rate(t: &[f64], speed: &[f64]) -> Vec<f64> {
+    let n = t.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
+            if b > a {
+                (speed[b] - speed[a]) / (t[b] - t[a])
+            } else {
+                0.0
+            }
+        })
+        .collect()
 }
 
 /// Simulated measurements at a run's sample times.

@@ -59,6 +59,11 @@ pub struct Prepared {
     pub(crate) times: Vec<f64>,
     /// Measured channels at those times.
     pub(crate) measured: Vec<(Channel, Vec<f64>)>,
+    /// The longitudinal acceleration the replays read at the grid times
+    /// ([`crate::diagnose::model::grid_ax`] of the RK4 drive): what a
+    /// yawed accelerometer mixes into ay, one source for plain and dual
+    /// replays alike.
+    ax_grid: Arc<(Vec<f64>, Vec<f64>)>,
     /// Initial sideslip (measured, else 0) and yaw rate.
     pub(crate) start: (f64, f64),
     /// The time they are read at, s (the first residual's where the
@@ -133,9 +138,11 @@ impl Prepared {
             bank: run.bank.clone(),
             speeds,
         };
+        let drive = inputs.drive(step, FixedStep::Rk4);
         Self {
             name: run.path.display().to_string(),
-            drive: inputs.drive(step, FixedStep::Rk4),
+            ax_grid: Arc::new(super::grid_ax(&drive)),
+            drive,
             stiff: Default::default(),
             inputs: std::sync::Arc::new(inputs),
             times,
@@ -205,13 +212,35 @@ impl Prepared {
     /// model's sensor offsets) and returns what the sensors would read at
     /// the residual times.
     pub(crate) fn observe(&self, model: &Augmented) -> Observed {
-        model.observe(&self.replay(model), &self.times)
+        self.observe_at(model, &self.times)
     }
 
     /// [`Prepared::observe`] at times `t` of the replay's span, scored or
     /// not (a run's every sample: a designed run logged from a replay).
     pub(crate) fn observe_at(&self, model: &Augmented, t: &[f64]) -> Observed {
-        model.observe(&self.replay(model), t)
+        self.seen(model, &self.replay(model), t)
+    }
+
+    /// What `model`'s sensors read of its replay `history` at times `t`.
+    fn seen(&self, model: &Augmented, history: &TimeHistory, t: &[f64]) -> Observed {
+        let ax = self.ax_for(&model.effects().sensors, &history.t);
+        model.observe_with_ax(history, &ax, t)
+    }
+
+    /// The longitudinal acceleration at times `t` the replays read, m/s²,
+    /// where `sensors` read it ([`crate::vehicle::Sensors::reads_ax`];
+    /// else none).
+    pub(crate) fn ax_for<T: crate::scalar::Scalar>(
+        &self,
+        sensors: &crate::vehicle::Sensors<T>,
+        t: &[f64],
+    ) -> Vec<f64> {
+        if !sensors.reads_ax() {
+            return Vec::new();
+        }
+        let (grid, ax) = &*self.ax_grid;
+        let mut nodes = crate::manoeuvre::Interpolator::new(grid);
+        t.iter().map(|&s| nodes.at(ax, s)).collect()
     }
 
     /// The replay's start (sideslip, yaw rate): the first measured state less
@@ -274,7 +303,7 @@ impl Prepared {
             })
             .or_else(|| shared.and_then(|(s, i)| s.find(i, model, start)));
         if let Some(l) = found {
-            let observed = model.observe(&l.history, &self.times);
+            let observed = self.seen(model, &l.history, &self.times);
             // The last slot holds the latest evaluation's replay, reused or
             // not: that is what [`ReplayCache::keep_last`] keeps.
             *cache.last.lock().unwrap_or_else(|e| e.into_inner()) = Some(l);
@@ -283,7 +312,7 @@ impl Prepared {
         // Integrated without the lock: evaluations in parallel (a parallel
         // swarm) do not wait for each other, the last one stored wins.
         let history = self.replay(model);
-        let observed = model.observe(&history, &self.times);
+        let observed = self.seen(model, &history, &self.times);
         *cache.last.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::new(LastReplay {
             model: model.clone(),
             start,

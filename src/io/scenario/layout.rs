@@ -16,13 +16,14 @@ use std::path::Path;
 
 /// `diagnose`'s effects of the measurement, not of the car (named from
 /// the effect library, so a renamed effect cannot leave this list behind).
-pub(crate) const MEASUREMENT: [EffectKind; 6] = [
+pub(crate) const MEASUREMENT: [EffectKind; 7] = [
     EffectKind::SensorDelay,
     EffectKind::SensorBias,
     EffectKind::AccelerometerRoll,
     EffectKind::AccelerometerPosition,
     EffectKind::SteerPath,
     EffectKind::SteeringRatio,
+    EffectKind::MountYaw,
 ];
 
 /// `diagnose`'s effects whose numbers a scenario gives under another key.

@@ -12,44 +12,17 @@ use super::shard::{
     plural, read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::diagnose::effects::{joined, EffectKind};
-use crate::diagnose::VerdictKind;
 use crate::error::{
     CampaignFileProblem, Error, InputError, InputProblem, OptionsError, SelectionProblem,
 };
 use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json, OutputLock};
-use serde::{Deserialize, Serialize};
-use std::path::{Path, PathBuf};
 
-/// One campaign's line of the fleet table.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct FleetRow {
-    /// The campaign's file or folder name in the batch folder.
-    pub campaign: String,
-    /// Runs replayed (pieces after cleaning), 0 when it failed.
-    pub runs: usize,
-    /// Effects of the verdict (empty: no gap, or none explains it).
-    pub verdict: Vec<EffectKind>,
-    /// The verdict's case (None: failed).
-    #[serde(default)]
-    pub kind: Option<VerdictKind>,
-    /// Held-out error J of the base model (None: failed).
-    pub heldout_error_before: Option<f64>,
-    /// Held-out J with the verdict's effects (the base model's without).
-    pub heldout_error_after: Option<f64>,
-    /// J of the noise alone.
-    pub noise_level: Option<f64>,
-    /// The best single candidate and its share of the gap removed, %.
-    pub best: Option<(EffectKind, f64)>,
-    /// The verdict in words, or why the campaign failed.
-    pub statement: String,
-    /// Whether it failed (not read or not diagnosed).
-    pub failed: bool,
-    /// The folder its run files were read from, canonical: campaigns
-    /// that share it are one campaign's runs, counted once.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub runs_folder: Option<String>,
-}
+mod rows;
+pub use rows::FleetRow;
+use rows::{distinct_diagnosed, first_of_its_runs, runs_digest, runs_folder_of, shared_runs_notes};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
 
 /// An effect across the fleet.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -77,6 +50,9 @@ pub struct FleetReport {
     /// them and do not take it).
     #[serde(skip)]
     pub lock: OutputLock,
+    /// What the terminal says of the inputs (shard files given twice).
+    #[serde(skip)]
+    pub notes: Vec<String>,
 }
 
 /// The fleet table's files in `out_dir`, held for this run.
@@ -190,8 +166,12 @@ pub fn run_batch(
         match done {
             Ok(r) => {
                 let runs_folder = runs_folder_of(&all[i]);
+                let runs_digest = runs_folder
+                    .as_deref()
+                    .and_then(|f| runs_digest(Path::new(f)));
                 rows.push(FleetRow {
                     runs_folder,
+                    runs_digest,
                     ..row_of(&name, &r)
                 });
                 reports.push(r);
@@ -222,6 +202,7 @@ fn failed_row(name: String, e: &Error) -> FleetRow {
         statement: e.to_string(),
         failed: true,
         runs_folder: None,
+        runs_digest: None,
     }
 }
 
@@ -273,7 +254,9 @@ pub enum BatchOutcome {
 
 /// The fleet table of a set of `diagnose --batch --shard` files.
 pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Error> {
-    let (dir, _, rows) = read_shards::<FleetRow>(ShardJob::Diagnose, shards)?;
+    let read = read_shards::<FleetRow>(ShardJob::Diagnose, shards)?;
+    let note = read.note();
+    let (dir, rows) = (read.input, read.results);
     let now: Vec<String> = campaigns(&dir)?.iter().map(|p| name_of(p)).collect();
     let listed: Vec<&String> = rows.iter().map(|r| &r.campaign).collect();
     if now.iter().collect::<Vec<_>>() != listed {
@@ -284,7 +267,8 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
         Path::to_path_buf,
     );
     let lock = fleet_lock(&out_dir)?;
-    let report = fleet(rows, out_dir, lock);
+    let mut report = fleet(rows, out_dir, lock);
+    report.notes.extend(note);
     report.write()?;
     Ok(report)
 }
@@ -309,23 +293,8 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         statement: d.verdict.statement(),
         failed: false,
         runs_folder: None,
+        runs_digest: None,
     }
-}
-
-/// The canonical folder of a campaign's run files (`None`: it has none,
-/// or it does not load). Three campaign files naming one `runs` folder
-/// were counted as three campaigns agreeing on a verdict.
-fn runs_folder_of(campaign: &Path) -> Option<String> {
-    let c = crate::io::campaign::load_campaign(campaign).ok()?;
-    let folder = c.runs_folder?.canonicalize().ok()?;
-    Some(folder.display().to_string())
-}
-
-/// Whether row `i` is the first of the rows reading its run files (a row
-/// with no known folder always is).
-fn first_of_its_runs(rows: &[FleetRow], i: usize) -> bool {
-    let r = &rows[i];
-    r.runs_folder.is_none() || rows[..i].iter().all(|p| p.runs_folder != r.runs_folder)
 }
 
 /// The report of the rows: the effects that recur, most verdicts first.
@@ -357,6 +326,7 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf, lock: OutputLock) -> FleetR
         recurring,
         out_dir,
         lock,
+        notes: Vec::new(),
     }
 }
 
@@ -432,7 +402,7 @@ impl FleetReport {
                 ]
             })
             .collect();
-        let n = self.distinct_diagnosed();
+        let n = distinct_diagnosed(&self.campaigns);
         let recurring: Vec<Vec<Cell>> = self
             .recurring
             .iter()
@@ -489,37 +459,6 @@ impl FleetReport {
         })
     }
 
-    /// The campaigns diagnosed, those reading the same run files counted
-    /// once: what the recurring effects are counted out of.
-    fn distinct_diagnosed(&self) -> usize {
-        let rows = &self.campaigns;
-        (0..rows.len())
-            .filter(|&i| !rows[i].failed && first_of_its_runs(rows, i))
-            .count()
-    }
-
-    /// A note for each set of campaigns that read the same run files.
-    fn shared_runs_notes(&self) -> Vec<String> {
-        let rows = &self.campaigns;
-        (0..rows.len())
-            .filter(|&i| first_of_its_runs(rows, i))
-            .filter_map(|i| {
-                let folder = rows[i].runs_folder.as_ref()?;
-                let same: Vec<&str> = rows
-                    .iter()
-                    .filter(|r| r.runs_folder.as_ref() == Some(folder))
-                    .map(|r| r.campaign.as_str())
-                    .collect();
-                (same.len() > 1).then(|| {
-                    format!(
-                        "  note: {} read the same run files ({folder}): one campaign's runs, counted once below",
-                        same.join(", ")
-                    )
-                })
-            })
-            .collect()
-    }
-
     /// The table in lines of text.
     pub fn summary(&self) -> Vec<String> {
         let (n, diagnosed) = (self.campaigns.len(), self.diagnosed());
@@ -552,8 +491,9 @@ impl FleetReport {
         }
         // Out of the campaigns diagnosed: a failed one has no verdict; of
         // those reading the same run files, one.
-        out.extend(self.shared_runs_notes());
-        let n = self.distinct_diagnosed();
+        out.extend(self.notes.iter().map(|n| format!("  note: {n}")));
+        out.extend(shared_runs_notes(&self.campaigns));
+        let n = distinct_diagnosed(&self.campaigns);
         for e in &self.recurring {
             out.push(format!(
                 "  {}: in the verdict of {} of {n} diagnosed campaigns, the best single candidate in {} of {n}",

@@ -266,13 +266,89 @@ fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, Error> {
     })
 }
 
+/// The shard files of one run, read ([`read_shards`]).
+pub(crate) struct Shards<T> {
+    /// The job's input file (or batch folder).
+    pub input: PathBuf,
+    /// Its units of work.
+    pub units: usize,
+    /// Every unit's result, in unit order.
+    pub results: Vec<T>,
+    /// Files given that are byte for byte another one given (a copy under
+    /// another name): read once, each with the one it repeats.
+    pub identical: Copies,
+}
+
+/// Files that copy another file given, each with the one it repeats.
+pub(crate) type Copies = Vec<(PathBuf, PathBuf)>;
+
+impl<T> Shards<T> {
+    /// The note on the shard files read once, where there are any:
+    /// "2 shard files identical to others given: counted once: a = b, c = b".
+    pub fn note(&self) -> Option<String> {
+        (!self.identical.is_empty()).then(|| {
+            let pairs: Vec<String> = self
+                .identical
+                .iter()
+                .map(|(copy, first)| format!("{} = {}", copy.display(), first.display()))
+                .collect();
+            format!(
+                "{} identical, byte for byte, to {} given before: counted once: {}",
+                plural(self.identical.len(), "shard file", "shard files"),
+                match self.identical.len() {
+                    1 => "another",
+                    _ => "others",
+                },
+                pairs.join(", ")
+            )
+        })
+    }
+}
+
+/// A 64-bit FNV-1a digest of `bytes` (Fowler, Noll & Vo): equal for equal
+/// bytes, so that a file given twice under two names (a copied shard, a
+/// copied runs folder) is read once. Not a cryptographic hash: it tells
+/// copies apart from files that differ, not from a forgery.
+pub(crate) fn digest(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h: u64, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// `paths` without the files whose bytes repeat an earlier, other file's
+/// (a copy), and each left out with the earlier one.
+fn distinct_files(paths: &[PathBuf]) -> Result<(Vec<PathBuf>, Copies), Error> {
+    let mut kept: Vec<(u64, Vec<u8>, PathBuf)> = Vec::new();
+    let mut identical = Vec::new();
+    for p in paths {
+        let bytes = std::fs::read(p).map_err(|source| InputError::Io {
+            path: p.clone(),
+            source,
+        })?;
+        let d = digest(&bytes);
+        // The digest finds the candidate, the bytes decide; one file named
+        // twice is no copy, and is refused as a shard given twice.
+        let same_file = |q: &PathBuf| q.canonicalize().ok() == p.canonicalize().ok();
+        match kept
+            .iter()
+            .find(|(k, b, q)| *k == d && *b == bytes && !same_file(q))
+        {
+            Some((_, _, first)) => identical.push((p.clone(), first.clone())),
+            None => kept.push((d, bytes, p.clone())),
+        }
+    }
+    Ok((kept.into_iter().map(|k| k.2).collect(), identical))
+}
+
 /// Reads the shard files of one run: all of one job, one input, one N,
-/// every shard exactly once, and inputs unchanged since. Returns the input,
-/// the unit count and every unit's result in unit order.
+/// every shard exactly once (a file byte for byte another one given is
+/// read once, and said: [`Shards::note`]), and inputs unchanged since.
 pub(crate) fn read_shards<T: DeserializeOwned>(
     job: ShardJob,
-    paths: &[PathBuf],
-) -> Result<(PathBuf, usize, Vec<T>), Error> {
+    given: &[PathBuf],
+) -> Result<Shards<T>, Error> {
+    let (paths, identical) = distinct_files(given)?;
+    let paths = &paths[..];
     let files: Vec<ShardFile<T>> = paths
         .iter()
         .map(|p| read_json(p))
@@ -341,12 +417,25 @@ pub(crate) fn read_shards<T: DeserializeOwned>(
         .into_iter()
         .map(|r| r.expect("every unit is owned by exactly one shard"))
         .collect();
-    Ok((input, units, results))
+    Ok(Shards {
+        input,
+        units,
+        results,
+        identical,
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// FNV-1a's published values (Fowler, Noll & Vo's test vectors).
+    #[test]
+    fn the_digest_is_fnv1a() {
+        assert_eq!(digest(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(digest(b"a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(digest(b"foobar"), 0x8594_4171_f739_67e8);
+    }
 
     #[test]
     fn shards_partition_the_units_and_parse_from_k_over_n() {

@@ -17,7 +17,7 @@ pub(crate) mod inverse;
 pub(crate) mod rbf;
 pub(crate) mod response;
 
-pub use response::{NotHandling, Response};
+pub use response::{NotHandling, Response, SideslipEnd};
 
 use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;

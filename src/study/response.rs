@@ -39,14 +39,14 @@ pub enum Response {
     /// The sideslip passes [`SLIDING_SIDESLIP`] (10°) on tyres with
     /// a friction limit: the car slides past its grip. Carries the
     /// sideslip at the end of the run, rad, and whether it had settled.
-    Sliding(f64, bool),
+    Sliding(f64, SideslipEnd),
     /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°) on tyres with
     /// no friction limit, below the critical speed: a steady turn, but at a
     /// sideslip far outside the range where a linear tyre stands for a real
     /// one (Pacejka 2012, §1.3). Carries the sideslip at the end of the
     /// run, rad, and whether it had settled (a slow linear car is still
     /// on its way at the end of an 8 s step: −12.5° there, −14.4° steady).
-    LargeSideslip(f64, bool),
+    LargeSideslip(f64, SideslipEnd),
     /// The response has not settled by the end of the step (the yaw rate,
     /// lateral acceleration or sideslip still moving: a car diverging
     /// from its steady turn).
@@ -67,8 +67,8 @@ impl Response {
             return Response::NoSteadyState;
         };
         match m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
-            Some(beta) if unlimited => Response::LargeSideslip(beta, m.settled),
-            Some(beta) => Response::Sliding(beta, m.settled),
+            Some(beta) if unlimited => Response::LargeSideslip(beta, SideslipEnd::of(m.settled)),
+            Some(beta) => Response::Sliding(beta, SideslipEnd::of(m.settled)),
             None if !m.settled => match m.settling.only_converging() {
                 Some(heads) => Response::StillSettling(heads),
                 None => Response::NotSettled,
@@ -114,13 +114,13 @@ impl Response {
             Response::Unstable(critical, speed) => Some(format!(
                 "unstable: oversteering (K < 0) at {speed:.2} m/s, past its critical speed sqrt(-l/K) = {critical:.2} m/s; the tyres have no friction limit, so the response diverges without bound; no handling response, metrics left empty"
             )),
-            Response::Sliding(beta, settled) => Some(format!(
+            Response::Sliding(beta, end) => Some(format!(
                 "{}, beyond 10 deg: the car slides past its grip; no handling response, metrics left empty",
-                sideslip_words(beta, settled)
+                end.words(beta)
             )),
-            Response::LargeSideslip(beta, settled) => Some(format!(
+            Response::LargeSideslip(beta, end) => Some(format!(
                 "{}, beyond 10 deg, on tyres with no friction limit: far outside the range where a linear tyre stands for a real one; no handling response, metrics left empty",
-                sideslip_words(beta, settled)
+                end.words(beta)
             )),
             Response::NotSettled => Some(
                 "not settled by the end of the step (a response slower than the step is long, or one that diverges from a steady turn: a longer step tells them apart); no handling response, metrics left empty"
@@ -131,16 +131,42 @@ impl Response {
     }
 }
 
-/// A sideslip read at the end of a run, called steady only where it had
-/// settled: one still moving is no steady value.
-fn sideslip_words(beta: f64, settled: bool) -> String {
-    match settled {
-        true => format!("steady sideslip {:.1} deg", beta.to_degrees()),
-        false => format!(
-            "sideslip {:.1} deg at the end of the run, still moving (no steady value)",
-            beta.to_degrees()
-        ),
+/// Whether a sideslip read at the end of a run had settled: one still
+/// moving is no steady value. One set of words for `study.csv`'s notes,
+/// the terminal's count and `summary.json`'s (`sliding_still_moving`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SideslipEnd {
+    /// Settled: a steady sideslip.
+    Steady,
+    /// Still moving at the end of the run: no steady value.
+    StillMoving,
+}
+
+impl SideslipEnd {
+    /// The end of a run whose metrics had (`true`) or had not settled.
+    pub fn of(settled: bool) -> Self {
+        match settled {
+            true => SideslipEnd::Steady,
+            false => SideslipEnd::StillMoving,
+        }
     }
+
+    /// A sideslip `beta` (rad) read at the end of the run, in words.
+    pub fn words(self, beta: f64) -> String {
+        match self {
+            SideslipEnd::Steady => format!("steady sideslip {:.1} deg", beta.to_degrees()),
+            SideslipEnd::StillMoving => format!(
+                "sideslip {:.1} deg at the end of the run, {}",
+                beta.to_degrees(),
+                SideslipEnd::STILL_MOVING
+            ),
+        }
+    }
+
+    /// The words of a sideslip still moving, in the notes and the
+    /// terminal's count alike.
+    pub const STILL_MOVING: &'static str = "still moving (no steady value)";
 }
 
 impl Sample {
@@ -164,8 +190,13 @@ pub struct NotHandling {
     pub lowest_critical_speed: Option<f64>,
     /// Beyond 10° of steady sideslip on tyres with no friction limit.
     pub large_sideslip: usize,
-    /// Sliding (steady sideslip beyond 10°).
+    /// Sliding (sideslip beyond 10° on tyres with a friction limit).
     pub sliding: usize,
+    /// Of the sliding ones, those still moving at the end of the run
+    /// ([`SideslipEnd::StillMoving`]: no steady value).
+    pub sliding_still_moving: usize,
+    /// Of the large-sideslip ones, those still moving at the end of the run.
+    pub large_sideslip_still_moving: usize,
     /// Not settled by the end of the step (and not sliding).
     pub not_settled: usize,
     /// Without a steady state.
@@ -173,7 +204,8 @@ pub struct NotHandling {
     /// Handling responses still converging at the step's end (kept; not
     /// in the total of those left out).
     pub still_settling: usize,
-    /// The largest steady sideslip of the sliding ones, rad (signed).
+    /// The largest sideslip at the end of the run of the sliding ones, rad
+    /// (signed).
     pub largest_sideslip: Option<f64>,
 }
 
@@ -192,13 +224,17 @@ impl NotHandling {
                         .map_or(critical, |c| c.min(critical));
                     n.lowest_critical_speed = Some(low);
                 }
-                Response::Sliding(beta, _) => {
+                Response::Sliding(beta, end) => {
                     n.sliding += 1;
+                    n.sliding_still_moving += usize::from(end == SideslipEnd::StillMoving);
                     if n.largest_sideslip.is_none_or(|b: f64| beta.abs() > b.abs()) {
                         n.largest_sideslip = Some(beta);
                     }
                 }
-                Response::LargeSideslip(..) => n.large_sideslip += 1,
+                Response::LargeSideslip(_, end) => {
+                    n.large_sideslip += 1;
+                    n.large_sideslip_still_moving += usize::from(end == SideslipEnd::StillMoving);
+                }
                 Response::NotSettled => n.not_settled += 1,
                 Response::NoSteadyState => n.without_steady_state += 1,
             }

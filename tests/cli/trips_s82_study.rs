@@ -22,7 +22,7 @@ fn a_study_flags_counts_and_says_the_combinations_that_slide() {
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("  6 of 47 combinations are no handling response: 6 slide (steady sideslip beyond 10°, up to -58.2°); their metrics are left out of the maps, the network and the inverse"),
+        said.contains("  6 of 47 combinations are no handling response: 6 slide (sideslip beyond 10°, up to -58.2° at the end of the run, still moving (no steady value)); their metrics are left out of the maps, the network and the inverse"),
         "{said}"
     );
     let out = dir.path().join("out");

@@ -4,9 +4,10 @@
 //! [`crate::equilibria::phase`]) and stability maps over two swept
 //! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
 
+use super::slices::{axis_label, display, held_words, title_tail, Diagram};
 use crate::equilibria::bifurcation::{Axis, Bifurcation, BifurcationKind};
 use crate::equilibria::phase::{self, Manifold};
-use crate::equilibria::sweep::{axis_lines, Grid, SweepResult};
+use crate::equilibria::sweep::SweepResult;
 use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
 use crate::error::Error;
 use crate::report::branches::{self, At};
@@ -19,23 +20,6 @@ use std::path::Path;
 /// Palette index of the fold markers (grey, apart from the stability
 /// colours).
 const FOLD: usize = 7;
-
-/// A parameter in display units and its label.
-fn display(axis: Axis, v: f64) -> f64 {
-    match axis {
-        Axis::Steer => v.to_degrees(),
-        Axis::Friction => v,
-        Axis::Speed => v * 3.6,
-    }
-}
-
-fn axis_label(axis: Axis) -> &'static str {
-    match axis {
-        Axis::Steer => "steer δ [deg]",
-        Axis::Friction => "friction μ [-]",
-        Axis::Speed => "speed u [km/h]",
-    }
-}
 
 fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
     eqs.iter()
@@ -51,7 +35,7 @@ const BRANCH_GAP: f64 = 0.35;
 /// branch that ends there (branches move fast near a fold).
 const FOLD_GAP: f64 = 0.8;
 
-/// What a branch diagram draws along the first line of an axis: the
+/// What a branch diagram draws along its line: the
 /// equilibria in the box at each grid value, the links between
 /// neighbouring values that make branches, and the branch ends joined to
 /// the fold or pitchfork where they meet.
@@ -66,14 +50,14 @@ pub(super) struct Drawn<'a> {
     pub joins: Vec<(At, &'a Bifurcation)>,
 }
 
-/// The branches of the first line of `axis` ([`Drawn`]). The equilibria
+/// The branches of the line of diagram `d` ([`Drawn`]). The equilibria
 /// that meet at a fold (two) or pitchfork (the outer two of three) are
 /// chosen first, on the side of it that has them (more equilibria in all),
 /// and kept out of the matching across its interval ([`branches::link`]);
 /// a saddle is linked to a node or focus only across an interval that
 /// holds a zero eigenvalue or pitchfork.
-pub(super) fn drawn<'a>(res: &'a SweepResult, axis: Axis, bx: &SearchBox) -> Drawn<'a> {
-    let line = &axis_lines(&res.grid, axis)[0];
+pub(super) fn drawn<'a>(res: &'a SweepResult, d: &Diagram, bx: &SearchBox) -> Drawn<'a> {
+    let (axis, line) = (d.axis, &d.line);
     let params: Vec<f64> = line
         .iter()
         .map(|&i| axis.get(&res.points[i].condition))
@@ -138,12 +122,12 @@ pub(super) fn drawn<'a>(res: &'a SweepResult, axis: Axis, bx: &SearchBox) -> Dra
     }
 }
 
-/// The segments [`branch_diagram`] draws along `axis`, as rows of
-/// `branches_<axis>.csv` (SI: rad, rad/s, m/s): a link between
+/// The segments [`branch_diagram`] draws for diagram `dg`, as rows of
+/// its `.csv` (SI: rad, rad/s, m/s): a link between
 /// equilibria of one branch at neighbouring grid values, or a branch end
 /// joined to the fold or pitchfork where it ends (`to_kind` names it).
-pub(super) fn branch_rows(res: &SweepResult, axis: Axis, bx: &SearchBox) -> Vec<Vec<String>> {
-    let d = drawn(res, axis, bx);
+pub(super) fn branch_rows(res: &SweepResult, dg: &Diagram, bx: &SearchBox) -> Vec<Vec<String>> {
+    let (axis, d) = (dg.axis, drawn(res, dg, bx));
     let point = |(c, k): At| {
         let e = &d.eqs[c][k];
         [d.params[c], e.beta, e.yaw_rate].map(|v| v.to_string())
@@ -166,59 +150,20 @@ pub(super) fn branch_rows(res: &SweepResult, axis: Axis, bx: &SearchBox) -> Vec<
     links.chain(joins).collect()
 }
 
-/// The other swept parameters' values along the line drawn (the grid's
-/// first), in display units, with how many each sweeps: a branch diagram
-/// of a two-axis sweep is one slice of it, and says which
-/// (`stability_map.png` holds the whole grid). Empty for a one-axis sweep.
-fn slice(grid: &Grid, axis: Axis, c: &Condition) -> String {
-    let held: Vec<String> = grid
-        .varying()
-        .into_iter()
-        .filter(|&a| a != axis)
-        .map(|a| {
-            let n = match a {
-                Axis::Steer => grid.steer.len(),
-                Axis::Friction => grid.friction.len(),
-                Axis::Speed => grid.speed.len(),
-            };
-            let unit = axis_label(a)
-                .split('[')
-                .nth(1)
-                .unwrap_or("]")
-                .trim_end_matches(']');
-            let unit = if unit == "-" {
-                String::new()
-            } else {
-                format!(" {unit}")
-            };
-            format!(
-                "{} {}{unit} (the first of {n})",
-                a.name(),
-                (display(a, a.get(c)) * 1e6).round() / 1e6
-            )
-        })
-        .collect();
-    match held.is_empty() {
-        true => String::new(),
-        false => format!(", at {}", held.join(", ")),
-    }
-}
-
-/// β and r of the equilibria against the swept parameter, along the first
-/// line of `axis`: equilibria of one branch joined (nearest neighbours in
+/// β and r of the equilibria against the swept parameter, along the line
+/// of diagram `dg` (`k` of `lines` along its axis): equilibria of one branch joined (nearest neighbours in
 /// the box-scaled plane, [`branches::link`]), each segment and point in the
 /// style of its stability ([`Class`]), folds joined to the branch ends that
 /// meet there.
-pub fn branch_diagram(
+pub(super) fn branch_diagram(
     res: &SweepResult,
-    axis: Axis,
+    (dg, k, lines): (&Diagram, usize, usize),
     bx: &SearchBox,
     path: &Path,
 ) -> Result<(), Error> {
-    let line = &axis_lines(&res.grid, axis)[0];
-    let held = slice(&res.grid, axis, &res.points[line[0]].condition);
-    let (mut beta, mut yaw) = branch_panels(axis, &held);
-    let d = drawn(res, axis, bx);
+    let (axis, line) = (dg.axis, &dg.line);
+    let (mut beta, mut yaw) = branch_panels(axis, &title_tail(dg, k, lines));
+    let d = drawn(res, dg, bx);
     let params: Vec<f64> = d.params.iter().map(|&p| display(axis, p)).collect();
     let eqs = &d.eqs;
     let class = |(c, k): At| eqs[c][k].stability.kind.class();
@@ -470,7 +415,32 @@ fn equilibrium_markers(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Series> {
     series
 }
 
-/// Stability map over two swept axes (the third at its first value).
+/// The bifurcations located along either axis of a stability map over
+/// `axes` (the third, if any, at its value in `first`), as grey discs: a
+/// map's cells change only where the stable set does, and a pitchfork or a
+/// Hopf point does not change it.
+fn map_bifurcations(res: &SweepResult, axes: (Axis, Axis), first: &Condition) -> Option<Series> {
+    let (ax, ay) = axes;
+    let on: Vec<&Bifurcation> = res
+        .bifurcations
+        .iter()
+        .filter(|b| b.axis == ax || b.axis == ay)
+        .filter(|b| {
+            [Axis::Steer, Axis::Friction, Axis::Speed]
+                .into_iter()
+                .filter(|&o| o != ax && o != ay)
+                .all(|o| (o.get(&b.at) - o.get(first)).abs() < 1e-12)
+        })
+        .collect();
+    (!on.is_empty()).then(|| {
+        let x: Vec<f64> = on.iter().map(|b| display(ax, ax.get(&b.at))).collect();
+        let y: Vec<f64> = on.iter().map(|b| display(ay, ay.get(&b.at))).collect();
+        Series::line("bifurcations located", &x, &y, FOLD).styled(Style::Points(7))
+    })
+}
+
+/// Stability map over two swept axes (the third at its first value), the
+/// bifurcations along them marked.
 pub fn stability_map(
     res: &SweepResult,
     ax: Axis,
@@ -532,8 +502,16 @@ pub fn stability_map(
             Series::line(label, &x, &y, *color).styled(Style::Cells(dx, dy))
         })
         .collect();
+    let mut series: Vec<Series> = series;
+    series.extend(map_bifurcations(res, (ax, ay), &first));
     let panel = Panel {
-        title: "stability map (equilibria in the search box)".into(),
+        title: format!(
+            "stability map (equilibria in the search box){}",
+            others
+                .iter()
+                .map(|&o| format!(", at {}", held_words(o, &first)))
+                .collect::<String>()
+        ),
         x_label: axis_label(ax).into(),
         y_label: axis_label(ay).into(),
         series,
@@ -546,39 +524,4 @@ pub fn stability_map(
         row_height: 700,
     }
     .save(path)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A two-axis sweep's branch diagram names the slice it draws
-    /// (fresh-eyes round 18: the steer of the slice drawn was said
-    /// nowhere); a one-axis sweep's title has nothing to add.
-    #[test]
-    fn a_branch_diagram_of_a_two_axis_sweep_names_its_slice() {
-        let grid = Grid {
-            steer: vec![0.0, 0.01],
-            friction: vec![1.0],
-            speed: vec![30.0, 31.0, 32.0],
-        };
-        let c = Condition {
-            steer: 0.0,
-            friction: 1.0,
-            speed: 30.0,
-        };
-        assert_eq!(
-            slice(&grid, Axis::Speed, &c),
-            ", at steer 0 deg (the first of 2)"
-        );
-        assert_eq!(
-            slice(&grid, Axis::Steer, &c),
-            ", at speed 108 km/h (the first of 3)"
-        );
-        let one = Grid {
-            steer: vec![0.0],
-            ..grid
-        };
-        assert_eq!(slice(&one, Axis::Speed, &c), "");
-    }
 }

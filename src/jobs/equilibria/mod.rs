@@ -6,6 +6,7 @@
 
 mod figures;
 mod outputs;
+mod slices;
 
 use crate::equilibria::bifurcation::Bifurcation;
 use crate::equilibria::pso::{Fitness, PsoSearch};
@@ -165,8 +166,10 @@ pub fn run_shard(path: &Path, shard: Shard, out: Option<&Path>) -> Result<ShardR
 /// of the unsharded run, byte for byte.
 pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<EquilibriaReport, Error> {
     let t0 = Instant::now();
-    let (input, _, lines) = read_shards::<Vec<sweep::PointResult>>(ShardJob::Equilibria, shards)?;
-    let sw = load_sweep(&input)?;
+    let read = read_shards::<Vec<sweep::PointResult>>(ShardJob::Equilibria, shards)?;
+    let mut sw = load_sweep(&read.input)?;
+    sw.notes.extend(read.note());
+    let (input, lines) = (read.input, read.results);
     let (out_dir, lock) = output_folder(&sw, out)?;
     let res = sweep::assemble(&sw.model, &sw.grid, lines, sw.report.bifurcations);
     if res.points.len() != sw.grid.len() {
@@ -274,6 +277,9 @@ impl EquilibriaReport {
             out.push(bifurcation_line(b));
             out.extend(critical_speed_line(&self.sweep.model, b));
         }
+        if sw.report.plots {
+            out.extend(slices::figure_lines(&sw.grid));
+        }
         out.extend(
             self.leftovers
                 .lines("equilibria")
@@ -330,22 +336,15 @@ impl EquilibriaReport {
         if sw.report.plots {
             let dir = &self.out_dir;
             for axis in sw.grid.varying() {
-                let file = dir.join(format!("branches_{}.png", axis.name()));
-                figures::branch_diagram(r, axis, &sw.search_box, &file)?;
-                let a = axis.name();
-                let header = [
-                    format!("from_{a}"),
-                    "from_beta".into(),
-                    "from_yaw_rate".into(),
-                    "from_kind".into(),
-                    format!("to_{a}"),
-                    "to_beta".into(),
-                    "to_yaw_rate".into(),
-                    "to_kind".into(),
-                ];
-                let header: Vec<&str> = header.iter().map(String::as_str).collect();
-                let rows = figures::branch_rows(r, axis, &sw.search_box);
-                write_csv(&dir.join(format!("branches_{a}.csv")), &header, rows)?;
+                let (diagrams, lines) = slices::diagrams(&sw.grid, axis);
+                for (k, d) in diagrams.iter().enumerate() {
+                    let png = dir.join(format!("{}.png", d.stem));
+                    figures::branch_diagram(r, (d, k, lines), &sw.search_box, &png)?;
+                    let rows = figures::branch_rows(r, d, &sw.search_box);
+                    let header = branch_header(axis);
+                    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+                    write_csv(&dir.join(format!("{}.csv", d.stem)), &header, rows)?;
+                }
             }
             let v = sw.grid.varying();
             if v.len() >= 2 {
@@ -360,6 +359,21 @@ impl EquilibriaReport {
         }
         self.leftovers.remove()
     }
+}
+
+/// The header of a branch diagram's `.csv` along `axis`.
+fn branch_header(axis: crate::equilibria::bifurcation::Axis) -> Vec<String> {
+    let a = axis.name();
+    vec![
+        format!("from_{a}"),
+        "from_beta".into(),
+        "from_yaw_rate".into(),
+        "from_kind".into(),
+        format!("to_{a}"),
+        "to_beta".into(),
+        "to_yaw_rate".into(),
+        "to_kind".into(),
+    ]
 }
 
 const EQUILIBRIA_HEADER: [&str; 14] = [

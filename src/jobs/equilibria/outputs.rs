@@ -31,9 +31,11 @@ impl EquilibriaReport {
         let sw = &self.sweep;
         if sw.report.plots {
             let v = sw.grid.varying();
-            for axis in &v {
-                files.push(dir.join(format!("branches_{}.png", axis.name())));
-                files.push(dir.join(format!("branches_{}.csv", axis.name())));
+            for &axis in &v {
+                for d in super::slices::diagrams(&sw.grid, axis).0 {
+                    files.push(dir.join(format!("{}.png", d.stem)));
+                    files.push(dir.join(format!("{}.csv", d.stem)));
+                }
             }
             if v.len() >= 2 {
                 files.push(dir.join("stability_map.png"));

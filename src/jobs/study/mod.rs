@@ -12,6 +12,7 @@ mod figures;
 mod numbers;
 mod rbf_fit;
 mod table;
+pub use table::StudySummary;
 mod target_range;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, StudyInput};
@@ -23,47 +24,6 @@ use crate::report::{refuse_overwrites, write_json_sorted, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-
-/// `summary.json`: the size and time of the study.
-#[derive(Debug, Clone, Serialize)]
-pub struct StudySummary {
-    /// Combinations simulated (map and RBF pairs).
-    pub combinations: usize,
-    /// Wall time of the simulations, s (printed, not written: a run merged
-    /// from shards writes the unsharded run's outputs byte for byte).
-    #[serde(skip)]
-    pub seconds: f64,
-    /// Study name.
-    pub study: String,
-    /// Stiffness unit of the reports.
-    pub unit: StiffnessUnit,
-    /// Combinations whose response has no steady state.
-    pub without_steady_state: usize,
-    /// Combinations on tyres with no friction limit that oversteer past
-    /// their critical speed √(−l/K): unstable, no handling response (their
-    /// metrics are left out).
-    pub unstable: usize,
-    /// The lowest critical speed of the unstable ones, m/s.
-    pub lowest_critical_speed: Option<f64>,
-    /// Combinations whose steady sideslip passes 10° on tyres with no
-    /// friction limit (below their critical speed): far outside a linear
-    /// tyre's range, no handling response (their metrics are left out).
-    pub large_sideslip: usize,
-    /// Combinations whose steady sideslip passes 10° on tyres with a
-    /// friction limit: sliding, no handling
-    /// response (their metrics are left out).
-    pub sliding: usize,
-    /// Combinations (not sliding) whose response has not settled by the
-    /// end of the step: no handling response (their metrics are left out).
-    pub not_settled: usize,
-    /// Combinations still converging at the end of the step (a slow
-    /// response): kept in the maps as handling responses, flagged in
-    /// study.csv's `note`.
-    pub still_settling: usize,
-    /// The largest steady sideslip of the sliding ones, rad (printed).
-    #[serde(skip)]
-    pub largest_sideslip: Option<f64>,
-}
 
 /// One held-out pair: its Er, the network's answer, and that answer's Er
 /// re-simulated.
@@ -205,6 +165,10 @@ pub struct StudyReport {
     /// The output folder, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,
+    /// What the terminal says of the run's inputs (shard files given
+    /// twice), after its first lines.
+    #[serde(skip)]
+    pub notes: Vec<String>,
 }
 
 /// The output files, in the order [`StudyReport::write`] checks them.
@@ -274,7 +238,9 @@ pub fn run_shard(path: &Path, shard: Shard, out: Option<&Path>) -> Result<ShardR
 /// run's, byte for byte.
 pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<StudyReport, Error> {
     let t0 = Instant::now();
-    let (input, units, samples) = read_shards::<Sample>(ShardJob::Study, shards)?;
+    let read = read_shards::<Sample>(ShardJob::Study, shards)?;
+    let note = read.note();
+    let (input, units, samples) = (read.input, read.units, read.results);
     let job = Job::load(&input, out)?;
     if units != job.all.len() {
         return Err(OptionsError::MergeCount {
@@ -286,7 +252,9 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<StudyReport, Erro
         .into());
     }
     let lock = OutputLock::acquire(&job.out_dir)?;
-    job.finish(samples, t0.elapsed().as_secs_f64(), lock)
+    let mut report = job.finish(samples, t0.elapsed().as_secs_f64(), lock)?;
+    report.notes.extend(note);
+    Ok(report)
 }
 
 /// A loaded study: its input, the model and manoeuvre, every combination to
@@ -372,7 +340,9 @@ impl Job {
                 unstable: not_handling.unstable,
                 lowest_critical_speed: not_handling.lowest_critical_speed,
                 sliding: not_handling.sliding,
+                sliding_still_moving: not_handling.sliding_still_moving,
                 large_sideslip: not_handling.large_sideslip,
+                large_sideslip_still_moving: not_handling.large_sideslip_still_moving,
                 not_settled: not_handling.not_settled,
                 still_settling: not_handling.still_settling,
                 largest_sideslip: not_handling.largest_sideslip,
@@ -385,6 +355,7 @@ impl Job {
             tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
             out_dir: self.out_dir,
             lock,
+            notes: Vec::new(),
         })
     }
 }
@@ -471,6 +442,7 @@ impl StudyReport {
                 s.combinations, s.seconds
             ),
         ];
+        out.extend(self.notes.iter().map(|n| format!("  note: {n}")));
         out.extend(table::not_handling_line(s));
         out.extend(table::still_settling_line(s));
         if let Some(r) = &self.rbf {

@@ -7,12 +7,60 @@
 //! measured 0) and no TB.
 
 use super::numbers::csv_number;
-use super::StudySummary;
 use crate::error::Error;
 use crate::metrics::StepMetrics;
 use crate::report::write_csv;
-use crate::study::{Metric, Sample, StiffnessUnit, METRICS};
+use crate::study::{Metric, Sample, SideslipEnd, StiffnessUnit, METRICS};
+use serde::Serialize;
 use std::path::Path;
+
+/// `summary.json`: the size and time of the study.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudySummary {
+    /// Combinations simulated (map and RBF pairs).
+    pub combinations: usize,
+    /// Wall time of the simulations, s (printed, not written: a run merged
+    /// from shards writes the unsharded run's outputs byte for byte).
+    #[serde(skip)]
+    pub seconds: f64,
+    /// Study name.
+    pub study: String,
+    /// Stiffness unit of the reports.
+    pub unit: StiffnessUnit,
+    /// Combinations whose response has no steady state.
+    pub without_steady_state: usize,
+    /// Combinations on tyres with no friction limit that oversteer past
+    /// their critical speed √(−l/K): unstable, no handling response (their
+    /// metrics are left out).
+    pub unstable: usize,
+    /// The lowest critical speed of the unstable ones, m/s.
+    pub lowest_critical_speed: Option<f64>,
+    /// Combinations whose sideslip passes 10° on tyres with no
+    /// friction limit (below their critical speed): far outside a linear
+    /// tyre's range, no handling response (their metrics are left out).
+    pub large_sideslip: usize,
+    /// Of those, the ones whose sideslip is still moving at the end of the
+    /// run (no steady value; the others' is steady).
+    pub large_sideslip_still_moving: usize,
+    /// Combinations whose sideslip passes 10° on tyres with a
+    /// friction limit: sliding, no handling
+    /// response (their metrics are left out).
+    pub sliding: usize,
+    /// Of those, the ones whose sideslip is still moving at the end of the
+    /// run (no steady value; the others' is steady).
+    pub sliding_still_moving: usize,
+    /// Combinations (not sliding) whose response has not settled by the
+    /// end of the step: no handling response (their metrics are left out).
+    pub not_settled: usize,
+    /// Combinations still converging at the end of the step (a slow
+    /// response): kept in the maps as handling responses, flagged in
+    /// study.csv's `note`.
+    pub still_settling: usize,
+    /// The largest sideslip at the end of the run of the sliding ones, rad
+    /// (printed).
+    #[serde(skip)]
+    pub largest_sideslip: Option<f64>,
+}
 
 /// Writes `samples` to `path`, stiffness in `unit` and in N/rad.
 pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Result<(), Error> {
@@ -111,18 +159,20 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
     if s.sliding > 0 {
         let most = s
             .largest_sideslip
-            .map_or_else(String::new, |b| format!(", up to {:.1}°", b.to_degrees()));
+            .map_or_else(String::new, |b| format!("{:.1}°", b.to_degrees()));
         kinds.push(format!(
-            "{} {} (steady sideslip beyond 10°{most})",
+            "{} {} ({})",
             s.sliding,
-            verb(s.sliding, "slides", "slide")
+            verb(s.sliding, "slides", "slide"),
+            beyond_ten(s.sliding, s.sliding_still_moving, &most)
         ));
     }
     if s.large_sideslip > 0 {
         kinds.push(format!(
-            "{} {} a sideslip beyond 10° by the end of the step on tyres with no friction limit (far outside a linear tyre's range)",
+            "{} {} a sideslip beyond 10° by the end of the step on tyres with no friction limit (far outside a linear tyre's range{})",
             s.large_sideslip,
-            verb(s.large_sideslip, "reaches", "reach")
+            verb(s.large_sideslip, "reaches", "reach"),
+            still_moving(s.large_sideslip, s.large_sideslip_still_moving)
         ));
     }
     if s.not_settled > 0 {
@@ -146,6 +196,36 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
         kinds.join(", "),
         verb(total, "its", "their")
     ))
+}
+
+/// `n` sideslips beyond 10°, the largest `most` (empty: not said), of
+/// which `moving` are still moving at the end of the run, in the words of
+/// `study.csv`'s notes ([`SideslipEnd`]): a sideslip still moving is never
+/// called steady.
+fn beyond_ten(n: usize, moving: usize, most: &str) -> String {
+    let still = SideslipEnd::STILL_MOVING;
+    let up_to = |tail: &str| match most.is_empty() {
+        true => format!("sideslip beyond 10°{tail}"),
+        false => format!("sideslip beyond 10°, up to {most}{tail}"),
+    };
+    match (moving, n - moving) {
+        (0, _) => format!("steady {}", up_to("")),
+        (_, 0) => up_to(&format!(" at the end of the run, {still}")),
+        (m, steady) => up_to(&format!(
+            " at the end of the run: {steady} steady, {m} {still}"
+        )),
+    }
+}
+
+/// Of `n` sideslips beyond 10°, the `moving` still moving at the end of
+/// the run, said where there are any, in the notes' words.
+fn still_moving(n: usize, moving: usize) -> String {
+    let still = SideslipEnd::STILL_MOVING;
+    match (moving, n - moving) {
+        (0, _) => String::new(),
+        (_, 0) => format!("; at the end of the run, {still}"),
+        (m, steady) => format!("; at the end of the run: {steady} steady, {m} {still}"),
+    }
 }
 
 /// `one` for a count of 1, else `many`: "1 does not settle", "2 do not".
@@ -191,12 +271,14 @@ mod tests {
             unstable: 0,
             lowest_critical_speed: None,
             sliding: 6,
+            sliding_still_moving: 4,
             large_sideslip: 0,
+            large_sideslip_still_moving: 0,
             not_settled: 1,
             still_settling: 0,
             largest_sideslip: Some(-1.0),
         };
         let line = not_handling_line(&s).unwrap();
-        assert!(line.starts_with("  7 of 47 combinations are no handling response: 6 slide (steady sideslip beyond 10°, up to -57.3°), 1 does not settle"), "{line}");
+        assert!(line.starts_with("  7 of 47 combinations are no handling response: 6 slide (sideslip beyond 10°, up to -57.3° at the end of the run: 2 steady, 4 still moving (no steady value)), 1 does not settle"), "{line}");
     }
 }

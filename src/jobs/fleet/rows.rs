@@ -1,0 +1,145 @@
+//! A fleet table's rows and which of them read the same runs: campaigns
+//! naming one runs folder, or run files byte for byte the same in another
+//! folder (a copy), are one campaign's runs and counted once, with a note
+//! naming them (a fleet counted three campaign files reading one folder,
+//! and a copied folder, as campaigns agreeing on a verdict).
+
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::VerdictKind;
+use crate::jobs::shard::digest;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// One campaign's line of the fleet table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FleetRow {
+    /// The campaign's file or folder name in the batch folder.
+    pub campaign: String,
+    /// Runs replayed (pieces after cleaning), 0 when it failed.
+    pub runs: usize,
+    /// Effects of the verdict (empty: no gap, or none explains it).
+    pub verdict: Vec<EffectKind>,
+    /// The verdict's case (None: failed).
+    #[serde(default)]
+    pub kind: Option<VerdictKind>,
+    /// Held-out error J of the base model (None: failed).
+    pub heldout_error_before: Option<f64>,
+    /// Held-out J with the verdict's effects (the base model's without).
+    pub heldout_error_after: Option<f64>,
+    /// J of the noise alone.
+    pub noise_level: Option<f64>,
+    /// The best single candidate and its share of the gap removed, %.
+    pub best: Option<(EffectKind, f64)>,
+    /// The verdict in words, or why the campaign failed.
+    pub statement: String,
+    /// Whether it failed (not read or not diagnosed).
+    pub failed: bool,
+    /// The folder its run files were read from, canonical: campaigns
+    /// that share it are one campaign's runs, counted once.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub runs_folder: Option<String>,
+    /// A digest of its run files' bytes ([`runs_digest`]): campaigns whose
+    /// run files are byte for byte the same (a copied folder) are one
+    /// campaign's runs too, counted once.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub runs_digest: Option<String>,
+}
+
+/// The canonical folder of a campaign's run files (`None`: it has none,
+/// or it does not load). Three campaign files naming one `runs` folder
+/// were counted as three campaigns agreeing on a verdict.
+pub(super) fn runs_folder_of(campaign: &Path) -> Option<String> {
+    let c = crate::io::campaign::load_campaign(campaign).ok()?;
+    let folder = c.runs_folder?.canonicalize().ok()?;
+    Some(folder.display().to_string())
+}
+
+/// A digest of the bytes of the run files of `folder` (its `*.csv`, as the
+/// campaign reads them), whatever their names: equal for a copy of the
+/// folder. `None` where one cannot be read (the diagnosis said why).
+pub(super) fn runs_digest(folder: &Path) -> Option<String> {
+    let mut digests = std::fs::read_dir(folder)
+        .ok()?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x.eq_ignore_ascii_case("csv")))
+        .map(|p| std::fs::read(p).ok().map(|b| digest(&b)))
+        .collect::<Option<Vec<u64>>>()?;
+    digests.sort_unstable();
+    let all: Vec<u8> = digests.iter().flat_map(|d| d.to_le_bytes()).collect();
+    Some(format!("{:016x}", digest(&all)))
+}
+
+/// Whether rows `a` and `b` read the same runs: one folder, or run files
+/// byte for byte the same.
+fn same_runs(a: &FleetRow, b: &FleetRow) -> bool {
+    let same = |x: &Option<String>, y: &Option<String>| x.is_some() && x == y;
+    same(&a.runs_folder, &b.runs_folder) || same(&a.runs_digest, &b.runs_digest)
+}
+
+/// Whether row `i` is the first of the rows reading its run files (a row
+/// with no known folder always is).
+pub(super) fn first_of_its_runs(rows: &[FleetRow], i: usize) -> bool {
+    !rows[..i].iter().any(|p| same_runs(p, &rows[i]))
+}
+
+/// The campaigns diagnosed, those reading the same run files counted
+/// once: what the recurring effects are counted out of.
+pub(super) fn distinct_diagnosed(rows: &[FleetRow]) -> usize {
+    (0..rows.len())
+        .filter(|&i| !rows[i].failed && first_of_its_runs(rows, i))
+        .count()
+}
+
+/// A note for each set of campaigns that read the same run files.
+pub(super) fn shared_runs_notes(rows: &[FleetRow]) -> Vec<String> {
+    (0..rows.len())
+        .filter(|&i| first_of_its_runs(rows, i))
+        .filter_map(|i| {
+            let folder = rows[i].runs_folder.as_ref()?;
+            let same: Vec<&str> = rows
+                .iter()
+                .filter(|r| r.runs_folder.as_ref() == Some(folder))
+                .map(|r| r.campaign.as_str())
+                .collect();
+            (same.len() > 1).then(|| {
+                format!(
+                    "  note: {} read the same run files ({folder}): one campaign's runs, counted once below",
+                    same.join(", ")
+                )
+            })
+        })
+        .chain(copied_runs_note(rows))
+        .collect()
+}
+
+/// The note on the campaigns whose run files are, byte for byte, an
+/// earlier campaign's in another folder (a copied runs folder): each
+/// with the one it repeats, counted once.
+fn copied_runs_note(rows: &[FleetRow]) -> Option<String> {
+    let copies: Vec<String> = (0..rows.len())
+        .filter_map(|j| {
+            let i = (0..j).find(|&i| same_runs(&rows[i], &rows[j]))?;
+            let (a, b) = (&rows[j], &rows[i]);
+            (a.runs_folder != b.runs_folder).then(|| {
+                let folder = |r: &FleetRow| r.runs_folder.clone().unwrap_or_default();
+                format!(
+                    "{} = {} ({} = {})",
+                    a.campaign,
+                    b.campaign,
+                    folder(a),
+                    folder(b)
+                )
+            })
+        })
+        .collect();
+    (!copies.is_empty()).then(|| {
+        format!(
+            "  note: {} run files identical, byte for byte, to another's in another folder (a copy): counted once below: {}",
+            match copies.len() {
+                1 => "1 campaign reads".to_string(),
+                n => format!("{n} campaigns read"),
+            },
+            copies.join("; ")
+        )
+    })
+}

@@ -17,6 +17,50 @@ pub(super) fn on_bound(p: &ParameterValue) -> String {
     }
 }
 
+/// The parameters on their search bound in a verdict's warning: an
+/// effect's own parameter there bounds the effect's size; the roll
+/// dynamics (`roll.frequency`, `roll.damping`) are the body's roll mode
+/// the roll effects act through, shared by them, not any effect's size,
+/// and are said so. One sentence per kind, joined by `; `.
+pub fn on_search_bound(parameters: &[ParameterValue]) -> String {
+    let (roll, own): (Vec<&ParameterValue>, Vec<&ParameterValue>) =
+        parameters.iter().partition(|p| p.name.starts_with("roll."));
+    let said = |ps: &[&ParameterValue], reading: &str| {
+        let each: Vec<String> = ps.iter().map(|p| on_bound(p)).collect();
+        let one = ps.len() == 1;
+        format!(
+            "{} on {} search bound: the data would take {} further, so {reading}",
+            each.join(", "),
+            if one { "its" } else { "their" },
+            if one { "it" } else { "them" },
+        )
+    };
+    let mut parts = Vec::new();
+    if !own.is_empty() {
+        let values = if own.len() == 1 {
+            "its value is"
+        } else {
+            "their values are"
+        };
+        parts.push(said(
+            &own,
+            &format!("{values} a bound on the effect's size, not a measurement of it"),
+        ));
+    }
+    if !roll.is_empty() {
+        let (it, is) = if roll.len() == 1 {
+            ("it", "is")
+        } else {
+            ("they", "are")
+        };
+        parts.push(said(
+            &roll,
+            &format!("{it} {is} a bound on the body's roll mode, which the roll effects act through (not the effect's size): the effect's values are fitted through a roll mode at that limit, and the runs do not measure the mode"),
+        ));
+    }
+    parts.join("; ")
+}
+
 /// A fitted parameter in words: its value, unit and standard error; or
 /// the bound it stands on — a search bound (the data would take it
 /// further) or a physical limit (a length, a share, a load that would be

@@ -31,14 +31,7 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             c.acceptance_percent
         ),
         VerdictWarning::OnSearchBound { parameters } => {
-            let each: Vec<String> = parameters.iter().map(super::parameters::on_bound).collect();
-            format!(
-                "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",
-                each.join(", "),
-                if parameters.len() == 1 { "its" } else { "their" },
-                if parameters.len() == 1 { "it" } else { "them" },
-                if parameters.len() == 1 { "its value is" } else { "their values are" },
-            )
+            super::parameters::on_search_bound(parameters)
         }
         VerdictWarning::GapRemains {
             heldout_error_after,
@@ -67,5 +60,23 @@ mod tests {
             w.starts_with("roll.damping = 1.5000 on its search bound"),
             "{w}"
         );
+    }
+
+    /// The roll mode on its bound is no bound on the effect's size; an
+    /// effect's own parameter beside it is, each said in its own words.
+    #[test]
+    fn the_roll_mode_on_its_bound_is_not_called_the_effects_size() {
+        let fitted = super::super::tests::fitted;
+        let frequency = fitted("roll.frequency", "Hz", 4.0, Some(Bound::Search));
+        let w = verdict_warning(&VerdictWarning::OnSearchBound {
+            parameters: vec![frequency.clone()],
+        });
+        assert!(w.starts_with("roll.frequency = 4.0000 Hz on its search bound: the data would take it further, so it is a bound on the body's roll mode"), "{w}");
+        assert!(!w.contains("a bound on the effect's size"), "{w}");
+        let steer = fitted("roll_steer.rear", "rad/rad", -0.5, Some(Bound::Search));
+        let w = verdict_warning(&VerdictWarning::OnSearchBound {
+            parameters: vec![frequency, steer],
+        });
+        assert!(w.starts_with("roll_steer.rear = -0.5000 rad/rad on its search bound: the data would take it further, so its value is a bound on the effect's size, not a measurement of it; roll.frequency = 4.0000 Hz on its search bound"), "{w}");
     }
 }

@@ -1,4 +1,4 @@
-//! Session 98, the step steer's speed (issue 40): under Dormand–Prince the
+//! Session 98, the step steer's speed: under Dormand–Prince the
 //! load-transfer solve of each stage starts from that stage's own last three
 //! solutions, so a PAC89 step steer solves its loads about once per
 //! right-hand side, as `simulate` counts them ("tyre-set evaluations").

@@ -94,8 +94,10 @@ mod tests {
     #[test]
     fn a_stage_is_seeded_from_its_own_quadratic_once_that_predicted_better() {
         let q = |t: f64| 0.3 - 2.0 * t + 5.0 * t * t;
-        let mut a = Adaptive::default();
-        a.stage = 3;
+        let mut a = Adaptive {
+            stage: 3,
+            ..Adaptive::default()
+        };
         for t in [0.0, 0.01, 0.025] {
             assert_eq!(a.choose(t, 7.0), 7.0, "{t}: too few solutions");
             a.record(t, q(t));

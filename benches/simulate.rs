@@ -2,7 +2,8 @@
 //! wheels and load transfer (`step_steer_10s_pac89_load_transfer/…`):
 //! fixed-step RK4 at 1 ms (`rk4_1ms`), Dormand–Prince 5(4) at the default
 //! tolerances (`dopri5`: the dense solution; `dopri5_metrics`: and the
-//! metrics from it; `dopri5_rows_1ms`: with 1 kHz rows); the older id
+//! metrics from it; `dopri5_rows_1ms`: with 1 kHz rows; `solver_rtol_1e-10`:
+//! the solver alone at SciPy's tolerances, the peer script's job); the older id
 //! `step_steer_10s_1khz_pac89_load_transfer` (RK4 at 1 ms) is kept. Also the
 //! cost of one lateral-force evaluation per tyre model and of one
 //! stiffness-study combination.
@@ -62,6 +63,26 @@ fn step_steer(c: &mut Criterion) {
     // With a row every 1 ms (the history a scenario writes by default).
     g.bench_function("dopri5_rows_1ms", |b| {
         b.iter(|| dopri.run(black_box(&model), black_box(&man), State::default()))
+    });
+    // The solver alone as `peer/scipy_peer.py` runs SciPy's `solve_ivp`
+    // (RK45) against it: rtol 1e-10, atol 1e-13, no largest step, (β, r)
+    // every 10 ms from the dense output. The job of the ≥ 300× SciPy target
+    // (`examples/peer_jobs.rs` times the same).
+    let scipy = Tolerances {
+        rtol: 1e-10,
+        atol: 1e-13,
+        max_step: f64::INFINITY,
+    };
+    let grid: Vec<f64> = (0..=1000).map(|i| f64::from(i) * 0.01).collect();
+    g.bench_function("solver_rtol_1e-10", |b| {
+        let mut states = Vec::with_capacity(grid.len());
+        b.iter(|| {
+            let sol = coarse
+                .solve_dopri5(black_box(&model), black_box(&man), State::default(), &scipy)
+                .expect("a (β, r) model has a dense solution");
+            sol.states_into(&grid, &mut states);
+            sol.stats
+        })
     });
     g.finish();
 }

@@ -12,7 +12,10 @@
 //! left out (zero) of the 2-state system, where they do not feed back.
 //! Units: SI, rad.
 
+mod seeds;
 mod system;
+
+use seeds::Adaptive;
 
 use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE};
 use super::progress::Counted;
@@ -274,6 +277,8 @@ struct Driven<'a> {
     stage: Option<(usize, usize)>,
     /// The last two (t, ay) solutions of the load-transfer loop (adaptive).
     history: [(f64, f64); 2],
+    /// The adaptive method's seeds ([`Adaptive`]).
+    adaptive: Adaptive,
     load_tolerance: f64,
     load_evaluations: u64,
     /// The inputs and outputs of the last evaluation.
@@ -292,6 +297,7 @@ impl<'a> Driven<'a> {
             seeds: [LoadTransferSeed::default(); 4],
             stage: None,
             history: [(f64::NAN, 0.0); 2],
+            adaptive: Adaptive::default(),
             load_tolerance: tolerance,
             load_evaluations: 0,
             last: (Inputs::steady(0.0, 0.0, friction), Outputs::default()),
@@ -316,22 +322,24 @@ impl<'a> Driven<'a> {
     }
 
     /// The seed of this evaluation: the RK4 stage's own, or under the
-    /// adaptive method the first, set to the linear extrapolation in time of
-    /// the last two solutions (the stages of an adaptive step are not evenly
-    /// spaced, so the seed's extrapolation over equal intervals would not
-    /// fit; from the last one alone when they are far apart or at the same
-    /// time).
+    /// adaptive method the first, set to one of two predictions
+    /// ([`Adaptive::choose`]): the linear extrapolation in time of the last
+    /// two solutions of any stage (the stages of an adaptive step are not
+    /// evenly spaced, so the seed's extrapolation over equal intervals would
+    /// not fit; from the last one alone when they are far apart or at the
+    /// same time), or the quadratic one of the same stage's last three
+    /// ([`seeds::stage_prediction`]).
     fn seed(&mut self, t: f64) -> usize {
         if let Some((_, j)) = self.stage {
             return j;
         }
         let [(t1, a1), (t0, a0)] = self.history;
-        let pred = if t1 != t0 && (t - t1).abs() <= 2.0 * (t1 - t0).abs() {
+        let linear = if t1 != t0 && (t - t1).abs() <= 2.0 * (t1 - t0).abs() {
             a1 + (a1 - a0) / (t1 - t0) * (t - t1)
         } else {
             a1
         };
-        self.seeds[0].ay = [pred; 3];
+        self.seeds[0].ay = [self.adaptive.choose(t, linear); 3];
         0
     }
 }

@@ -485,6 +485,7 @@ mod trips_s97_verdict;
 mod trips_s98_eq28;
 mod trips_s98_mount28;
 mod trips_s98_real28;
+mod trips_s98_step28;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -41,10 +41,15 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
         if self.stage.is_none() {
             let [(t1, a1), _] = self.history;
             self.history = [(t, o.ay), (t1, a1)];
+            self.adaptive.record(t, o.ay);
         }
         self.load_evaluations += u64::from(o.load_iterations);
         self.last = (inp, o);
         std::array::from_fn(|i| dx[i])
+    }
+
+    fn dopri5_stage(&mut self, stage: usize) {
+        self.adaptive.stage = stage;
     }
 
     fn rk4_stage(&mut self, step: usize, stage: usize) {

@@ -59,6 +59,14 @@ pub trait OdeSystem<const N: usize> {
     /// call it.
     fn rk4_stage(&mut self, _step: usize, _stage: usize) {}
 
+    /// Called by [`dopri5`] before each evaluation with its stage: 0–6 the
+    /// seven of Dormand–Prince (0 a restart's first, 6 a step's end, whose
+    /// value the next step reuses), [`DOPRI5_PROBE`] the starting step's
+    /// probe. A system can then keep one load-transfer starting point per
+    /// stage: a stage's state is off the solution by an amount of its own,
+    /// about the same from one step to the next.
+    fn dopri5_stage(&mut self, _stage: usize) {}
+
     /// Called by [`rosenbrock_w`] before each evaluation: `stage` 0–3 are
     /// the method's stages (at [`W_NODES`] of the step; stage 3 at the step's
     /// end), [`W_PROBE`] the difference quotients of the Jacobian at stage
@@ -74,6 +82,10 @@ pub trait OdeSystem<const N: usize> {
         [true; N]
     }
 }
+
+/// The stage [`dopri5`] tells [`OdeSystem::dopri5_stage`] for the starting
+/// step's probe (after the method's seven, 0–6).
+pub const DOPRI5_PROBE: usize = 7;
 
 /// Error tolerances of the adaptive integrator.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -344,6 +356,7 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
         if stop <= t {
             continue;
         }
+        sys.dopri5_stage(0);
         let mut k1 = sys.derivatives(t, &x);
         sol.stats.evaluations += 1;
         if h == 0.0 {
@@ -363,17 +376,21 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
             if last {
                 h = remaining;
             }
-            let k2 = sys.derivatives(t + C[1] * h, &combine(&x, h, &[k1], &A2));
-            let k3 = sys.derivatives(t + C[2] * h, &combine(&x, h, &[k1, k2], &A3));
-            let k4 = sys.derivatives(t + C[3] * h, &combine(&x, h, &[k1, k2, k3], &A4));
-            let k5 = sys.derivatives(t + C[4] * h, &combine(&x, h, &[k1, k2, k3, k4], &A5));
+            let mut stage = |j: usize, t: f64, x: &[f64; N]| {
+                sys.dopri5_stage(j);
+                sys.derivatives(t, x)
+            };
+            let k2 = stage(1, t + C[1] * h, &combine(&x, h, &[k1], &A2));
+            let k3 = stage(2, t + C[2] * h, &combine(&x, h, &[k1, k2], &A3));
+            let k4 = stage(3, t + C[3] * h, &combine(&x, h, &[k1, k2, k3], &A4));
+            let k5 = stage(4, t + C[4] * h, &combine(&x, h, &[k1, k2, k3, k4], &A5));
             // A step that ends on a breakpoint sees the input's left limit
             // there (an ideal step steer acts from the next step on).
             let t_new = if last { stop } else { t + h };
             let t_right = if last { stop.next_down() } else { t_new };
-            let k6 = sys.derivatives(t_right, &combine(&x, h, &[k1, k2, k3, k4, k5], &A6));
+            let k6 = stage(5, t_right, &combine(&x, h, &[k1, k2, k3, k4, k5], &A6));
             let x_new = combine(&x, h, &[k1, k2, k3, k4, k5, k6], &B);
-            let k7 = sys.derivatives(t_right, &x_new);
+            let k7 = stage(6, t_right, &x_new);
             sol.stats.evaluations += 6;
             let ks = [k1, k2, k3, k4, k5, k6, k7];
             let e: [f64; N] =
@@ -448,6 +465,7 @@ fn initial_step<const N: usize, S: OdeSystem<N>>(
     .min(span)
     .min(tol.max_step);
     let x1: [f64; N] = std::array::from_fn(|i| x[i] + h0 * f0[i]);
+    sys.dopri5_stage(DOPRI5_PROBE);
     let f1 = sys.derivatives(t + h0, &x1);
     stats.evaluations += 1;
     let diff: [f64; N] = std::array::from_fn(|i| f1[i] - f0[i]);

@@ -142,7 +142,11 @@ mod tests {
         };
         let (samples, q) = ratios(&c, 5.0, 1.0);
         assert!(samples.len() > 2000, "{}", samples.len());
-        assert!(q.iter().all(|q| (q - 1.0).abs() < 0.01), "{q:?}");
+        // The central difference over ±0.05 s reads β̇ times sin(wh)/(wh)
+        // (0.963 at 1.5 Hz): the ratio is 0.55 / (1 − 0.45 × that), 0.971.
+        let wh = w * SLOPE_SECONDS;
+        let expected = 0.55 / (1.0 - 0.45 * wh.sin() / wh);
+        assert!(q.iter().all(|q| (q - expected).abs() < 1e-6), "{expected}");
         c.beta = None;
         assert!(ratios(&c, 5.0, 1.0).0.is_empty());
         let held = vec![0.2; t.len()];

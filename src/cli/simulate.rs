@@ -56,8 +56,8 @@ pub struct MetricsArgs {
     min_overshoot: f64,
     /// A column the run gives in degrees (deg/s for `yaw_rate`), converted
     /// to radians: `steer`, `yaw_rate` or `beta`, the angle columns the
-    /// metrics read (repeatable).
-    #[arg(long, value_parser = angle_column)]
+    /// metrics read (repeatable, or several after a comma).
+    #[arg(long, value_parser = angle_column, value_delimiter = ',')]
     degrees: Vec<handling::io::AngleColumn>,
 }
 

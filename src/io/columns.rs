@@ -3,6 +3,7 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
+mod aliases;
 mod records;
 
 use crate::error::{one_column_separator, DuplicateAt, InputError, InputProblem};
@@ -206,11 +207,12 @@ fn first_word(h: &str) -> String {
 }
 
 /// The column a header's rig channel name means ([`RIG_NAMES`]), by its
-/// [`first_word`], where `among` holds it.
+/// [`first_word`], or that it is another name of (`gamma`), where `among` holds it.
 fn rig_name<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
     let first = first_word(h);
-    let (_, ours) = RIG_NAMES.iter().find(|(rig, _)| *rig == first)?;
-    among.iter().copied().find(|n| n == ours)
+    let rig = RIG_NAMES.iter().find(|(rig, _)| *rig == first);
+    rig.and_then(|(_, ours)| among.iter().copied().find(|n| n == ours))
+        .or_else(|| aliases::alias_of(h, among))
 }
 
 /// The header column that likely means the missing `name`: one that is no

@@ -24,6 +24,7 @@ mod run_bank;
 mod run_offset;
 pub use run_bank::steep_bank;
 mod run_slope;
+mod run_turning;
 mod run_units;
 pub use run_units::{unchecked_speed_unit, MAX_SPEED};
 pub mod scenario;

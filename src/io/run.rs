@@ -305,7 +305,16 @@ fn check_speed_and_rates(path: &Path, c: &Columns, run: &MeasuredRun) -> Result<
     check_speed(path, c, speed)?;
     check_yaw_rate(path, c, yaw_rate)?;
     match (&run.ay, &run.ax) {
-        (Some(ay), _) => check_ay(path, c, speed, yaw_rate, ay),
+        (Some(ay), _) => {
+            let lateral = super::run_turning::Channels {
+                t: &run.t,
+                speed,
+                r: yaw_rate,
+                ay,
+                beta: run.beta.as_deref(),
+            };
+            check_ay(path, c, &lateral)
+        }
         // No lateral accelerometer to judge the speed's unit by: the
         // longitudinal one, against the speed's change.
         (None, Some(ax)) => check_speed_by_ax(path, c, &run.t, speed, ax),

@@ -62,8 +62,9 @@ const AY_IN_FEET: (f64, f64) = (2.6, 4.1);
 const SPEED_IN_KMH: (f64, f64) = (0.2, 0.4);
 
 /// The band of ay/(speed·yaw_rate) of a speed in mph (1/2.237 = 0.447,
-/// from the km/h band's top to a factor of 1.34 above).
-const SPEED_IN_MPH: (f64, f64) = (0.4, 0.6);
+/// from the km/h band's top to the whole-run slope's 0.54, `run_slope.rs`
+/// and `FORMATS.md`).
+const SPEED_IN_MPH: (f64, f64) = (0.4, 0.54);
 
 /// The band of ay/(speed·yaw_rate) of a yaw rate in deg/s (π/180 =
 /// 0.0175, within a factor of 1.7), where a car's is near 1 on a flat road.
@@ -119,10 +120,9 @@ pub(super) fn check_yaw_rate(path: &Path, c: &Columns, r: &[f64]) -> Result<(), 
 pub(super) fn check_ay(
     path: &Path,
     c: &Columns,
-    speed: &[f64],
-    r: &[f64],
-    ay: &[f64],
+    lateral: &super::run_turning::Channels,
 ) -> Result<(), InputError> {
+    let (speed, r, ay) = (lateral.speed, lateral.r, lateral.ay);
     if let Some((i, p99)) = beyond(ay, MAX_AY) {
         let slip = UnitSlip::AyTooLarge {
             value: ay[i],
@@ -131,13 +131,12 @@ pub(super) fn check_ay(
         };
         return Err(c.error_at(path, i, "ay", slip.into()));
     }
-    let turning: Vec<usize> = (0..ay.len())
-        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
-        .collect();
+    // Against u·(r + β̇), or u·r where the yaw rate holds: a sine's β̇
+    // moves the ratio by half (`run_turning.rs`).
+    let (turning, mut q) = super::run_turning::ratios(lateral, MOVING, TURNING);
     if turning.len() < TURNING_SAMPLES {
         return Ok(());
     }
-    let mut q: Vec<f64> = turning.iter().map(|&i| ay[i] / (speed[i] * r[i])).collect();
     let bands = RatioBands::of(&q);
     if !bands.any() {
         return Ok(());

@@ -128,10 +128,14 @@ fn units_row(
         .iter()
         .map(|(i, _)| rec.get(*i).unwrap_or("").trim())
         .collect();
-    let words = cells.len() >= 2
-        && cells
-            .iter()
-            .all(|c| !c.is_empty() && c.parse::<f64>().is_err());
+    // A number with a decimal comma (`"0,01"`, quoted) is no unit: the
+    // first data row is told of its commas as the rows after it are.
+    let word = |c: &str| {
+        !c.is_empty()
+            && c.parse::<f64>().is_err()
+            && c.replacen(',', ".", 1).parse::<f64>().is_err()
+    };
+    let words = cells.len() >= 2 && cells.iter().all(|c| word(c));
     // Quoted as the file has it: every cell, in its own column order (the
     // wanted columns are in the tool's, and a column the tool does not
     // read, a rig's `t` first, would be left out of the quote).

@@ -33,18 +33,55 @@ const CHANGE: f64 = 2.0;
 const HOLE: f64 = 1.5;
 
 /// The local interval of each interval of `t`: the median over [`LOCAL`]
-/// intervals each side.
+/// intervals each side, or the median of its intervals of at most
+/// [`SHORT`] of that median where they lie on both sides of it (or at it)
+/// and make [`SHORT_SHARE`] of the window or more. A log that misses every third
+/// row alternates 0.02 and 0.01 s: its median flipped between them, and
+/// the log was said to change its rate from 50 to 100 Hz, its 267
+/// missing samples uncounted; a change of rate has its short intervals on
+/// one side only.
 fn local_intervals(t: &[f64]) -> Vec<f64> {
     let dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
     let mut buf = Vec::with_capacity(2 * LOCAL + 1);
     (0..dt.len())
         .map(|k| {
+            let (lo, hi) = (k.saturating_sub(LOCAL), (k + LOCAL + 1).min(dt.len()));
             buf.clear();
-            buf.extend_from_slice(&dt[k.saturating_sub(LOCAL)..(k + LOCAL + 1).min(dt.len())]);
-            median(&mut buf)
+            buf.extend_from_slice(&dt[lo..hi]);
+            let m = median(&mut buf);
+            let short = |d: &f64| *d <= SHORT * m;
+            // Each side with the interval itself (a run's end has one side).
+            let side = |s: &[f64]| s.len() < 2 || s.iter().any(short);
+            let both = side(&dt[lo..=k]) && side(&dt[k..hi]);
+            buf.clear();
+            buf.extend(dt[lo..hi].iter().copied().filter(short));
+            if !both || (buf.len() as f64) < SHORT_SHARE * (hi - lo) as f64 {
+                return m;
+            }
+            // Rows dropped leave whole multiples of the shorter interval; a
+            // logger's jitter spreads between them and keeps the median.
+            let short = median(&mut buf);
+            let whole = |d: &f64| (d / short - (d / short).round()).abs() <= ON_GRID;
+            if dt[lo..hi].iter().all(whole) {
+                short
+            } else {
+                m
+            }
         })
         .collect()
 }
+
+/// How near a whole multiple of the shorter interval every interval of
+/// the window lies where rows were dropped, in shorter intervals.
+const ON_GRID: f64 = 0.15;
+
+/// An interval this share of the window's median or less is a shorter one
+/// (a log missing rows between them: 0.01 s among 0.02 s).
+const SHORT: f64 = 0.75;
+
+/// The share of a window the shorter intervals make that gives its local
+/// interval: a logger's jitter (±3 ms at 100 Hz) puts under a tenth there.
+const SHORT_SHARE: f64 = 0.3;
 
 /// The holes of `t`: for each, where it starts (s), its length (s) and the
 /// samples missing in it.
@@ -67,13 +104,36 @@ fn holes_said(t: &[f64], dt: f64) -> Option<String> {
     let longest = h.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
     let missing: usize = h.iter().map(|x| x.2).sum();
     Some(format!(
-        "the log misses {} in {} in time (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics",
+        "the log misses {} in {} in time{} (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics",
         crate::format::plural(missing, "sample", "samples"),
         crate::format::plural(h.len(), "hole", "holes"),
+        pattern(&h, dt).map_or(String::new(), |(m, every)| format!(
+            ", {m} of every {every} rows throughout (rows dropped in a regular pattern, by a logger or an export)"
+        )),
         crate::format::readable(longest.1, 3),
         crate::format::readable(longest.0, 3),
         crate::format::readable(1.0 / dt, 3)
     ))
+}
+
+/// The regular pattern of holes `h` on a grid of `dt`, where there is one:
+/// at least 10 holes, nine in ten of them missing the same number of
+/// samples as the middle one, and nine in ten of them that number of rows
+/// after the last as the middle one (the missing counted; a log's ends may
+/// break the pattern). That number missing, of every so many rows.
+fn pattern(h: &[(f64, f64, usize)], dt: f64) -> Option<(usize, usize)> {
+    if h.len() < 10 {
+        return None;
+    }
+    let rows: Vec<usize> = h
+        .windows(2)
+        .map(|w| ((w[1].0 - w[0].0) / dt).round() as usize)
+        .collect();
+    let (missing, every) = (h[h.len() / 2].2, rows[rows.len() / 2]);
+    let most = |n: usize| 10 * n >= 9 * h.len();
+    let regular = most(h.iter().filter(|x| x.2 == missing).count())
+        && most(rows.iter().filter(|r| **r == every).count() + 1);
+    regular.then_some((missing, every))
 }
 
 /// The shortest and longest local intervals of `t`, where they differ by
@@ -109,7 +169,9 @@ pub(super) fn uniform(p: MeasuredRun) -> (MeasuredRun, Option<String>) {
     let (dt, holes) = match rate_change(&p.t) {
         Some((dt, _)) => (dt, None),
         None => {
-            let dt = crate::measured::clean::median_interval(&p.t);
+            // The holes' own interval: where every third row is missing
+            // the run's median interval is the hole's 0.02 s, not 0.01 s.
+            let dt = median(&mut local_intervals(&p.t));
             match holes_said(&p.t, dt) {
                 Some(w) => (dt, Some(w)),
                 None => return (p, None),
@@ -169,6 +231,26 @@ mod tests {
             .map(|i| f64::from(i) * 0.01 + 0.003 * (f64::from(i) * 2.39).sin())
             .collect();
         assert_eq!(rate_change(&jittered), None);
+    }
+
+    #[test]
+    fn every_third_row_missing_is_no_rate_change_and_each_is_counted() {
+        // 100 Hz for 8 s, rows 1, 4, 7, … dropped: 266 missing.
+        let t: Vec<f64> = (0..801)
+            .filter(|i| i % 3 != 1)
+            .map(|i| f64::from(i) / 100.0)
+            .collect();
+        assert_eq!(rate_change(&t), None);
+        let h = holes(&t);
+        assert_eq!(h.iter().map(|x| x.2).sum::<usize>(), 267);
+        assert_eq!(pattern(&h, 0.01), Some((1, 3)));
+        let said = holes_said(&t, 0.01).unwrap();
+        assert!(
+            said.contains("267 samples in 267 holes in time, 1 of every 3 rows"),
+            "{said}"
+        );
+        // A single hole is no pattern.
+        assert_eq!(pattern(&h[..1], 0.01), None);
     }
 
     #[test]

@@ -482,6 +482,7 @@ mod trips_s97_metrics;
 mod trips_s97_real;
 mod trips_s97_steer;
 mod trips_s97_verdict;
+mod trips_s98_words28;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

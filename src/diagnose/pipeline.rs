@@ -501,6 +501,11 @@ fn run(
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     findings.extend(dominant(&base.heldout, &scales, &findings));
+    let channel_shares = crate::diagnose::report::shares::channel_shares(
+        &parts,
+        &noise,
+        !verdict.effects().is_empty(),
+    );
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),
@@ -519,6 +524,7 @@ fn run(
             heldout_error: j0,
             noise_level: jn,
             noise,
+            channel_shares,
             parts,
             runs: run_gaps,
             findings,

@@ -223,6 +223,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             .map(|f| format!("  {}", words::finding(f)))
             .chain(bands.into_iter().map(|l| format!("  {l}"))),
     );
+    out.extend(words::channel_shares(&d.gap.channel_shares).map(|l| format!("  {l}")));
     out.extend(candidate_lines(d));
     out.extend(verdict_lines(d));
     out

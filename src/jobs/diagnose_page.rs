@@ -63,6 +63,7 @@ pub fn page(
     }
     let mut findings = vec![words::channels_trusted(&d.gap.noise)];
     findings.extend(d.gap.findings.iter().map(words::finding));
+    findings.extend(words::channel_shares(&d.gap.channel_shares));
     let heading = words::gap_heading(&d.gap.findings);
     let heading = heading[..1].to_uppercase() + &heading[1..];
     p.section("gap", &heading).lines(&findings);

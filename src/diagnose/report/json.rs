@@ -38,6 +38,7 @@ enum Details<'a> {
     NoSignificantGap {
         threshold: f64,
         resting_on: &'a [crate::diagnose::model::scale::StatedExcess],
+        far_from_off: Option<&'a crate::diagnose::report::outcome::FarFromOff>,
     },
     NotIdentifiable {
         no_tyre: &'a [NoTyre],
@@ -93,6 +94,7 @@ impl Serialize for Verdict {
                 Details::NoSignificantGap {
                     threshold: n.threshold,
                     resting_on: &n.resting_on,
+                    far_from_off: n.far_from_off.as_ref(),
                 },
             ),
             Verdict::NotIdentifiable(n) => (

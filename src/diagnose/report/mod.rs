@@ -13,6 +13,7 @@ pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
 pub mod separating;
+pub mod shares;
 pub(crate) mod summary;
 pub mod traded;
 pub(crate) mod trust;
@@ -32,7 +33,7 @@ use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, ClassMismatch,
-    Closest, Evidence, Explained, GapFinding, InSet, Lookalike, Lookalikes, MassAlike,
+    Closest, Evidence, Explained, FarFromOff, GapFinding, InSet, Lookalike, Lookalikes, MassAlike,
     NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning,
     Refusal, Refused, Searched, ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
@@ -209,6 +210,9 @@ pub struct GapReport {
     /// third of an 8-run campaign's file twice over).
     #[serde(skip)]
     pub parts: Vec<Shrinkage>,
+    /// Each channel's share of the held-out `J²`, before the verdict and
+    /// with it ([`shares::channel_shares`]).
+    pub channel_shares: Vec<shares::ChannelShare>,
     /// Per run.
     pub runs: Vec<RunGap>,
     /// The findings (written as `summary`, in words, and `findings`).

@@ -176,6 +176,32 @@ pub struct NoSignificantGap {
     /// than [`crate::diagnose::model::scale::STATED_EXCESS`] times what
     /// they show of themselves: the verdict rests on those statements.
     pub resting_on: Vec<crate::diagnose::model::scale::StatedExcess>,
+    /// The candidate that fits farthest from its off value, in standard
+    /// errors, of those that lower the held-out error: the rule weighs no
+    /// candidate on a gap within noise, and the words say what it found
+    /// and what would decide it (None: none fits [`FAR_FROM_OFF`] from off).
+    pub far_from_off: Option<FarFromOff>,
+}
+
+/// Standard errors from its off value beyond which a parameter fitted on a
+/// gap within noise is named: far past what fitting the noise gives (a
+/// no-effect campaign's candidates land within a few), since on correlated
+/// residuals the standard error may understate a few times.
+pub const FAR_FROM_OFF: f64 = 10.0;
+
+/// A candidate fitted far from off where the gap is within noise.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FarFromOff {
+    /// The candidate's effects.
+    pub effects: Vec<EffectKind>,
+    /// Its parameter farthest from off, in standard errors.
+    pub parameter: ParameterValue,
+    /// That parameter's off value, in its unit.
+    pub off: f64,
+    /// `|value − off| / std_error`.
+    pub standard_errors: f64,
+    /// Held-out J with it.
+    pub heldout_error_after: f64,
 }
 
 /// A base model that is no tyre, and no candidate that makes it one.

@@ -17,6 +17,7 @@ mod lookalikes;
 mod parameters;
 mod trust;
 mod warnings;
+pub use crate::diagnose::report::shares::carries_line as channel_shares;
 use crate::identify::grouping::Variable;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,

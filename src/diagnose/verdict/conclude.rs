@@ -11,11 +11,11 @@
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::{same_effects, Bound, EffectKind};
 use crate::diagnose::report::above_noise;
-use crate::diagnose::report::outcome::EXPLAINS_MOST;
+use crate::diagnose::report::outcome::{EXPLAINS_MOST, FAR_FROM_OFF};
 use crate::diagnose::report::{
-    ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
-    NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony, Part, RankWarning,
-    Ranked, Searched, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, FarFromOff,
+    NoSignificantGap, NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony,
+    Part, RankWarning, Ranked, Searched, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::calibration::calibration_evidence;
@@ -86,6 +86,10 @@ pub(crate) fn verdict(
             threshold: SIGNIFICANT,
             // Named by the pipeline, which has the channels' trust.
             resting_on: Vec::new(),
+            far_from_off: far_from_off(
+                order.iter().map(|&i| base.rank(&singles[i])),
+                heldout_error,
+            ),
         }),
         (VerdictKind::NotIdentifiable, _) => Verdict::NotIdentifiable(NotIdentifiable {
             heldout_error,
@@ -124,6 +128,39 @@ pub(crate) fn verdict(
             tyre_class: None,
         }),
     }
+}
+
+/// Of the candidates `ranked` that lower the held-out error below
+/// `before`, the one whose parameter lies farthest from its off value in
+/// standard errors, where that is at least [`FAR_FROM_OFF`]: on a gap
+/// within noise the rule weighs no candidate, and the words say what one
+/// found. Parameters on a bound, held, or not determined are not counted.
+fn far_from_off(ranked: impl Iterator<Item = Ranked>, before: f64) -> Option<FarFromOff> {
+    let mut best: Option<FarFromOff> = None;
+    for r in ranked.filter(|r| r.heldout_error_after < before) {
+        for p in r.parameters.iter().filter(|p| {
+            p.determined && p.bound.is_none() && p.held.is_none() && !p.unseen && p.std_error > 0.0
+        }) {
+            let Some(q) = r.effects.iter().find_map(|e| {
+                e.parameters()
+                    .iter()
+                    .find(|q| format!("{}.{}", e.name(), q.name) == p.name)
+            }) else {
+                continue;
+            };
+            let z = (p.value - q.off).abs() / p.std_error;
+            if z >= FAR_FROM_OFF && best.as_ref().is_none_or(|b| z > b.standard_errors) {
+                best = Some(FarFromOff {
+                    effects: r.effects.clone(),
+                    parameter: p.clone(),
+                    off: q.off,
+                    standard_errors: z,
+                    heldout_error_after: r.heldout_error_after,
+                });
+            }
+        }
+    }
+    best
 }
 
 /// What the verdict (its `effects`) was chosen over on the way: a best

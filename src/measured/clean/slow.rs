@@ -66,12 +66,20 @@ pub(super) fn slow_line(s: &SlowSpan, min_speed: f64) -> String {
 /// Why a slow span (or a row of them) whose speeds lie in `(max, min)`
 /// is excluded.
 fn why_slow(kind: SlowKind, (max, min): (f64, f64), min_speed: f64) -> String {
+    let threshold = min_speed;
     let min_speed = crate::format::rounded(min_speed, 4);
     match kind {
         // Truncated: a car backing at 3.004 m/s did not reach 3.01.
         SlowKind::Reversing => format!(
             "backwards at up to {:.2} m/s: the model drives forwards only, from min_speed = {min_speed} m/s",
             (-min * 100.0).floor() / 100.0
+        ),
+        // A speed flickering across the threshold for a sample or two
+        // between slow ones joins the span (`pieces::FLICKER_SAMPLES`):
+        // its top speed is then at or above min_speed, and said so.
+        _ if max >= threshold => format!(
+            "below min_speed = {min_speed} m/s but for flickers across it between slow samples, up to {:.2} m/s, counted with the span",
+            (max * 100.0).ceil() / 100.0
         ),
         // Truncated: a span below 5 m/s must not read "at most 5.00".
         _ => format!(

@@ -151,7 +151,34 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
             let se = p.asymptotic_std_error;
             let said = format!("{} = {v} ± {}{unit}", p.name, std_error(se));
             let yardstick = p.fold_yardstick();
+            let spread = p.std_error_basis == StdErrorBasis::FoldSpread;
             match p.fold_std_error.filter(|_| p.understated()) {
+                // The verdict stands on the fold refits' spread: the words
+                // lead with it, as the JSON's `std_error` does, and give
+                // the asymptotic error in the parenthesis.
+                Some(j) if spread && !removes => format!(
+                    "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}: the asymptotic error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
+                    p.name,
+                    std_error(p.std_error),
+                    j / se,
+                    std_error(se)
+                ),
+                Some(j) if spread => format!(
+                    "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}{}: the runs disagree beyond their noise, which the asymptotic error does not cover)",
+                    p.name,
+                    std_error(p.std_error),
+                    j / se,
+                    std_error(se),
+                    if yardstick <= se {
+                        String::new()
+                    } else {
+                        format!(
+                            " and {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it",
+                            j / yardstick,
+                            std_error(yardstick)
+                        )
+                    }
+                ),
                 // The runs of equal information: the standard error is
                 // what their noise moves the folds by.
                 Some(j) if !removes => format!(

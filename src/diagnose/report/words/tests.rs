@@ -87,6 +87,7 @@ fn no_gap_names_its_threshold() {
         noise_level: 0.95,
         threshold: 1.3,
         resting_on: Vec::new(),
+        far_from_off: None,
     });
     assert_eq!(
         statement(&v),
@@ -105,6 +106,7 @@ fn no_gap_names_its_threshold() {
         noise_level: 0.95,
         threshold: 1.3,
         resting_on: excess.into_iter().collect(),
+        far_from_off: None,
     });
     assert_eq!(
         statement(&v),

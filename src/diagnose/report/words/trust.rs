@@ -4,9 +4,10 @@
 //! estimated output lies near its line, that it does (the rule:
 //! [`crate::diagnose::model::scale`]). Units: each channel's own.
 
-use super::rms;
+use super::{rms, std_error, value};
+use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
-use crate::diagnose::report::{ChannelNoise, NoSignificantGap, ScaleSource};
+use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource};
 
 /// Who reads the channels' trust, for what a user can do where a
 /// channel's reading lies near the line between a sensor and an
@@ -169,5 +170,34 @@ pub fn no_gap(n: &NoSignificantGap) -> String {
             stated_excess(e)
         );
     }
+    if let Some(f) = &n.far_from_off {
+        v += &far_from_off(f, n.threshold);
+    }
     v
+}
+
+/// What a candidate fitted far from off on a gap within noise found, why
+/// the rule does not take it, and what would decide it.
+fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
+    let p = &f.parameter;
+    let unit = if p.unit == "-" { "" } else { p.unit };
+    let sp = if unit.is_empty() { "" } else { " " };
+    let name = |e: &EffectKind| e.name();
+    let effects: Vec<&str> = f.effects.iter().map(name).collect();
+    let signatures: Vec<String> = f
+        .effects
+        .iter()
+        .map(|e| format!("{}: {}", e.name(), e.signature()))
+        .collect();
+    format!(
+        "; but {} fits {} = {} ± {}{sp}{unit}, {:.0} standard errors from its off value {}{sp}{unit}, and lowers the held-out error to {:.3}: the rule weighs a candidate only where the gap exceeds {threshold} × the noise level, so it is not accepted; what it fits lies in too little of the runs to lift the gap above that, and more or longer runs that show it ({}) would decide it",
+        effects.join("+"),
+        p.name,
+        value(p.value),
+        std_error(p.std_error),
+        f.standard_errors,
+        crate::format::exact(f.off),
+        f.heldout_error_after,
+        signatures.join("; ")
+    )
 }

@@ -482,6 +482,7 @@ mod trips_s97_metrics;
 mod trips_s97_real;
 mod trips_s97_steer;
 mod trips_s97_verdict;
+mod trips_s98_fix41b;
 mod trips_s98_real28;
 mod trips_simulate;
 mod trips_units;

@@ -41,7 +41,7 @@ def test_forces_refuse_each_point_the_cli_refuses_by_argument_and_index(mf, kw, 
         assert not np.isfinite(err.value) and err.problem is None
     else:
         assert err.value == value and err.problem is not None
-    assert f"`{argument}`[{index}]" in str(err) and err.reason in str(err)
+    assert f"{argument}[{index}]: " in str(err) and err.reason in str(err)
     assert err.refused[0] == (argument, index, err.value) or value is None
 
 

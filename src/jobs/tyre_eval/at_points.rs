@@ -30,7 +30,7 @@ pub struct PointRefused {
 
 impl std::fmt::Display for PointRefused {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "`{}`[{}]: ", self.argument, self.index)?;
+        write!(f, "{}[{}]: ", self.argument, self.index)?;
         match &self.problem {
             Some(p) => write!(f, "{p}"),
             None => write!(f, "{} is not a finite value", self.value),
@@ -111,11 +111,10 @@ mod tests {
         let at: Vec<_> = r.iter().map(|r| (r.argument, r.index)).collect();
         assert_eq!(at, [("fz", 1), ("alpha", 2), ("speed", 3)], "{r:?}");
         assert!(r[0].problem.is_none());
+        let said = r[2].to_string();
         assert!(
-            r[2].to_string()
-                .starts_with("`speed`[3]: -16.7 m/s is negative"),
-            "{}",
-            r[2]
+            said.starts_with("speed[3]: ") && said.contains("-16.7 m/s is negative"),
+            "{said}"
         );
         // 2.2 bar at every point: the column's median is not in Pa.
         let p = [2.2; 4];

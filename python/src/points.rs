@@ -56,8 +56,8 @@ pub(crate) fn check_loads(
 }
 
 /// The `PointError` of `refused`, its first one's fields as attributes.
-fn point_error(
-    py: Python<'_>,
+fn point_error<'py>(
+    py: Python<'py>,
     first: &PointRefused,
     refused: &[PointRefused],
     new_err: fn(String) -> PyErr,
@@ -86,7 +86,7 @@ fn point_error(
         None => format!("{} is not a finite value", first.value),
     };
     let problem = first.problem.as_ref().map(|p| p.name());
-    let obj = |x: PyResult<Bound<'_, PyAny>>| x.unwrap_or_else(move |_| py.None().into_bound(py));
+    let obj = |x: PyResult<Bound<'py, PyAny>>| x.unwrap_or_else(|_| py.None().into_bound(py));
     let attrs = [
         ("argument", obj(first.argument.into_bound_py_any(py))),
         ("index", obj(first.index.into_bound_py_any(py))),

@@ -5,7 +5,8 @@
 //! (the Python package parses it into dicts, the CLI's JSON content) and
 //! its arrays as numpy arrays. Errors become the exception of their kind
 //! (`Error::kind`): `HandlingError` > `InputError` (path, line, column, key,
-//! value), `ParamError` (key, value, reason), `OptionsError`, `FitError`,
+//! value), `ParamError` (key, value, reason), `PointError` (argument, index,
+//! value of a tyre's point), `OptionsError`, `FitError`,
 //! `MetricsError`, `DiagnosisError`, `OutputError` (path where the kind has
 //! one), read from the error's typed fields, never from its message. SI
 //! units and radians throughout.
@@ -32,6 +33,8 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+mod points;
+
 create_exception!(
     handling,
     HandlingError,
@@ -43,6 +46,12 @@ create_exception!(
     InputError,
     HandlingError,
     "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value (a CSV cell: the column's name and the cell's text); `problem`: the name of what is wrong with the content, where typed."
+);
+create_exception!(
+    handling,
+    PointError,
+    HandlingError,
+    "A point no tyre is evaluated at (`tyre-eval` refuses it in a points file): `argument` (`fz`, `kappa`, `alpha`, `camber`, `speed`, `pressure`), `index` (0-based, in the flattened broadcast arrays), `value`, `reason`, `problem` (the name of what is wrong, None for a NaN or infinity) of the first; `refused`: every one as (argument, index, value)."
 );
 create_exception!(
     handling,
@@ -370,8 +379,10 @@ impl PyTyre {
     }
 
     /// Cornering stiffness ∂Fy/∂α at α = 0, N/rad, at load `fz` (N).
-    fn cornering_stiffness(&self, fz: f64) -> f64 {
-        self.tyre.cornering_stiffness(fz)
+    /// A load `tyre-eval` refuses raises `PointError`.
+    fn cornering_stiffness(&self, py: Python<'_>, fz: f64) -> PyResult<f64> {
+        points::check_loads(py, &self.tyre, &[fz], PointError::new_err)?;
+        Ok(self.tyre.cornering_stiffness(fz))
     }
 
     /// Cornering stiffness, N/rad, at each load of a 1-D float64 array
@@ -383,6 +394,7 @@ impl PyTyre {
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let fz = fz.as_slice()?;
         let tyre = &self.tyre;
+        points::check_loads(py, tyre, fz, PointError::new_err)?;
         let k: Vec<f64> = py.detach(|| fz.iter().map(|&f| tyre.cornering_stiffness(f)).collect());
         Ok(PyArray1::from_vec(py, k))
     }
@@ -432,6 +444,9 @@ impl PyTyre {
             pressure.as_slice()?,
         ];
         let tyre = &self.tyre;
+        // The points `tyre-eval` refuses, refused; its warnings, warned.
+        let inputs = [s[0], s[1], s[2], s[3], s[4]];
+        points::check_points(py, tyre, inputs, s[5], PointError::new_err)?;
         let pts = py.detach(|| tyre.evaluate_points(s[0], s[1], s[2], s[3], s[4], s[5]));
         let col = |f: &dyn Fn(&handling::tyre::PointForces) -> f64| {
             PyArray1::from_iter(py, pts.iter().map(f)).into_any()
@@ -943,6 +958,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("HandlingError", py.get_type::<HandlingError>())?;
     m.add("InputError", py.get_type::<InputError>())?;
     m.add("ParamError", py.get_type::<ParamError>())?;
+    m.add("PointError", py.get_type::<PointError>())?;
     m.add("OptionsError", py.get_type::<OptionsError>())?;
     m.add("FitError", py.get_type::<FitError>())?;
     m.add("MetricsError", py.get_type::<MetricsError>())?;

@@ -55,6 +55,24 @@ pub enum ScenarioProblem {
         /// The steps it took.
         steps: usize,
     },
+    /// A step steer above the car's critical speed whose divergence
+    /// stalled the integration (a wheel lifting off under load transfer):
+    /// said as the critical speed, which `simulate` says of the same step
+    /// run through (RK4, or no load transfer).
+    StalledAboveCritical {
+        /// Where it stopped, s.
+        at: f64,
+        /// The manoeuvre's end, s.
+        end: f64,
+        /// The understeer gradient at the static axle loads, rad/(m/s²).
+        gradient: f64,
+        /// The critical speed √(−l/K), m/s.
+        critical: f64,
+        /// The step's speed, m/s.
+        speed: f64,
+        /// The static axle loads the stiffness is taken at, N (front, rear).
+        loads: [f64; 2],
+    },
     /// A study's cornering stiffness in the other unit than its `unit`.
     StiffnessUnit(super::StiffnessSlip),
     /// A `name` that is no folder name: `simulate` writes into
@@ -93,6 +111,14 @@ impl fmt::Display for ScenarioProblem {
             ScenarioProblem::Stalled { at, end, steps } => write!(
                 f,
                 "the integration (Dormand–Prince) stalled at t = {at:.3} s of {end:.3} s: {steps} steps, its step driven towards zero by a model that is not smooth there (a wheel lifting off under load transfer, or forces far beyond any tyre's: linear tyres at a large steer); nothing is written. A smaller manoeuvre keeps the car in the model's range; `method = \"rk4\"` with a fixed `step` runs through and its rows show where the run leaves it"
+            ),
+            ScenarioProblem::StalledAboveCritical { at, end, gradient, critical, speed, loads } => write!(
+                f,
+                "the car oversteers (understeer gradient K = {} rad/(m/s²), {} deg/g, from the tyres' cornering stiffness at the static axle loads, {:.0} N front and {:.0} N rear) and the step is at {speed:.1} m/s, above its critical speed √(−l/K) = {critical:.1} m/s: its straight running is unstable there and the response diverges, until the integration (Dormand–Prince) stalled at t = {at:.3} s of {end:.3} s, its step driven towards zero where the diverging car leaves the model's smooth range (a wheel lifting off under load transfer); nothing is written. A step below {critical:.1} m/s measures the handling",
+                crate::format::significant(*gradient, 3),
+                crate::format::significant((gradient * crate::constants::G).to_degrees(), 3),
+                loads[0],
+                loads[1],
             ),
             ScenarioProblem::StiffnessUnit(s) => s.fmt(f),
             ScenarioProblem::NameNotAFolder { name } => write!(

@@ -484,6 +484,7 @@ mod trips_s97_steer;
 mod trips_s97_verdict;
 mod trips_s98_eq28;
 mod trips_s98_fix41a;
+mod trips_s98_fix41b;
 mod trips_s98_mount28;
 mod trips_s98_real28;
 mod trips_s98_step28;

@@ -21,7 +21,11 @@ error (``kind`` names it): an unreadable or wrong input file is
 :class:`InputError` (``path``, ``line``, ``column``; ``key``, ``value``
 for a wrong value), a wrong keyword :class:`InputError` too (``key``,
 ``value``), a non-physical parameter :class:`ParamError` (``key``,
-``value``, ``reason``), options that name nothing known or contradict
+``value``, ``reason``), a point :meth:`Tyre.forces` or
+:meth:`Tyre.cornering_stiffness` is given that ``tyre-eval`` refuses
+(NaN, a slip angle beyond ±90° or in degrees, a negative speed, a pressure
+not in Pa, loads in kN) :class:`PointError` (``argument``, ``index``,
+``value``, ``reason``; ``refused``: every one), options that name nothing known or contradict
 each other :class:`OptionsError` (``name``, ``known`` for an unknown
 name), a fit that cannot be made :class:`FitError`, step-steer metrics that
 cannot be computed :class:`MetricsError`, a diagnosis that cannot be made
@@ -50,6 +54,7 @@ from ._handling import (
     OptionsError,
     OutputError,
     ParamError,
+    PointError,
 )
 from ._reports import (
     Diagnosis,
@@ -74,6 +79,7 @@ __all__ = [
     "HandlingError",
     "InputError",
     "ParamError",
+    "PointError",
     "OptionsError",
     "FitError",
     "MetricsError",
@@ -158,7 +164,8 @@ class Tyre:
         """Cornering stiffness ∂Fy/∂α at α = 0 and no camber, N/rad, at the
         vertical load ``fz`` (N): a float for a scalar, an array of the same
         shape for an array (evaluated in Rust in one call, the GIL
-        released)."""
+        released). A load ``tyre-eval`` refuses (NaN, beyond ±1 MN, all
+        negative, in kN) raises :class:`PointError`."""
         if np.ndim(fz) == 0:
             return self._t.cornering_stiffness(float(fz))
         a = np.asarray(fz, dtype=np.float64)
@@ -189,6 +196,11 @@ class Tyre:
 
         Returns ``fx`` (N), ``fy`` (N), ``mz`` (N·m) and, for the Magic
         Formula, ``mx`` and ``my`` (N·m), each with the broadcast shape.
+
+        The points are checked as ``tyre-eval`` checks a points file: a
+        value it refuses raises :class:`PointError` naming the argument,
+        the index in the flattened broadcast arrays and the value; slip
+        ratios beyond ±1 are warned of (``UserWarning``), as it warns.
         """
         args = [fz, kappa, alpha, camber, speed]
         if pressure is not None:

@@ -55,6 +55,19 @@ class ParamError(HandlingError):
     value: Optional[float]
     reason: str
 
+class PointError(HandlingError):
+    """A point ``Tyre.forces`` or ``Tyre.cornering_stiffness`` is given
+    that ``tyre-eval`` refuses in a points file: the first one's
+    ``argument``, ``index`` (in the flattened broadcast arrays), ``value``,
+    ``reason`` and ``problem`` (None for a NaN or infinity); ``refused``:
+    every one as (argument, index, value)."""
+    argument: str
+    index: int
+    value: float
+    reason: str
+    problem: Optional[str]
+    refused: List[Tuple[str, int, float]]
+
 class OptionsError(HandlingError):
     """Options that name nothing known or contradict each other: for an
     unknown name ``what`` (the set), ``name`` and ``known``; ``path`` where

@@ -297,6 +297,10 @@ class Identification(_Report):
     whose model is the tyre's)."""
     rms: Optional[float]
     """RMS of the fit's residual, N (swarm fits)."""
+    sigma_percent: Optional[float]
+    """The fit's headline error σ, % of the measured peak: a swarm fit's
+    ``sigma_percent``, the staged Magic Formula fit's pooled one
+    (``sigma_pooled.sigma_percent``); None where the report has neither."""
     parameters: Optional[List[Dict[str, Any]]]
     """The fitted parameters with their standard errors (swarm fits)."""
     lifted: Optional[Dict[str, Any]]
@@ -306,7 +310,10 @@ class Identification(_Report):
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any], tyre: Any = None) -> "Identification":
-        return _named(cls, d, tyre=tyre)
+        sigma = d.get("sigma_percent")
+        if sigma is None:
+            sigma = (d.get("sigma_pooled") or {}).get("sigma_percent")
+        return _named(cls, d, tyre=tyre, sigma_percent=sigma)
 
 
 class VerdictKind(str, enum.Enum):

@@ -22,6 +22,23 @@ pub(super) struct AboveCritical {
     speed: f64,
     /// The road's friction the stiffness is taken at.
     friction: f64,
+    /// The static axle loads the stiffness is taken at, N (front, rear).
+    loads: [f64; 2],
+}
+
+impl AboveCritical {
+    /// The integration's stall at `at` of `end` (s) of this step, said
+    /// as its divergence.
+    pub(super) fn stalled(&self, at: f64, end: f64) -> crate::error::ScenarioProblem {
+        crate::error::ScenarioProblem::StalledAboveCritical {
+            at,
+            end,
+            gradient: self.gradient,
+            critical: self.critical,
+            speed: self.speed,
+            loads: self.loads,
+        }
+    }
 }
 
 /// The step at `speed` (m/s) of `model` on a road of friction `friction`
@@ -38,6 +55,10 @@ pub(super) fn above_critical(
         critical,
         speed: speed.abs(),
         friction,
+        loads: {
+            let (front, rear) = model.vehicle.static_axle_loads();
+            [front, rear]
+        },
     })
 }
 

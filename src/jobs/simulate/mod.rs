@@ -133,10 +133,24 @@ fn refuse_stalled(path: &Path, sc: &Scenario, sim: &Simulation) -> Result<(), Er
     let Some(w) = sim.work.filter(|w| w.stalled) else {
         return Ok(());
     };
-    let problem = ScenarioProblem::Stalled {
-        at: sim.history.t.last().copied().unwrap_or(f64::NAN),
-        end: sc.manoeuvre.end_time(),
-        steps: w.accepted + w.rejected,
+    let at = sim.history.t.last().copied().unwrap_or(f64::NAN);
+    let end = sc.manoeuvre.end_time();
+    // A step above the critical speed diverges whatever the integrator:
+    // said as such, as the same step run through is (RK4, no load
+    // transfer), not as a model that is not smooth.
+    let above = match &sc.manoeuvre {
+        Manoeuvre::StepSteer(s) => {
+            critical::above_critical(&sc.model, sc.integrator.friction, s.speed)
+        }
+        _ => None,
+    };
+    let problem = match above {
+        Some(a) => a.stalled(at, end),
+        None => ScenarioProblem::Stalled {
+            at,
+            end,
+            steps: w.accepted + w.rejected,
+        },
     };
     Err(InputError::problem(path, InputProblem::Scenario(Box::new(problem))).into())
 }
@@ -357,6 +371,46 @@ fn replayed_piece(c: &CleaningReport) -> Option<String> {
     ))
 }
 
+/// The wheels' lift-offs in words: a wheel off the ground once in one
+/// line with its interval; a wheel off and back many times (a diverging
+/// run on RK4 chatters on and off at each step) in one line with the
+/// count, the first start and the last end, not a line per interval.
+fn lift_off_lines(lift_offs: &[LiftOff]) -> Vec<String> {
+    let name = |w: Wheel| match w {
+        Wheel::FrontLeft => "front left",
+        Wheel::FrontRight => "front right",
+        Wheel::RearLeft => "rear left",
+        Wheel::RearRight => "rear right",
+    };
+    let wheels = [
+        Wheel::FrontLeft,
+        Wheel::FrontRight,
+        Wheel::RearLeft,
+        Wheel::RearRight,
+    ];
+    wheels
+        .into_iter()
+        .filter_map(|w| {
+            let of: Vec<&LiftOff> = lift_offs.iter().filter(|l| l.wheel == w).collect();
+            let (first, last) = (of.first()?, of.last()?);
+            Some(match of.len() {
+                1 => format!(
+                    "  wheel lift-off: {} off the ground from {:.3} s to {:.3} s",
+                    name(w),
+                    first.start,
+                    first.end
+                ),
+                n => format!(
+                    "  wheel lift-off: {} off the ground {n} times between {:.3} s and {:.3} s (history.csv has each row)",
+                    name(w),
+                    first.start,
+                    last.end
+                ),
+            })
+        })
+        .collect()
+}
+
 impl SimulateReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
@@ -372,19 +426,7 @@ impl SimulateReport {
         // The four loads always add up to the weight; a wheel at zero load
         // has lifted off, and the 2-DOF model then carries its axle on one
         // wheel.
-        out.extend(self.lift_offs.iter().map(|l| {
-            format!(
-                "  wheel lift-off: {} off the ground from {:.3} s to {:.3} s",
-                match l.wheel {
-                    Wheel::FrontLeft => "front left",
-                    Wheel::FrontRight => "front right",
-                    Wheel::RearLeft => "rear left",
-                    Wheel::RearRight => "rear right",
-                },
-                l.start,
-                l.end
-            )
-        }));
+        out.extend(lift_off_lines(&self.lift_offs));
         if let Some(r) = &self.replay {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));

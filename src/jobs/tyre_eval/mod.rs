@@ -44,6 +44,9 @@
 //! speed, its residual torque alone; (`radius.rs`) a loaded radius above
 //! the free radius at the point's speed, with what drives it.
 
+mod at_points;
+pub use at_points::{refused_points, slip_past_lock, PointRefused};
+pub use slip_ratio::SlipPastLock;
 mod camber;
 mod checks;
 mod columns;

@@ -50,7 +50,8 @@ pub fn channel_shares(
     let before: Vec<f64> = rows.iter().map(|(s, k)| weight(s.before, s, *k)).collect();
     let after: Vec<f64> = rows.iter().map(|(s, k)| weight(s.after, s, *k)).collect();
     let (tb, ta) = (before.iter().sum::<f64>(), after.iter().sum::<f64>());
-    if !(tb > 0.0) {
+    // A zero (or NaN) total leaves no share to give.
+    if tb.is_nan() || tb <= 0.0 {
         return Vec::new();
     }
     rows.iter()

@@ -140,7 +140,13 @@ fn a_peak_on_a_clipped_or_filled_yaw_rate_is_withheld() {
         for key in ["yaw_rate_peak_time", "yaw_rate_overshoot", "tb"] {
             assert!(j[key].is_null(), "{name}: {key} {} {w}", j[key]);
         }
-        assert!(w.contains(why) && w.contains("withheld"), "{name}: {w}");
+        // The clipped samples are flat at 0.058 whatever the noise below it:
+        // the warning may name either reason.
+        let flat = w.contains("flat at its largest value");
+        assert!(
+            (w.contains(why) || flat) && w.contains("withheld"),
+            "{name}: {w}"
+        );
         let o = run(&["metrics", csv.to_str().unwrap()]);
         let text = String::from_utf8_lossy(&o.stdout).to_string();
         assert!(!text.contains("overshoot             <"), "{text}");

@@ -100,7 +100,7 @@ fn the_channel_that_carries_most_of_the_combined_error_is_named_with_its_share()
     let ay = shares.iter().find(|x| x["channel"] == "ay").unwrap();
     let p = ay["before_percent"].as_f64().unwrap();
     assert!(p > 200.0 / 3.0, "{ay}");
-    let line = format!("ay carries {p:.0} % of the base model");
+    let line = format!("ay {p:.0} % of the base model");
     assert!(stdout.contains(&line), "{line}\n{stdout}");
     let page = fs::read_to_string(out.join("report.html")).unwrap();
     assert!(page.contains(&line), "the page names it too");

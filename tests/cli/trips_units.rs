@@ -178,7 +178,7 @@ fn a_lateral_acceleration_in_g_is_refused_at_its_column() {
         scale: [1.0, 1.0, 1.0 / 9.80665],
         ..SI
     });
-    assert!(e.contains("run.csv:213:5: column `ay`: 0.10"), "{e}");
+    assert!(e.contains("run.csv:244:5: column `ay`: 0.2276"), "{e}");
     assert!(
         e.contains("`ay` is a median 0.102 of it, where a car's lateral acceleration is about speed × yaw_rate: is `ay` in g? multiply it by 9.81"),
         "{e}"

@@ -5,15 +5,16 @@
 //! `J`, [`crate::diagnose::model::channels::ChannelErrors::combined`]).
 //! Unlike [`crate::diagnose::report::summary::dominant`], a channel's
 //! steady offset is counted here: this is the error each fit minimises,
-//! as it is, so a channel that carries most of it decides the fit whatever
-//! part of it an offset is. Shares in percent.
+//! as it is. Whether a channel decides every fit is `dominant`'s to say,
+//! with the offset aside (one number a sensor bias fits), so the line
+//! here gives the shares without that judgement. Shares in percent.
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::{ChannelNoise, Part, Shrinkage};
 use serde::Serialize;
 
-/// A channel carrying more than this share of `J²` decides the fit: the
-/// report says so (the same two thirds as
+/// A channel carrying more than this share of `J²` has its shares said
+/// (the same two thirds as
 /// [`crate::diagnose::report::summary::DOMINANT_SHARE`]).
 pub const CARRIES_SHARE: f64 = 2.0 / 3.0;
 
@@ -85,7 +86,7 @@ pub fn carries_line(shares: &[ChannelShare]) -> Option<String> {
         return None;
     }
     let mut said = format!(
-        "combined error by channel (each channel's held-out samples over its noise floor, its steady offset counted): {}",
+        "combined error by channel (each channel's held-out samples over its noise floor, its steady offset counted: whether a channel decides every fit is judged with its offset aside): {}",
         phase(&before, "the base model's")
     );
     if let Some(a) = &after {
@@ -107,14 +108,11 @@ fn phase(v: &[(Channel, f64)], whose: &str) -> String {
     };
     match v.split_first() {
         Some(((c, p), rest)) if *p > 100.0 * CARRIES_SHARE => format!(
-            "{} carries {p:.0} % of {whose} J² ({}), more than two thirds: it decides the fit",
+            "{} {p:.0} % of {whose} J² ({}), more than two thirds",
             c.name(),
             list(rest)
         ),
-        _ => format!(
-            "no channel carries more than two thirds of {whose} J² ({})",
-            list(&v)
-        ),
+        _ => format!("no channel above two thirds of {whose} J² ({})", list(&v)),
     }
 }
 
@@ -174,12 +172,9 @@ mod tests {
         let sum: f64 = s.iter().map(|x| x.before_percent).sum();
         assert!((sum - 100.0).abs() < 1e-9);
         let line = carries_line(&s).unwrap();
+        assert!(line.contains("ay 91 % of the base model's J²"), "{line}");
         assert!(
-            line.contains("ay carries 91 % of the base model's J²"),
-            "{line}"
-        );
-        assert!(
-            line.contains("no channel carries more than two thirds of the verdict's J²"),
+            line.contains("no channel above two thirds of the verdict's J²"),
             "{line}"
         );
         // Without a verdict no after share, and samples weigh: ten times
@@ -191,7 +186,7 @@ mod tests {
         let s = channel_shares(&parts, &noise, false);
         assert_eq!(s[0].after_percent, None);
         assert!((s[0].before_percent - 100.0 * 1000.0 / 1010.0).abs() < 1e-9);
-        assert!(carries_line(&s).unwrap().contains("yaw_rate carries 99 %"));
+        assert!(carries_line(&s).unwrap().contains("yaw_rate 99 %"));
         // Balanced channels: no line.
         let parts = [
             row(Channel::YawRate, 10, 0.002, 0.0),

@@ -326,6 +326,20 @@ pub(crate) fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::V
     )
 }
 
+/// Diagnoses each campaign into its own `out` folder, all at once (each
+/// `diagnose` is its own process); stdout and diagnosis.json in order.
+pub(crate) fn diagnosed_together(
+    campaigns: &[std::path::PathBuf],
+) -> Vec<(String, serde_json::Value)> {
+    std::thread::scope(|s| {
+        let jobs: Vec<_> = campaigns
+            .iter()
+            .map(|c| s.spawn(move || diagnose_to(c, &c.join("out"))))
+            .collect();
+        jobs.into_iter().map(|j| j.join().unwrap()).collect()
+    })
+}
+
 pub(crate) fn simulate_err(dir: &Path) -> String {
     fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }

@@ -64,13 +64,7 @@ fn a_synthesised_steering_ratio_is_named_on_three_seeds_with_its_gain() {
             c
         })
         .collect();
-    let results: Vec<(String, serde_json::Value)> = std::thread::scope(|s| {
-        let jobs: Vec<_> = campaigns
-            .iter()
-            .map(|c| s.spawn(move || diagnose_to(c, &c.join("out"))))
-            .collect();
-        jobs.into_iter().map(|j| j.join().unwrap()).collect()
-    });
+    let results = diagnosed_together(&campaigns);
     for (said, d) in &results {
         let (effects, gain) = named_gain(said, d);
         assert_eq!(effects, ["steering_ratio"], "{said}");

@@ -73,13 +73,7 @@ fn a_synthesised_mount_yaw_is_named_on_three_seeds_with_its_angle() {
             c
         })
         .collect();
-    let results: Vec<(String, serde_json::Value)> = std::thread::scope(|s| {
-        let jobs: Vec<_> = campaigns
-            .iter()
-            .map(|c| s.spawn(move || diagnose_to(c, &c.join("out"))))
-            .collect();
-        jobs.into_iter().map(|j| j.join().unwrap()).collect()
-    });
+    let results = diagnosed_together(&campaigns);
     for (said, d) in &results {
         let (effects, angle, _) = named_angle(said, d);
         assert_eq!(effects, ["mount_yaw"], "{said}");

@@ -260,22 +260,8 @@ pub(crate) fn fit_channel_holding(
     hold: &[(String, f64)],
 ) -> Result<Fit, Error> {
     let t0 = Instant::now();
-    let names = channel.names(start);
-    let held: Vec<bool> = names
-        .iter()
-        .map(|n| hold.iter().any(|(h, _)| h == n))
-        .collect();
-    let start = &{
-        let mut t = start.clone();
-        let mut p = channel.parameters(&t);
-        for (name, v) in hold {
-            if let Some(i) = names.iter().position(|n| n == name) {
-                p[i] = *v;
-            }
-        }
-        channel.set(&mut t, &p);
-        t
-    };
+    let (start, held) = holding(start, channel, hold);
+    let start = &start;
     // A held value the model refuses (a negative friction) is refused
     // before the fit, at its name, not fitted around.
     if held.iter().any(|h| *h) {
@@ -337,6 +323,27 @@ pub(crate) fn fit_channel_holding(
     } else {
         fit
     })
+}
+
+/// `start` with the parameters of `channel`'s block named in `hold` (name,
+/// value in the model's units) set to their values, and which of the
+/// block's parameters, in its order, are so held; a name of another
+/// channel's block is left as it is.
+fn holding(start: &Tyre, channel: Channel, hold: &[(String, f64)]) -> (Tyre, Vec<bool>) {
+    let names = channel.names(start);
+    let held: Vec<bool> = names
+        .iter()
+        .map(|n| hold.iter().any(|(h, _)| h == n))
+        .collect();
+    let mut t = start.clone();
+    let mut p = channel.parameters(&t);
+    for (name, v) in hold {
+        if let Some(i) = names.iter().position(|n| n == name) {
+            p[i] = *v;
+        }
+    }
+    channel.set(&mut t, &p);
+    (t, held)
 }
 
 /// The covariance of the free parameters `p` of `problem` from its

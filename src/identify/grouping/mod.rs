@@ -39,19 +39,22 @@
 //! Units: N, rad, Pa, m/s; slip ratio dimensionless.
 //!
 //! Layout: `levels.rs` finds the levels of one variable; this file selects
-//! and groups the samples into conditions and thins them into fit points.
+//! and groups the samples into conditions; `thin.rs` thins each into fit
+//! points.
 
 mod fitted;
 pub(crate) mod levels;
+mod thin;
 
 pub use super::data::SlipAxis;
 pub use levels::{levels, Level, Levels, Variable};
 
-use super::data::{Condition, RigData, RigPoint};
+use super::data::{Condition, RigData};
 use crate::error::{InputError, InputProblem, SampleAccount};
 use crate::format::{plural, readable};
 use serde::Serialize;
 use std::path::Path;
+use thin::{resolved_bin, thin, SweepColumns};
 
 /// Grouping and thinning settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -304,34 +307,53 @@ fn selection(
     })
 }
 
-/// The slip and force columns of the sweep along `axis`, and the aligning
-/// moment (cornering only).
-struct SweepColumns<'a> {
-    axis: SlipAxis,
-    slip: &'a [f64],
-    force: &'a [f64],
-    mz: Option<&'a [f64]>,
+/// The samples of a file sorted into conditions: each condition's (load,
+/// camber, pressure) level indices with its samples, by pressure, camber,
+/// load; and the samples no condition holds, counted.
+struct Sorted {
+    groups: Vec<(fitted::Key, Vec<usize>)>,
+    /// Samples between the levels of a variable (a ramp).
+    transitions: usize,
+    /// Samples at levels the selection leaves out.
+    not_selected: usize,
 }
 
-impl<'a> SweepColumns<'a> {
-    fn of(d: &'a RigData, axis: SlipAxis) -> Option<Self> {
-        Some(match axis {
-            SlipAxis::Angle => Self {
-                axis,
-                slip: &d.alpha,
-                force: &d.fy,
-                mz: d.mz.as_deref(),
-            },
-            SlipAxis::Ratio => {
-                let (kappa, fx) = d.longitudinal.as_ref()?;
-                Self {
-                    axis,
-                    slip: kappa,
-                    force: fx,
-                    mz: None,
-                }
-            }
-        })
+/// The samples of `d` sorted into the conditions at its `[loads, cambers]`
+/// and `pressures` levels that `selection` keeps.
+fn sorted(
+    d: &RigData,
+    [loads, cambers]: [&Levels; 2],
+    pressures: Option<&Levels>,
+    selection: &Selection,
+) -> Sorted {
+    let mut groups: Vec<(fitted::Key, Vec<usize>)> = Vec::new();
+    let (mut transitions, mut not_selected) = (0, 0);
+    for i in 0..d.len() {
+        let p_val = d.pressure.as_ref().map(|p| p[i]);
+        let l = loads.find(d.fz[i]);
+        let c = cambers.find(d.camber[i]);
+        let p = match (pressures, p_val) {
+            (Some(levels), Some(v)) => levels.find(v).map(Some),
+            _ => Some(None),
+        };
+        let (Some(l), Some(c), Some(p)) = (l, c, p) else {
+            transitions += 1;
+            continue;
+        };
+        if !selection.keeps(l, c, p) {
+            not_selected += 1;
+            continue;
+        }
+        match groups.iter_mut().find(|e| e.0 == (l, c, p)) {
+            Some(e) => e.1.push(i),
+            None => groups.push(((l, c, p), vec![i])),
+        }
+    }
+    groups.sort_by_key(|e| (e.0 .2, e.0 .1, e.0 .0));
+    Sorted {
+        groups,
+        transitions,
+        not_selected,
     }
 }
 
@@ -355,45 +377,16 @@ pub fn group(
         .as_ref()
         .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
     let selection = selection(&refuse, d, g, &loads, &cambers, pressures.as_ref())?;
-    // (load, camber, pressure) level indices and the samples there.
-    let mut groups: Vec<(fitted::Key, Vec<usize>)> = Vec::new();
-    let (mut transitions, mut not_selected) = (0, 0);
-    for i in 0..d.len() {
-        let p_val = d.pressure.as_ref().map(|p| p[i]);
-        let l = loads.find(d.fz[i]);
-        let c = cambers.find(d.camber[i]);
-        let p = match (&pressures, p_val) {
-            (Some(levels), Some(v)) => levels.find(v).map(Some),
-            _ => Some(None),
-        };
-        let (Some(l), Some(c), Some(p)) = (l, c, p) else {
-            transitions += 1;
-            continue;
-        };
-        if !selection.keeps(l, c, p) {
-            not_selected += 1;
-            continue;
-        }
-        match groups.iter_mut().find(|e| e.0 == (l, c, p)) {
-            Some(e) => e.1.push(i),
-            None => groups.push(((l, c, p), vec![i])),
-        }
-    }
-    groups.sort_by_key(|e| (e.0 .2, e.0 .1, e.0 .0));
+    let Sorted {
+        groups,
+        transitions,
+        not_selected,
+    } = sorted(d, [&loads, &cambers], pressures.as_ref(), &selection);
     let asked = match axis {
         SlipAxis::Angle => g.alpha_bin,
         SlipAxis::Ratio => g.kappa_bin,
     };
-    // A bin so fine that a slip's bin number passes 2⁵² is below the
-    // resolution of the data's doubles: every sample is a bin of its own
-    // there, and the numbers would saturate an integer and merge the
-    // curve into a few points. It keeps every sample.
-    let below_resolution = asked > 0.0
-        && columns
-            .slip
-            .iter()
-            .any(|v| (v / asked).abs() >= RESOLVED_BINS);
-    let bin = if below_resolution { 0.0 } else { asked };
+    let (bin, below_resolution) = resolved_bin(asked, columns.slip);
     let nominals = fitted::Nominals::of(d, &groups);
     let conditions: Vec<Condition> = groups
         .into_iter()
@@ -425,48 +418,6 @@ pub fn group(
     };
     debug_assert_eq!(report.used + transitions + not_selected, report.samples);
     Ok(Grouped { conditions, report })
-}
-
-/// The largest bin number a slip's bin may reach for the bins to be
-/// resolved: 2⁵², beyond which a double's integers are its values.
-const RESOLVED_BINS: f64 = 4_503_599_627_370_496.0;
-
-/// The fit points of the samples `idx` on the sweep `s`: the mean of the
-/// samples in each slip bin of width `bin` (each sample its own point when
-/// `bin` is 0). A bin with one sample keeps it as it is.
-fn thin(
-    d: &RigData,
-    s: &SweepColumns,
-    idx: &[usize],
-    bin: f64,
-    default_speed: f64,
-) -> Vec<RigPoint> {
-    let speed = |i: usize| d.speed.as_ref().map_or(default_speed, |v| v[i]);
-    let mz = |i: usize| s.mz.map_or(f64::NAN, |m| m[i]);
-    // A sample's values in a fixed order (slip, load, camber, speed, force,
-    // moment) so that a bin's means are sums over the same samples in
-    // recording order.
-    let values = |i: usize| [s.slip[i], d.fz[i], d.camber[i], speed(i), s.force[i], mz(i)];
-    let point = |[slip, fz, camber, speed, force, mz]: [f64; 6]| match s.axis {
-        SlipAxis::Angle => RigPoint::lateral(slip, fz, camber, speed, force, mz),
-        SlipAxis::Ratio => RigPoint::longitudinal(slip, fz, camber, speed, force),
-    };
-    if bin <= 0.0 {
-        return idx.iter().map(|&i| point(values(i))).collect();
-    }
-    let mut bins: std::collections::BTreeMap<i64, ([f64; 6], usize)> = Default::default();
-    for &i in idx {
-        let e = bins
-            .entry((s.slip[i] / bin).round() as i64)
-            .or_insert(([0.0; 6], 0));
-        for (acc, v) in e.0.iter_mut().zip(values(i)) {
-            *acc += v;
-        }
-        e.1 += 1;
-    }
-    bins.into_values()
-        .map(|(sum, n)| point(sum.map(|v| v / n as f64)))
-        .collect()
 }
 
 #[cfg(test)]

@@ -165,26 +165,11 @@ impl fmt::Display for HoldReason {
                 ..
             } => write!(
                 f,
-                "stopped at its {} bound {} when fitted ({}; its physical box {} to {}): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing: {}",
-                if bound == lo { "lower" } else { "upper" },
-                exact(*bound),
-                readable(*fitted, 5),
-                exact(*lo),
-                exact(*hi),
+                "{}: {}",
+                stopped_at_bound(*bound, (*lo, *hi), *fitted),
                 held_at(&format!("the {source}"), *stated, *held, None)
             ),
-            HoldReason::Levels { need, have } => {
-                let why: Vec<String> = need
-                    .iter()
-                    .zip(have)
-                    .zip(["load", "camber", "pressure"])
-                    .filter(|((want, have), _)| usize::from(**want) > **have)
-                    .map(|((want, have), what)| {
-                        format!("needs {want} {what} levels, the data have {have}")
-                    })
-                    .collect();
-                f.write_str(&why.join(", "))
-            }
+            HoldReason::Levels { need, have } => f.write_str(&lacking_levels(need, have)),
             HoldReason::ByDesign { design } => f.write_str(design.why()),
             HoldReason::Given => f.write_str("given with --hold"),
             HoldReason::NotIdentifiable {
@@ -239,6 +224,33 @@ impl fmt::Display for HoldReason {
             ),
         }
     }
+}
+
+/// Why a parameter stopped at `bound` of its physical box `(lo, hi)` when
+/// fitted to `fitted` has no value from the data: the sentence before the
+/// value it is held at.
+fn stopped_at_bound(bound: f64, (lo, hi): (f64, f64), fitted: f64) -> String {
+    format!(
+        "stopped at its {} bound {} when fitted ({}; its physical box {} to {}): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing",
+        if bound == lo { "lower" } else { "upper" },
+        exact(bound),
+        readable(fitted, 5),
+        exact(lo),
+        exact(hi),
+    )
+}
+
+/// The levels a term needs and the rows lack: for each of load, camber
+/// and pressure whose `need` exceeds what the rows `have`, both counts.
+fn lacking_levels(need: &[u8; 3], have: &[usize; 3]) -> String {
+    let why: Vec<String> = need
+        .iter()
+        .zip(have)
+        .zip(["load", "camber", "pressure"])
+        .filter(|((want, have), _)| usize::from(**want) > **have)
+        .map(|((want, have), what)| format!("needs {want} {what} levels, the data have {have}"))
+        .collect();
+    why.join(", ")
 }
 
 /// The effect of one standard error, % of the channel's RMS, past which

@@ -157,6 +157,29 @@ impl RollDynamics {
     }
 }
 
+/// Whose a fitted parameter after the axle characteristics is: an
+/// effect's, whose [`Parameter`] in the registry holds its off value and
+/// search bounds, or the roll dynamics' ([`RollDynamics`]), whose off
+/// values are the campaign's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Group {
+    /// The effect's parameter.
+    Effect(EffectKind),
+    /// The roll dynamics' parameter.
+    Roll,
+}
+
+impl Group {
+    /// The group's name, before the parameter's in a report
+    /// (`effect.parameter`, `roll.frequency`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Group::Effect(e) => e.name(),
+            Group::Roll => "roll",
+        }
+    }
+}
+
 /// Whether `value` lies on the lower (`Some(false)`) or upper (`Some(true)`)
 /// of `bounds`, within 1e-9 of their span (the bounded fits stop exactly
 /// on a bound they press against), or on neither.

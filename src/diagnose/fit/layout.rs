@@ -10,7 +10,7 @@
 //! ([`Layout::model`]) and its dual twin ([`crate::diagnose::fit::tangent`])
 //! are the same arithmetic. Units: SI, rad.
 
-use crate::diagnose::effects::{EffectKind, Parameter, RollDynamics};
+use crate::diagnose::effects::{EffectKind, Group, Parameter, RollDynamics};
 use crate::diagnose::model::axles::{axle_tyres, AXLE_BOUNDS};
 use crate::diagnose::model::Augmented;
 use crate::scalar::Scalar;
@@ -117,8 +117,8 @@ impl Layout {
     }
 
     /// The parameters after the axle characteristics, in vector order,
-    /// each with the name of its group (the effect's, or `roll`).
-    pub fn parameters(&self) -> impl Iterator<Item = (&'static str, &'static Parameter)> + '_ {
+    /// each with its group (the effect's, or the roll dynamics').
+    pub fn parameters(&self) -> impl Iterator<Item = (Group, &'static Parameter)> + '_ {
         let roll = if self.fits_roll() {
             RollDynamics::PARAMETERS
         } else {
@@ -126,8 +126,8 @@ impl Layout {
         };
         self.kinds
             .iter()
-            .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)))
-            .chain(roll.iter().map(|q| ("roll", q)))
+            .flat_map(|&e| e.parameters().iter().map(move |q| (Group::Effect(e), q)))
+            .chain(roll.iter().map(|q| (Group::Roll, q)))
     }
 
     /// The effects vector `p` sets on `base` (the base model's effects), in
@@ -184,7 +184,7 @@ mod tests {
         assert_eq!(l.axles(), 0..3);
         assert_eq!((l.effect(0), l.effect(1), l.effect(2)), (3..6, 6..8, 8..9));
         assert_eq!((l.effects(), l.roll()), (3..9, 9..11));
-        let names: Vec<&str> = l.parameters().map(|(g, _)| g).collect();
+        let names: Vec<&str> = l.parameters().map(|(g, _)| g.name()).collect();
         assert_eq!(names[names.len() - 3..], ["road_bank", "roll", "roll"]);
         let plain = Layout::new(&[RoadBank], false);
         assert_eq!(

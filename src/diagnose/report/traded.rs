@@ -62,7 +62,7 @@ pub fn traded(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnose::effects::EffectKind;
+    use crate::diagnose::effects::{EffectKind, Group};
 
     fn steer_path(name: &str, value: f64, se: f64) -> ParameterValue {
         let q = EffectKind::SteerPath
@@ -70,7 +70,7 @@ mod tests {
             .iter()
             .find(|q| q.name == name)
             .expect("a steer path parameter");
-        ParameterValue::of("steer_path", q, value, se)
+        ParameterValue::of(Group::Effect(EffectKind::SteerPath), q, value, se)
     }
 
     /// Delay 0.067 ± 0.0117 s and lag 0.033 ± 0.0114 s correlated −0.99:

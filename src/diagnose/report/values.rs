@@ -8,7 +8,7 @@
 //! Values in the parameter's own unit; RMS values in the channel's unit
 //! (rad/s, m/s², rad).
 
-use crate::diagnose::effects::{Bound, Parameter};
+use crate::diagnose::effects::{Bound, Group, Parameter};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::parts::Part;
 use serde::Serialize;
@@ -78,6 +78,12 @@ pub struct ParameterValue {
     /// pair).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub traded: Option<Traded>,
+    /// The effect's parameter in the registry this value is, with its off
+    /// value and search bounds (`None`: a roll dynamics' parameter, whose
+    /// off values are the campaign's, or a value made by name alone,
+    /// [`ParameterValue::plain`]). Not written: the name says it.
+    #[serde(skip)]
+    pub effect_parameter: Option<&'static Parameter>,
 }
 
 /// Which standard error a [`ParameterValue`] reports.
@@ -152,13 +158,13 @@ pub fn jackknife(values: &[f64]) -> Option<f64> {
 pub use crate::optim::bounded::LIMIT_RESOLUTION;
 
 impl ParameterValue {
-    /// Parameter `q` of the effect group `group` fitted to `value` with
-    /// standard error `std_error`, and where it stands: on a bound (a
-    /// search bound as [`Parameter::bound_at`] finds it, a physical limit
-    /// within [`LIMIT_RESOLUTION`] of the range), and determined by the
-    /// runs or not (a standard error missing, or larger than the whole
-    /// range, says the runs do not see it).
-    pub fn of(group: &str, q: &Parameter, value: f64, std_error: f64) -> Self {
+    /// Parameter `q` of `group` fitted to `value` with standard error
+    /// `std_error`, and where it stands: on a bound (a search bound as
+    /// [`Parameter::bound_at`] finds it, a physical limit within
+    /// [`LIMIT_RESOLUTION`] of the range), and determined by the runs or
+    /// not (a standard error missing, or larger than the whole range, says
+    /// the runs do not see it).
+    pub fn of(group: Group, q: &'static Parameter, value: f64, std_error: f64) -> Self {
         let (lo, hi) = q.bounds;
         let near = LIMIT_RESOLUTION * (hi - lo);
         let physical = |limit: Bound, at: bool| (limit == Bound::Physical && at).then_some(limit);
@@ -169,7 +175,13 @@ impl ParameterValue {
             at_bound: bound.is_some(),
             bound,
             determined: std_error.is_finite() && std_error <= hi - lo,
-            ..Self::plain(&format!("{group}.{}", q.name), q.unit, value, std_error)
+            effect_parameter: matches!(group, Group::Effect(_)).then_some(q),
+            ..Self::plain(
+                &format!("{}.{}", group.name(), q.name),
+                q.unit,
+                value,
+                std_error,
+            )
         }
     }
 
@@ -193,6 +205,7 @@ impl ParameterValue {
             fold_noise_std_error: None,
             fold_noise_dof: None,
             traded: None,
+            effect_parameter: None,
         }
     }
 

@@ -200,7 +200,7 @@ impl Baseline {
         )?;
         let (group, q) = layout.parameters().nth(i - at)?;
         Some(RankWarning::FoldsFar {
-            parameter: format!("{group}.{}", q.name),
+            parameter: format!("{}.{}", group.name(), q.name),
             value: p.params[i],
             std_error: p.std_errors[i],
             reported_std_error: p.reported_std_errors()[i],

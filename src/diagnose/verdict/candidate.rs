@@ -7,7 +7,7 @@
 //! [`Layout::combined`]. Units: SI, rad; the roll frequency in Hz.
 
 use crate::diagnose::base::Bases;
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{EffectKind, Group};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::FitOutcome;
 use crate::diagnose::model::axles::AXLE_BOUNDS;
@@ -93,7 +93,7 @@ pub(crate) fn parameter_values(
 ) -> Vec<ParameterValue> {
     let at = layout.effects().start;
     let reported = f.reported_std_errors();
-    let groups: Vec<&str> = layout.parameters().map(|(g, _)| g).collect();
+    let groups: Vec<Group> = layout.parameters().map(|(g, _)| g).collect();
     let mut values: Vec<ParameterValue> = layout
         .parameters()
         .enumerate()

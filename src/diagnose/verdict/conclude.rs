@@ -9,13 +9,13 @@
 //! the channel's unit.
 
 use crate::diagnose::base::identify::NoTyre;
-use crate::diagnose::effects::{same_effects, Bound, EffectKind};
+use crate::diagnose::effects::{same_effects, Bound};
 use crate::diagnose::report::above_noise;
 use crate::diagnose::report::outcome::{EXPLAINS_MOST, FAR_FROM_OFF};
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, FarFromOff,
     NoSignificantGap, NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony,
-    Part, RankWarning, Ranked, Searched, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    Part, RankWarning, Ranked, Refused, Searched, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::calibration::calibration_evidence;
@@ -43,43 +43,15 @@ pub(crate) fn verdict(
         !base_no_tyre.is_empty(),
     );
     match (kind, &found.chosen) {
-        (VerdictKind::Explained, Some(sc)) => {
-            let r = base.rank(sc);
-            let mut warnings = worsened(shrinkage);
-            warnings.extend(left(shrinkage));
-            let on_bound = on_search_bound(&r.parameters);
-            if !on_bound.is_empty() {
-                warnings.push(VerdictWarning::OnSearchBound {
-                    parameters: on_bound,
-                });
-            }
-            warnings.extend(remains(&r, noise_level));
-            let mut evidence = calibration_evidence(&r.parameters, calibrated);
-            // Accepted, its axles are a tyre (a set whose are not is never
-            // chosen): where the base's alone are not, the effects account
-            // for what bent them.
-            if !base_no_tyre.is_empty() {
-                evidence.push(Evidence::AxlesRestored {
-                    no_tyre: base_no_tyre.to_vec(),
-                });
-            }
-            evidence.extend(chosen_over(found, singles, base, &r));
-            evidence.extend(fallback(found, singles, base));
-            Verdict::Explained(Explained {
-                evidence,
-                effects: r.effects,
-                parameters: r.parameters,
-                heldout_error_before: heldout_error,
-                heldout_error_after: r.heldout_error_after,
-                noise_level,
-                reduction_percent: r.reduction_percent,
-                warnings,
-                // Its look-alikes are the report's `confounded`, found
-                // after the verdict (`pipeline` fills them in).
-                confounded_with: None,
-                in_set: Vec::new(),
-            })
-        }
+        (VerdictKind::Explained, Some(sc)) => Verdict::Explained(explained(
+            found,
+            singles,
+            base,
+            base.rank(sc),
+            shrinkage,
+            base_no_tyre,
+            calibrated,
+        )),
         (VerdictKind::NoSignificantGap, _) => Verdict::NoSignificantGap(NoSignificantGap {
             heldout_error,
             noise_level,
@@ -110,24 +82,77 @@ pub(crate) fn verdict(
         _ => Verdict::OutsideLibrary(OutsideLibrary {
             heldout_error,
             noise_level,
-            // The best single on held-out runs (the ranking's first), and
-            // every rule it fails; where it fails none, the search went on
-            // from a simpler one in its place or ended on a set that failed.
-            refused: order.first().map(|&i| {
-                let gave_way = if found.passed_over == Some(i) {
-                    Some(rules::GaveWay::Pressed)
-                } else {
-                    found
-                        .start
-                        .is_some_and(|s| s != i)
-                        .then_some(rules::GaveWay::Idle)
-                };
-                base.refused(&singles[i], gave_way, found.ended.clone())
-            }),
+            refused: order.first().map(|&i| refused(found, singles, base, i)),
             threshold_percent: 100.0 * ACCEPT,
             tyre_class: None,
         }),
     }
+}
+
+/// The verdict that the chosen set, ranked as `r`, explains the gap: its
+/// figures with the warnings a reader needs (channels it worsens or
+/// leaves, parameters on a search bound, a rest above the threshold) and
+/// the evidence for it (calibration, axles it restores to a tyre where the
+/// base's alone are not, what it was chosen over, a pairs fallback).
+fn explained(
+    found: &Search,
+    singles: &[Scored],
+    base: &Baseline,
+    r: Ranked,
+    shrinkage: &[Shrinkage],
+    base_no_tyre: &[NoTyre],
+    calibrated: &Calibrated,
+) -> Explained {
+    let mut warnings = worsened(shrinkage);
+    warnings.extend(left(shrinkage));
+    let on_bound = on_search_bound(&r.parameters);
+    if !on_bound.is_empty() {
+        warnings.push(VerdictWarning::OnSearchBound {
+            parameters: on_bound,
+        });
+    }
+    warnings.extend(remains(&r, base.jn));
+    let mut evidence = calibration_evidence(&r.parameters, calibrated);
+    // Accepted, its axles are a tyre (a set whose are not is never
+    // chosen): where the base's alone are not, the effects account
+    // for what bent them.
+    if !base_no_tyre.is_empty() {
+        evidence.push(Evidence::AxlesRestored {
+            no_tyre: base_no_tyre.to_vec(),
+        });
+    }
+    evidence.extend(chosen_over(found, singles, base, &r));
+    evidence.extend(fallback(found, singles, base));
+    Explained {
+        evidence,
+        effects: r.effects,
+        parameters: r.parameters,
+        heldout_error_before: base.j0,
+        heldout_error_after: r.heldout_error_after,
+        noise_level: base.jn,
+        reduction_percent: r.reduction_percent,
+        warnings,
+        // Its look-alikes are the report's `confounded`, found
+        // after the verdict (`pipeline` fills them in).
+        confounded_with: None,
+        in_set: Vec::new(),
+    }
+}
+
+/// The best single on held-out runs, `singles[i]` (the ranking's first),
+/// outside the library, and every rule it fails; where it fails none, the
+/// search went on from a simpler one in its place (it gave way, pressed
+/// on its search bound or idle) or ended on a set that failed.
+fn refused(found: &Search, singles: &[Scored], base: &Baseline, i: usize) -> Refused {
+    let gave_way = if found.passed_over == Some(i) {
+        Some(rules::GaveWay::Pressed)
+    } else {
+        found
+            .start
+            .is_some_and(|s| s != i)
+            .then_some(rules::GaveWay::Idle)
+    };
+    base.refused(&singles[i], gave_way, found.ended.clone())
 }
 
 /// Of the candidates `ranked` that lower the held-out error below
@@ -141,11 +166,9 @@ fn far_from_off(ranked: impl Iterator<Item = Ranked>, before: f64) -> Option<Far
         for p in r.parameters.iter().filter(|p| {
             p.determined && p.bound.is_none() && p.held.is_none() && !p.unseen && p.std_error > 0.0
         }) {
-            let Some(q) = r.effects.iter().find_map(|e| {
-                e.parameters()
-                    .iter()
-                    .find(|q| format!("{}.{}", e.name(), q.name) == p.name)
-            }) else {
+            // The registry's off value; the roll dynamics' (the
+            // campaign's) are not counted.
+            let Some(q) = p.effect_parameter else {
                 continue;
             };
             let z = (p.value - q.off).abs() / p.std_error;
@@ -186,8 +209,8 @@ fn chosen_over(
         let units: Vec<&str> = pressed.iter().map(|v| v.unit).collect();
         let inside = (verdict.parameters.iter()).filter(|v| units.contains(&v.unit));
         out.push(Evidence::LookalikePressed {
-            pressed_ranges: searched(&p.effects, pressed.iter()),
-            verdict_inside: searched(effects, inside),
+            pressed_ranges: searched(pressed.iter()),
+            verdict_inside: searched(inside),
             pressed,
             effects: p.effects,
             reduction_percent: p.reduction_percent,
@@ -219,20 +242,13 @@ fn chosen_over(
     out
 }
 
-/// The parameters `values` of `effects` with the ranges their fits
-/// searched (a value whose name no effect's parameter has is left out).
-fn searched<'a>(
-    effects: &[EffectKind],
-    values: impl Iterator<Item = &'a ParameterValue>,
-) -> Vec<Searched> {
+/// The effect parameters among `values` with the ranges their fits
+/// searched, the registry's bounds (a roll dynamics' parameter is left
+/// out).
+fn searched<'a>(values: impl Iterator<Item = &'a ParameterValue>) -> Vec<Searched> {
     values
         .filter_map(|v| {
-            let range = effects.iter().find_map(|e| {
-                e.parameters()
-                    .iter()
-                    .find(|q| v.name == format!("{}.{}", e.name(), q.name))
-                    .map(|q| q.bounds)
-            })?;
+            let range = v.effect_parameter?.bounds;
             Some(Searched {
                 name: v.name.clone(),
                 unit: v.unit,
@@ -366,167 +382,4 @@ pub(crate) fn left(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::diagnose::model::channels::Channel;
-
-    fn offset(name: &str, value: f64, std_error: f64) -> ParameterValue {
-        ParameterValue::plain(name, "m/s²", value, std_error)
-    }
-
-    #[test]
-    fn only_a_parameter_on_its_search_bound_is_warned_of_not_one_on_a_physical_limit() {
-        let at = |bound: Option<Bound>| ParameterValue {
-            at_bound: bound.is_some(),
-            bound,
-            ..offset("x", 0.3, 0.01)
-        };
-        let p = [at(Some(Bound::Search)), at(Some(Bound::Physical)), at(None)];
-        assert_eq!(on_search_bound(&p), vec![p[0].clone()]);
-    }
-
-    #[test]
-    fn a_rest_above_the_significance_threshold_is_warned_of_only_where_the_sentence_does_not_say_it(
-    ) {
-        let with = |j: f64, reduction: f64| {
-            let mut r = row(&[EffectKind::SensorDelay], j, true);
-            r.reduction_percent = reduction;
-            remains(&r, 1.0)
-        };
-        // J 1.366 against noise 1.000: above 1.3 × the noise level.
-        let Some(VerdictWarning::GapRemains {
-            heldout_error_after,
-            threshold,
-            left_percent,
-            ..
-        }) = with(1.366, 84.0)
-        else {
-            panic!("no warning at J 1.366");
-        };
-        assert_eq!((heldout_error_after, threshold), (1.366, SIGNIFICANT));
-        assert!((left_percent - 16.0).abs() < 1e-12);
-        // At the threshold and below it, the rest is noise.
-        assert!(with(1.3, 84.0).is_none() && with(1.1, 90.0).is_none());
-        // A verdict that explains part of the gap says the rest in its
-        // sentence: no second word.
-        assert!(with(2.5, 49.9).is_none());
-        assert!(with(2.5, EXPLAINS_MOST).is_some());
-    }
-
-    /// A ranking row of `effects` with held-out error `j` (base 4, noise
-    /// 1), its axles a tyre or not.
-    fn row(effects: &[EffectKind], j: f64, tyre: bool) -> Ranked {
-        let no_tyre = vec![NoTyre::Limit {
-            parameter: "rear cornering coefficient",
-            limit: crate::diagnose::report::AxleLimit::Rigid,
-        }];
-        Ranked {
-            effect: crate::diagnose::effects::joined(effects, "+"),
-            effects: effects.to_vec(),
-            axles: None,
-            prior_weight: None,
-            parameters: Vec::new(),
-            heldout_error_before: 4.0,
-            heldout_error_after: j,
-            heldout_channels: Vec::new(),
-            reduction_percent: 100.0 * (4.0 - j) / 3.0,
-            insample_error_after: j,
-            insample_reduction_percent: 100.0 * (4.0 - j) / 3.0,
-            folds_converged: 8,
-            folds: 8,
-            warnings: if tyre {
-                Vec::new()
-            } else {
-                vec![RankWarning::AxlesNoTyre { no_tyre }]
-            },
-            bic: 0.0,
-            delta_bic: 0.0,
-            global_search: crate::diagnose::fit::GlobalSearch::None,
-        }
-    }
-
-    #[test]
-    fn the_closest_are_the_candidates_whose_axles_are_a_tyre_best_held_out_first_each_set_once() {
-        use EffectKind::{RoadBank, SensorBias, SensorDelay, SteerPath, YawInertia};
-        let rows = vec![
-            // The best on held-out runs, but its axles are no tyre.
-            row(&[RoadBank], 2.0, false),
-            row(&[SensorDelay], 3.5, true),
-            row(&[SensorBias, SteerPath], 3.2, true),
-            // The same set in the other order: said once.
-            row(&[SteerPath, SensorBias], 3.3, true),
-            row(&[YawInertia], 3.9, true),
-            row(&[SteerPath], 3.6, true),
-        ];
-        let c = closest(rows.into_iter());
-        let named: Vec<&[EffectKind]> = c.iter().map(|c| c.effects.as_slice()).collect();
-        assert_eq!(
-            named,
-            [&[SensorBias, SteerPath][..], &[SensorDelay], &[SteerPath]]
-        );
-        assert_eq!(c.len(), CLOSEST);
-        assert!((c[0].reduction_percent - 80.0 / 3.0).abs() < 1e-9);
-        // None whose axles are a tyre: none named.
-        assert!(closest(vec![row(&[RoadBank], 2.0, false)].into_iter()).is_empty());
-    }
-
-    fn shrink(channel: Channel, part: Part, before: f64, after: f64, floor: f64) -> Shrinkage {
-        Shrinkage {
-            channel,
-            part,
-            samples: 1000,
-            before,
-            after,
-            noise_floor: floor,
-            reduction_percent: crate::diagnose::model::channels::reduction(before, after, floor),
-            mean_level: None,
-            runs: Vec::new(),
-        }
-    }
-
-    #[test]
-    fn a_channel_whose_gap_the_effects_leave_is_warned_of_and_not_one_within_noise_or_explained() {
-        use Channel::{Ay, Beta, YawRate};
-        // The sedan analogue: ay and beta fall by 61 % and 84 %, the yaw
-        // rate 10× its noise floor before and after.
-        let rows = [
-            shrink(YawRate, Part::All, 0.0247, 0.0216, 0.0020),
-            shrink(Ay, Part::All, 0.446, 0.184, 0.059),
-            shrink(Beta, Part::All, 0.0147, 0.0032, 0.0022),
-            // Another part's rows are not the channel's verdict.
-            shrink(Ay, Part::Ay { lo: 4.0, hi: 6.0 }, 0.5, 0.5, 0.059),
-        ];
-        let w = left(&rows);
-        assert_eq!(w.len(), 1, "{w:?}");
-        let VerdictWarning::ChannelLeft(c) = &w[0] else {
-            panic!("{w:?}")
-        };
-        assert_eq!(c.channel, YawRate);
-        assert!(
-            (c.removed_percent - 12.64).abs() < 0.01,
-            "{}",
-            c.removed_percent
-        );
-        assert_eq!(c.acceptance_percent, 30.0);
-        // Just at the acceptance: explained; just below: left.
-        let floor = 0.002;
-        let at = |removed: f64| {
-            let before: f64 = 0.02;
-            let gap = (before * before - floor * floor).sqrt() * (1.0 - removed);
-            shrink(
-                YawRate,
-                Part::All,
-                before,
-                (gap * gap + floor * floor).sqrt(),
-                floor,
-            )
-        };
-        assert!(left(&[at(0.301)]).is_empty());
-        assert_eq!(left(&[at(0.299)]).len(), 1);
-        // Within noise after: nothing left; a worsening is its own warning.
-        assert!(left(&[shrink(Beta, Part::All, 0.0147, 0.0021, 0.0022)]).is_empty());
-        let grown = shrink(Beta, Part::All, 0.0147, 0.0200, 0.0022);
-        assert!(left(std::slice::from_ref(&grown)).is_empty());
-        assert_eq!(worsened(&[grown]).len(), 1);
-    }
-}
+mod tests;

@@ -3,7 +3,7 @@
 //! than one it contains.
 
 use super::*;
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{EffectKind, Group};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;
@@ -13,7 +13,7 @@ fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {
     let [_, ay, _] = EffectKind::SensorBias.parameters() else {
         panic!("a sensor bias has three offsets");
     };
-    let p = ParameterValue::of("sensor_bias", ay, 0.0, f64::NAN);
+    let p = ParameterValue::of(Group::Effect(EffectKind::SensorBias), ay, 0.0, f64::NAN);
     assert_eq!(
         parameter(&p),
         "sensor_bias.ay = 0.0000 m/s² (no standard error: not determined by the runs)"
@@ -59,26 +59,32 @@ fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
     let [_, lag] = EffectKind::SteerPath.parameters() else {
         panic!("a steer path has a delay and a lag");
     };
-    let held = ParameterValue::of("steer_path", lag, 0.0, f64::NAN).held(69.8);
+    let held =
+        ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 0.0, f64::NAN).held(69.8);
     assert!(!held.determined && held.held == Some(69.8));
     assert_eq!(
         parameter(&held),
         "steer_path.lag = 0.0000 s (held at its off value: the runs do not determine it, fitted free its standard error 69.8 s exceeds its whole range)"
     );
     // The roll dynamics' off value is the campaign's.
-    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
-    let roll = ParameterValue::of("roll", &frequency, 3.0, f64::NAN).held(5.26);
+    let frequency = &crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of(Group::Roll, frequency, 3.0, f64::NAN).held(5.26);
     assert_eq!(
         parameter(&roll),
         "roll.frequency = 3.0000 Hz (held at the campaign's value: the runs do not determine it, fitted free its standard error 5.26 Hz exceeds its whole range)"
     );
     // A dimensionless parameter carries no unit, not a stray `-`.
-    let scale = crate::diagnose::effects::EffectKind::YawInertia.parameters()[0];
-    let fitted = ParameterValue::of("yaw_inertia", &scale, 1.3038, 3.27e-3);
+    let scale = &EffectKind::YawInertia.parameters()[0];
+    let fitted = ParameterValue::of(
+        Group::Effect(EffectKind::YawInertia),
+        scale,
+        1.3038,
+        3.27e-3,
+    );
     assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 0.00327");
     // Not `1.03e0`: a standard error of 0.01 or more in plain digits.
-    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
-    let roll = ParameterValue::of("roll", &frequency, 3.0, 1.03);
+    let frequency = &crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of(Group::Roll, frequency, 3.0, 1.03);
     assert_eq!(parameter(&roll), "roll.frequency = 3.0000 ± 1.03 Hz");
 }
 
@@ -87,7 +93,12 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
     let [front, _] = EffectKind::RollSteer.parameters() else {
         panic!("roll steer has a front and a rear");
     };
-    let v = ParameterValue::of("roll_steer", front, -0.4112, 4.65e-3);
+    let v = ParameterValue::of(
+        Group::Effect(EffectKind::RollSteer),
+        front,
+        -0.4112,
+        4.65e-3,
+    );
     // Five folds at ±0.02 about -0.41: the jackknife √(4/5·Σd²) = 0.0358.
     let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
     let j = crate::diagnose::report::jackknife(&folds).unwrap();
@@ -114,8 +125,13 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
         None
     );
     // A parameter on a bound has no standard error to understate.
-    let on_bound =
-        ParameterValue::of("roll_steer", front, front.bounds.0, 4.65e-3).with_folds(&folds, None);
+    let on_bound = ParameterValue::of(
+        Group::Effect(EffectKind::RollSteer),
+        front,
+        front.bounds.0,
+        4.65e-3,
+    )
+    .with_folds(&folds, None);
     assert!(!on_bound.understated());
 }
 
@@ -124,7 +140,12 @@ fn folds_the_runs_noise_alone_moves_far_are_not_said_to_understate() {
     let [front, _] = EffectKind::RollSteer.parameters() else {
         panic!("roll steer has a front and a rear");
     };
-    let v = ParameterValue::of("roll_steer", front, -0.4112, 4.65e-3);
+    let v = ParameterValue::of(
+        Group::Effect(EffectKind::RollSteer),
+        front,
+        -0.4112,
+        4.65e-3,
+    );
     let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
     // One run carries most of what determines it: leaving it out moves
     // the fold 5 standard errors by noise alone; 8× the standard error is
@@ -235,7 +256,12 @@ fn a_fit_that_leaves_a_gap_reports_its_fold_spread_where_larger() {
     let [x] = EffectKind::AccelerometerPosition.parameters() else {
         panic!("an accelerometer position has one parameter");
     };
-    let v = ParameterValue::of("accelerometer_position", x, 0.8282, 0.00438);
+    let v = ParameterValue::of(
+        Group::Effect(EffectKind::AccelerometerPosition),
+        x,
+        0.8282,
+        0.00438,
+    );
     // Five folds at ±0.004 about 0.828: the jackknife √(4/5·Σd²) = 0.00716,
     // 1.6× the asymptotic error, below the 3× that says it understates.
     let folds = [0.824, 0.832, 0.828, 0.824, 0.832];

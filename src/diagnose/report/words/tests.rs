@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
-use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::effects::{Bound, EffectKind, Group};
 use crate::diagnose::report::outcome::{
     Evidence, Explained, NoSignificantGap, OutsideLibrary, VerdictWarning,
 };
@@ -418,19 +418,23 @@ fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_o
         panic!("a steer path has a delay and a lag");
     };
     // ±6 s on a delay whose range is 0–0.5 s: the runs do not see it.
-    let p = ParameterValue::of("steer_path", delay, 0.12, 6.0);
+    let p = ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 6.0);
     assert!(!p.determined && !p.at_bound, "{p:?}");
     assert_eq!(
         parameter(&p),
         "steer_path.delay = 0.1200 s (not determined by the runs: its standard error 6.00 s exceeds its whole range)"
     );
     // Up to the whole range it is (a wide one, but a measure).
-    assert!(ParameterValue::of("steer_path", delay, 0.12, 0.5).determined);
-    assert!(!ParameterValue::of("steer_path", delay, 0.12, 0.5001).determined);
-    assert!(!ParameterValue::of("steer_path", delay, 0.12, f64::NAN).determined);
+    assert!(ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 0.5).determined);
+    assert!(
+        !ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 0.5001).determined
+    );
+    assert!(
+        !ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, f64::NAN).determined
+    );
     // A lag of a few microseconds stands on its physical limit 0 (within
     // 1e-4 of its 0.5 s range); 60 µs does not.
-    let on = ParameterValue::of("steer_path", lag, 3e-6, 6.0);
+    let on = ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 3e-6, 6.0);
     assert_eq!(on.bound, Some(Bound::Physical));
     assert!(on.at_bound);
     assert_eq!(
@@ -438,22 +442,22 @@ fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_o
         "steer_path.lag = 3e-6 s (at its physical limit: any smaller value would be negative)"
     );
     assert_eq!(
-        ParameterValue::of("steer_path", lag, 5e-5, 1e-5).bound,
+        ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 5e-5, 1e-5).bound,
         Some(Bound::Physical)
     );
     assert_eq!(
-        ParameterValue::of("steer_path", lag, 6e-5, 1e-5).bound,
+        ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 6e-5, 1e-5).bound,
         None
     );
     // A search bound is where the fit stops, exactly: 1e-4 of the range
     // off a bank's search bound is inside it.
     let bank = &EffectKind::RoadBank.parameters()[0];
     assert_eq!(
-        ParameterValue::of("road_bank", bank, 0.15, f64::NAN).bound,
+        ParameterValue::of(Group::Effect(EffectKind::RoadBank), bank, 0.15, f64::NAN).bound,
         Some(Bound::Search)
     );
     assert_eq!(
-        ParameterValue::of("road_bank", bank, 0.15 - 1e-5, 1e-3).bound,
+        ParameterValue::of(Group::Effect(EffectKind::RoadBank), bank, 0.15 - 1e-5, 1e-3).bound,
         None
     );
 }

@@ -180,36 +180,7 @@ fn fold_at(
 ) -> Option<Bifurcation> {
     let at = axis.with(base, more);
     let red = exact::Reduced::new(model, at);
-    // Simple roots only: the pair is two simple roots a hair before the fold,
-    // as the bisection counted them.
-    let roots = red.simple_roots();
-    let (i, _) = roots
-        .windows(2)
-        .enumerate()
-        .min_by(|(_, x), (_, y)| (x[1] - x[0]).abs().total_cmp(&(y[1] - y[0]).abs()))?;
-    let (a0, a1) = (roots[i], roots[i + 1]);
-    // A third equilibrium as close to the pair as the pair is wide (both
-    // scale as the square root of the distance to the event) means three
-    // meet: a pitchfork, not a fold.
-    let (gap, mid) = (a1 - a0, 0.5 * (a0 + a1));
-    let third = [i.checked_sub(1), Some(i + 2)]
-        .into_iter()
-        .flatten()
-        .filter_map(|k| roots.get(k).copied())
-        .find(|r| (r - mid).abs() < 10.0 * gap);
-    // The merge point: for a pitchfork, the middle one of the three (the
-    // branch that continues through it: on straight running at δ = 0 it is
-    // (0, 0) exactly, where the outer two are √ of the distance away);
-    // for a fold, the extremum of h between the pair's rear slip angles (h
-    // has a double root there at the fold itself).
-    let merge = match third {
-        Some(t) => {
-            let mut three = [a0, a1, t];
-            three.sort_by(f64::total_cmp);
-            three[1]
-        }
-        None => merge_point(&red, a0, a1),
-    };
+    let (merge, third) = merging(&red)?;
     let p = red.at(merge);
     let x = [p.beta, p.yaw_rate];
     let f = residual(model, &at, x);
@@ -217,17 +188,7 @@ fn fold_at(
     let det = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) / jacobian_scale(&j).powi(2);
     // The pair's kinds, a little way into the side that has it.
     let check = axis.with(base, more + 1e-3 * (far - more));
-    let red_c = exact::Reduced::new(model, check);
-    let mut near = red_c.simple_roots();
-    near.sort_by(|x, y| (x - merge).abs().total_cmp(&(y - merge).abs()));
-    let kind_at = |ar: f64| {
-        let q = red_c.at(ar);
-        lagged::classify(model, &check, [q.beta, q.yaw_rate]).kind
-    };
-    let kinds = match near.as_slice() {
-        [x, y, ..] => [kind_at(*x), kind_at(*y)],
-        _ => return None,
-    };
+    let kinds = kinds_near(model, check, merge)?;
     let one_saddle = (kinds[0] == Kind::Saddle) != (kinds[1] == Kind::Saddle);
     // At the fold itself det J = 0: the eigenvalues are 0 and trace J, so
     // the saddle's partner is a node there, of the trace's sign, though a
@@ -261,6 +222,59 @@ fn fold_at(
         kinds,
         verified: one_saddle && res <= 1e-8 && det.abs() <= 1e-3,
     })
+}
+
+/// Where the closest pair of simple roots (rear slip angles) of `red`
+/// merges, and a third root as near the pair as the pair is wide, if any:
+/// then three meet, a pitchfork, not a fold (None: no pair).
+fn merging(red: &exact::Reduced) -> Option<(f64, Option<f64>)> {
+    // Simple roots only: the pair is two simple roots a hair before the fold,
+    // as the bisection counted them.
+    let roots = red.simple_roots();
+    let (i, _) = roots
+        .windows(2)
+        .enumerate()
+        .min_by(|(_, x), (_, y)| (x[1] - x[0]).abs().total_cmp(&(y[1] - y[0]).abs()))?;
+    let (a0, a1) = (roots[i], roots[i + 1]);
+    // A third equilibrium as close to the pair as the pair is wide (both
+    // scale as the square root of the distance to the event) means three
+    // meet: a pitchfork, not a fold.
+    let (gap, mid) = (a1 - a0, 0.5 * (a0 + a1));
+    let third = [i.checked_sub(1), Some(i + 2)]
+        .into_iter()
+        .flatten()
+        .filter_map(|k| roots.get(k).copied())
+        .find(|r| (r - mid).abs() < 10.0 * gap);
+    // The merge point: for a pitchfork, the middle one of the three (the
+    // branch that continues through it: on straight running at δ = 0 it is
+    // (0, 0) exactly, where the outer two are √ of the distance away);
+    // for a fold, the extremum of h between the pair's rear slip angles (h
+    // has a double root there at the fold itself).
+    let merge = match third {
+        Some(t) => {
+            let mut three = [a0, a1, t];
+            three.sort_by(f64::total_cmp);
+            three[1]
+        }
+        None => merge_point(red, a0, a1),
+    };
+    Some((merge, third))
+}
+
+/// The kinds of the two equilibria of condition `check` nearest the rear
+/// slip angle `merge` (None: fewer than two there).
+fn kinds_near(model: &VehicleModel, check: Condition, merge: f64) -> Option<[Kind; 2]> {
+    let red_c = exact::Reduced::new(model, check);
+    let mut near = red_c.simple_roots();
+    near.sort_by(|x, y| (x - merge).abs().total_cmp(&(y - merge).abs()));
+    let kind_at = |ar: f64| {
+        let q = red_c.at(ar);
+        lagged::classify(model, &check, [q.beta, q.yaw_rate]).kind
+    };
+    match near.as_slice() {
+        [x, y, ..] => Some([kind_at(*x), kind_at(*y)]),
+        _ => None,
+    }
 }
 
 /// The extremum of h between two neighbouring roots `a0 < a1` (golden

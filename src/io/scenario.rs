@@ -23,7 +23,7 @@ pub use replay::ReplaySpec;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 pub use step_steer::StepSteerSpec;
-use step_steer::{steady_ay, Amplitude, MAX_RAMP_TIME};
+use step_steer::{steady_ay, Amplitude};
 
 /// Integration settings (`[simulation]`, or `[integrator]`): the method,
 /// the interval of the recorded rows, and Dormand–Prince's tolerances.
@@ -306,17 +306,8 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         f.road.friction,
         &manoeuvre,
     )?;
-    if let Some(name) = f.name.as_deref().filter(|n| !is_folder_name(n)) {
-        let problem = ScenarioProblem::NameNotAFolder { name: name.into() };
-        let span = src.key_span("name");
-        return Err(src.located(span, InputProblem::Scenario(Box::new(problem))));
-    }
-    let name = f.name.clone().unwrap_or_else(|| {
-        path.file_stem()
-            .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
-    });
     Ok(Scenario {
-        name,
+        name: scenario_name(f, src)?,
         model,
         manoeuvre,
         integrator,
@@ -330,6 +321,21 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         unread: src.unread_vehicle_keys(),
         remarks,
     })
+}
+
+/// The scenario's name, which names its output folder: its `name`,
+/// refused at the key where it is no folder name, else the file's stem.
+fn scenario_name(f: &ScenarioFile, src: &TomlSource) -> Result<String, InputError> {
+    if let Some(name) = f.name.as_deref().filter(|n| !is_folder_name(n)) {
+        let problem = ScenarioProblem::NameNotAFolder { name: name.into() };
+        let span = src.key_span("name");
+        return Err(src.located(span, InputProblem::Scenario(Box::new(problem))));
+    }
+    Ok(f.name.clone().unwrap_or_else(|| {
+        src.path
+            .file_stem()
+            .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
+    }))
 }
 
 /// A resolved manoeuvre, the state it starts from and, for a replay, the
@@ -364,28 +370,7 @@ fn step_steer(
     model: &VehicleModel,
     friction: f64,
 ) -> Result<Resolved, InputError> {
-    check(src, speed(s.speed))?;
-    check(src, run_start(s.start))?;
-    check(
-        src,
-        ParamError::in_range(
-            "rise_time",
-            s.rise_time,
-            -1e-12,
-            MAX_RAMP_TIME,
-            Limit::RampTime,
-        ),
-    )?;
-    check(
-        src,
-        ParamError::in_range(
-            "end",
-            s.end,
-            s.start + s.rise_time + 2.0,
-            1e6,
-            Limit::SettleTime,
-        ),
-    )?;
+    check(src, s.timing())?;
     let solve = |ay: f64| {
         model
             .steady_state_for_lateral_acceleration(s.speed, friction, ay)

@@ -1,7 +1,9 @@
 //! A step steer as a scenario file gives it (`kind = "step-steer"`): its
 //! keys, their defaults, and which of its two amplitudes is given.
 
-use crate::error::{InputError, ParamError, ParamReason};
+use super::run_start;
+use crate::error::{InputError, Limit, ParamError, ParamReason};
+use crate::io::limits::speed;
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::vehicle::VehicleModel;
 use serde::Deserialize;
@@ -77,6 +79,29 @@ impl StepSteerSpec {
             }
         };
         Err(param_error(src, Some("manoeuvre"), e))
+    }
+
+    /// Its timing, refused at the first key out of its range: a speed, a
+    /// start in the run, a rise time within ISO 7401's
+    /// ([`MAX_RAMP_TIME`]), and an end that leaves 2 s to settle after
+    /// the ramp.
+    pub(super) fn timing(&self) -> Result<(), ParamError> {
+        speed(self.speed)?;
+        run_start(self.start)?;
+        ParamError::in_range(
+            "rise_time",
+            self.rise_time,
+            -1e-12,
+            MAX_RAMP_TIME,
+            Limit::RampTime,
+        )?;
+        ParamError::in_range(
+            "end",
+            self.end,
+            self.start + self.rise_time + 2.0,
+            1e6,
+            Limit::SettleTime,
+        )
     }
 }
 

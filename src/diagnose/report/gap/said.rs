@@ -112,43 +112,9 @@ pub(super) fn verdict(s: &Said) -> String {
     let mut out = if found.whole {
         whole_gap(s)
     } else if found.any() {
-        let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit}, within three noise floors: {}), but", floors_words(noise_floor, unit));
-        let mut parts = Vec::new();
-        if let Some(w) = found.window {
-            parts.push(stretch_words(w, unit));
-        }
-        if found.bias.significant {
-            parts.push(format!(
-                " a bias of {}, beyond {BIAS_STANDARD_ERRORS} standard errors",
-                bias_words(bias, &found.bias, unit)
-            ));
-        }
-        v += &parts.join("; and");
-        v
+        hidden_gap(s, bias)
     } else {
-        let mut v = format!(
-            "no significant gap: RMS {rms:.4} {unit}, within three noise floors ({})",
-            floors_words(noise_floor, unit)
-        );
-        match s.worst {
-            Some(w) if w.threshold_noise_floors.is_finite() => {
-                v += &format!(
-                    "; no stretch either (the largest {WINDOW} s window {:.1} noise floors, below {:.1})",
-                    w.noise_floors, w.threshold_noise_floors
-                );
-            }
-            // A slow residual over a short run leaves the floor's estimate
-            // too few effective samples for a threshold.
-            Some(w) => {
-                v += &format!(
-                    "; no stretch judged (the largest {WINDOW} s window {:.1} noise floors, but the residual is too slow for the run's length to set a threshold)",
-                    w.noise_floors
-                );
-            }
-            None => {}
-        }
-        v += &format!("; bias {}", bias_words(bias, &found.bias, unit));
-        v
+        no_gap(s, bias)
     };
     if found.whole {
         if let Some(w) = found.window {
@@ -196,6 +162,66 @@ pub(super) fn verdict(s: &Said) -> String {
         }
     }
     out
+}
+
+/// A gap the whole run's RMS does not show, with its residual's mean
+/// `bias`: the stretch and the bias that show it.
+fn hidden_gap(s: &Said, bias: f64) -> String {
+    let Said {
+        unit,
+        rms,
+        noise_floor,
+        found,
+        ..
+    } = *s;
+    let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit}, within three noise floors: {}), but", floors_words(noise_floor, unit));
+    let mut parts = Vec::new();
+    if let Some(w) = found.window {
+        parts.push(stretch_words(w, unit));
+    }
+    if found.bias.significant {
+        parts.push(format!(
+            " a bias of {}, beyond {BIAS_STANDARD_ERRORS} standard errors",
+            bias_words(bias, &found.bias, unit)
+        ));
+    }
+    v += &parts.join("; and");
+    v
+}
+
+/// No gap by any test, with its residual's mean `bias`: the RMS, the
+/// largest window against its threshold, and the bias.
+fn no_gap(s: &Said, bias: f64) -> String {
+    let Said {
+        unit,
+        rms,
+        noise_floor,
+        found,
+        ..
+    } = *s;
+    let mut v = format!(
+        "no significant gap: RMS {rms:.4} {unit}, within three noise floors ({})",
+        floors_words(noise_floor, unit)
+    );
+    match s.worst {
+        Some(w) if w.threshold_noise_floors.is_finite() => {
+            v += &format!(
+                "; no stretch either (the largest {WINDOW} s window {:.1} noise floors, below {:.1})",
+                w.noise_floors, w.threshold_noise_floors
+            );
+        }
+        // A slow residual over a short run leaves the floor's estimate
+        // too few effective samples for a threshold.
+        Some(w) => {
+            v += &format!(
+                "; no stretch judged (the largest {WINDOW} s window {:.1} noise floors, but the residual is too slow for the run's length to set a threshold)",
+                w.noise_floors
+            );
+        }
+        None => {}
+    }
+    v += &format!("; bias {}", bias_words(bias, &found.bias, unit));
+    v
 }
 
 /// The residual as a line through the measured channel, `e ≈ k·m + c`.

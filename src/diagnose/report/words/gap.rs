@@ -5,6 +5,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{above_noise, GapFinding, SIGNIFICANT_NOISE_FLOORS};
+use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::Part;
 
 /// Parts listed, or "nowhere".
@@ -34,31 +35,8 @@ pub(super) fn channel(f: &GapFinding) -> String {
     else {
         return String::new();
     };
-    let said = offset.map_or(String::new(), |o| {
-                format!(
-                    "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), a sensor offset or a bias of the model that the RMS does not single out",
-                    crate::format::signed(o.mean, 4),
-                    channel.unit(),
-                    o.same_sign,
-                    o.runs,
-                    crate::format::fixed(o.floors, 1),
-                    100.0 * o.share
-                )
-            });
-    // A few runs are named: a gap in one run that no part over all runs
-    // isolates ("wrong in: nowhere") is otherwise lost.
-    let which = if (1..=3).contains(significant_runs) && significant_in.len() == *significant_runs {
-        let named: Vec<String> = significant_in
-            .iter()
-            .map(|(run, rms)| {
-                let floors = crate::format::fixed(rms / noise_floor, 1);
-                format!("{run}: {rms:.4} {}, {floors} noise floors", channel.unit())
-            })
-            .collect();
-        format!(" ({})", named.join("; "))
-    } else {
-        String::new()
-    };
+    let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel));
+    let which = runs_named(*channel, *noise_floor, *significant_runs, significant_in);
     let head = format!(
                 "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs{which}",
                 channel.name(),
@@ -115,6 +93,42 @@ pub(super) fn channel(f: &GapFinding) -> String {
         )
     };
     place + &said
+}
+
+/// The clause of a channel's steady offset `o`, after its place.
+fn steady_offset(o: &SteadyOffset, channel: Channel) -> String {
+    format!(
+        "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), a sensor offset or a bias of the model that the RMS does not single out",
+        crate::format::signed(o.mean, 4),
+        channel.unit(),
+        o.same_sign,
+        o.runs,
+        crate::format::fixed(o.floors, 1),
+        100.0 * o.share
+    )
+}
+
+/// The runs a channel's gap is significant in, with their RMS in noise
+/// floors, where they are a few (one to three) and all known: a gap in one
+/// run that no part over all runs isolates ("wrong in: nowhere") is
+/// otherwise lost. Empty otherwise.
+fn runs_named(
+    channel: Channel,
+    noise_floor: f64,
+    significant_runs: usize,
+    significant_in: &[(String, f64)],
+) -> String {
+    if !(1..=3).contains(&significant_runs) || significant_in.len() != significant_runs {
+        return String::new();
+    }
+    let named: Vec<String> = significant_in
+        .iter()
+        .map(|(run, rms)| {
+            let floors = crate::format::fixed(rms / noise_floor, 1);
+            format!("{run}: {rms:.4} {}, {floors} noise floors", channel.unit())
+        })
+        .collect();
+    format!(" ({})", named.join("; "))
 }
 
 /// The terminal's lines for the frequency bands whose yaw-rate response is

@@ -148,71 +148,7 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
     }
     let Some(bound) = p.bound else {
         return if p.determined {
-            let se = p.asymptotic_std_error;
-            let said = format!("{} = {v} ± {}{unit}", p.name, std_error(se));
-            let yardstick = p.fold_yardstick();
-            let spread = p.std_error_basis == StdErrorBasis::FoldSpread;
-            match p.fold_std_error.filter(|_| p.understated()) {
-                // The verdict stands on the fold refits' spread: the words
-                // lead with it, as the JSON's `std_error` does, and give
-                // the asymptotic error in the parenthesis.
-                Some(j) if spread && !removes => format!(
-                    "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}: the asymptotic error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
-                    p.name,
-                    std_error(p.std_error),
-                    j / se,
-                    std_error(se)
-                ),
-                Some(j) if spread => format!(
-                    "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}{}: the runs disagree beyond their noise, which the asymptotic error does not cover)",
-                    p.name,
-                    std_error(p.std_error),
-                    j / se,
-                    std_error(se),
-                    if yardstick <= se {
-                        String::new()
-                    } else {
-                        format!(
-                            " and {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it",
-                            j / yardstick,
-                            std_error(yardstick)
-                        )
-                    }
-                ),
-                // The runs of equal information: the standard error is
-                // what their noise moves the folds by.
-                Some(j) if !removes => format!(
-                    "{said} (the fold refits scatter ± {}, {:.0}× {}: the standard error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
-                    std_error(j),
-                    j / yardstick,
-                    if yardstick <= se {
-                        "it".to_string()
-                    } else {
-                        format!("the ± {} the runs' noise alone moves them by", std_error(yardstick))
-                    }
-                ),
-                Some(j) if yardstick <= se => format!(
-                    "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
-                    std_error(j),
-                    j / se
-                ),
-                Some(j) => format!(
-                    "{said} (the fold refits scatter ± {}, {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)",
-                    std_error(j),
-                    j / yardstick,
-                    std_error(yardstick)
-                ),
-                // The model leaves a gap above noise and the refits scatter
-                // beyond the asymptotic error, though not beyond chance:
-                // the larger is the one reported.
-                None if p.std_error_basis == StdErrorBasis::FoldSpread => format!(
-                    "{} = {v} ± {}{unit} (the fold refits' spread: its held-out error stays above the noise level, and its asymptotic ± {} covers the noise alone)",
-                    p.name,
-                    std_error(p.std_error),
-                    std_error(se)
-                ),
-                None => said,
-            }
+            determined(p, removes, &v, &unit)
         } else if p.std_error.is_finite() {
             format!(
                 "{} = {v}{unit} (not determined by the runs: its standard error {} exceeds its whole range)",
@@ -238,4 +174,76 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
         Bound::Physical => "at its physical limit: a share cannot exceed 1",
     };
     format!("{} = {v}{unit} ({why})", p.name)
+}
+
+/// A determined parameter `p` off its bounds, its value `v` written with
+/// its `unit`: with its standard error, and where the fold refits scatter
+/// beyond what the asymptotic error covers, by how much and what that says
+/// (`removes`: the effect removes something significant).
+fn determined(p: &ParameterValue, removes: bool, v: &str, unit: &str) -> String {
+    let se = p.asymptotic_std_error;
+    let said = format!("{} = {v} ± {}{unit}", p.name, std_error(se));
+    let yardstick = p.fold_yardstick();
+    let spread = p.std_error_basis == StdErrorBasis::FoldSpread;
+    match p.fold_std_error.filter(|_| p.understated()) {
+        // The verdict stands on the fold refits' spread: the words
+        // lead with it, as the JSON's `std_error` does, and give
+        // the asymptotic error in the parenthesis.
+        Some(j) if spread && !removes => format!(
+            "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}: the asymptotic error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
+            p.name,
+            std_error(p.std_error),
+            j / se,
+            std_error(se)
+        ),
+        Some(j) if spread => format!(
+            "{} = {v} ± {}{unit} (the fold refits' spread, {:.0}× the asymptotic ± {}{}: the runs disagree beyond their noise, which the asymptotic error does not cover)",
+            p.name,
+            std_error(p.std_error),
+            j / se,
+            std_error(se),
+            if yardstick <= se {
+                String::new()
+            } else {
+                format!(
+                    " and {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it",
+                    j / yardstick,
+                    std_error(yardstick)
+                )
+            }
+        ),
+        // The runs of equal information: the standard error is
+        // what their noise moves the folds by.
+        Some(j) if !removes => format!(
+            "{said} (the fold refits scatter ± {}, {:.0}× {}: the standard error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
+            std_error(j),
+            j / yardstick,
+            if yardstick <= se {
+                "it".to_string()
+            } else {
+                format!("the ± {} the runs' noise alone moves them by", std_error(yardstick))
+            }
+        ),
+        Some(j) if yardstick <= se => format!(
+            "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
+            std_error(j),
+            j / se
+        ),
+        Some(j) => format!(
+            "{said} (the fold refits scatter ± {}, {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)",
+            std_error(j),
+            j / yardstick,
+            std_error(yardstick)
+        ),
+        // The model leaves a gap above noise and the refits scatter
+        // beyond the asymptotic error, though not beyond chance:
+        // the larger is the one reported.
+        None if p.std_error_basis == StdErrorBasis::FoldSpread => format!(
+            "{} = {v} ± {}{unit} (the fold refits' spread: its held-out error stays above the noise level, and its asymptotic ± {} covers the noise alone)",
+            p.name,
+            std_error(p.std_error),
+            std_error(se)
+        ),
+        None => said,
+    }
 }

@@ -417,38 +417,29 @@ fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_o
     let [delay, lag] = EffectKind::SteerPath.parameters() else {
         panic!("a steer path has a delay and a lag");
     };
+    let steer_path = |q, v, se| ParameterValue::of(Group::Effect(EffectKind::SteerPath), q, v, se);
     // ±6 s on a delay whose range is 0–0.5 s: the runs do not see it.
-    let p = ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 6.0);
+    let p = steer_path(delay, 0.12, 6.0);
     assert!(!p.determined && !p.at_bound, "{p:?}");
     assert_eq!(
         parameter(&p),
         "steer_path.delay = 0.1200 s (not determined by the runs: its standard error 6.00 s exceeds its whole range)"
     );
     // Up to the whole range it is (a wide one, but a measure).
-    assert!(ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 0.5).determined);
-    assert!(
-        !ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, 0.5001).determined
-    );
-    assert!(
-        !ParameterValue::of(Group::Effect(EffectKind::SteerPath), delay, 0.12, f64::NAN).determined
-    );
+    assert!(steer_path(delay, 0.12, 0.5).determined);
+    assert!(!steer_path(delay, 0.12, 0.5001).determined);
+    assert!(!steer_path(delay, 0.12, f64::NAN).determined);
     // A lag of a few microseconds stands on its physical limit 0 (within
     // 1e-4 of its 0.5 s range); 60 µs does not.
-    let on = ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 3e-6, 6.0);
+    let on = steer_path(lag, 3e-6, 6.0);
     assert_eq!(on.bound, Some(Bound::Physical));
     assert!(on.at_bound);
     assert_eq!(
         parameter(&on),
         "steer_path.lag = 3e-6 s (at its physical limit: any smaller value would be negative)"
     );
-    assert_eq!(
-        ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 5e-5, 1e-5).bound,
-        Some(Bound::Physical)
-    );
-    assert_eq!(
-        ParameterValue::of(Group::Effect(EffectKind::SteerPath), lag, 6e-5, 1e-5).bound,
-        None
-    );
+    assert_eq!(steer_path(lag, 5e-5, 1e-5).bound, Some(Bound::Physical));
+    assert_eq!(steer_path(lag, 6e-5, 1e-5).bound, None);
     // A search bound is where the fit stops, exactly: 1e-4 of the range
     // off a bank's search bound is inside it.
     let bank = &EffectKind::RoadBank.parameters()[0];

@@ -1,7 +1,7 @@
 //! The limits every manoeuvre keeps to, wherever it is written (a
 //! scenario's `[manoeuvre]` of any kind, a schedule's elements): a
-//! road-wheel steer, a speed on a road, a steer frequency. Units: rad,
-//! m/s, Hz.
+//! road-wheel steer, a speed on a road, a steer frequency, a start in the
+//! run. Units: rad, m/s, Hz, s.
 
 use crate::error::{Limit, ParamError};
 
@@ -50,4 +50,11 @@ pub(super) fn speed(speed: f64) -> Result<(), ParamError> {
 /// A steer frequency at `key`: at most [`MAX_FREQUENCY`], above `lo`.
 pub(super) fn frequency(key: &str, f: f64, lo: f64) -> Result<(), ParamError> {
     ParamError::in_range(key, f, lo, MAX_FREQUENCY, Limit::SteerFrequency)
+}
+
+/// A manoeuvre's `start`, refused at its own key where no end can follow
+/// it (else the end is blamed for a start it cannot lie after).
+pub(super) fn run_start(start: f64) -> Result<(), ParamError> {
+    ParamError::in_range("start", start, -1e-12, 1e6, Limit::StartBeforeEnd)?;
+    ParamError::non_negative("start", start)
 }

@@ -5,7 +5,7 @@
 //! speeds in m/s.
 
 use super::fitted_ranges::FittedRanges;
-use super::limits::{frequency, road_wheel_steer, speed};
+use super::limits::{frequency, road_wheel_steer, run_start, speed};
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
 use super::tables::{check_vehicle, resolve_model, ResolvedModel};
@@ -191,13 +191,6 @@ fn timing(v: f64, start: f64, end: f64) -> Result<(), ParamError> {
     speed(v)?;
     run_start(start)?;
     ParamError::in_range("end", end, start, 1e6, Limit::EndAfterStart)
-}
-
-/// A manoeuvre's `start`, refused at its own key where no end can follow
-/// it (else the end is blamed for a start it cannot lie after).
-fn run_start(start: f64) -> Result<(), ParamError> {
-    ParamError::in_range("start", start, -1e-12, 1e6, Limit::StartBeforeEnd)?;
-    ParamError::non_negative("start", start)
 }
 
 fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {

@@ -6,8 +6,7 @@
 //! data's doubles thins nothing ([`resolved_bin`]).
 //! Units: N, N·m, rad, Pa, m/s; slip ratio dimensionless.
 
-use super::SlipAxis;
-use crate::identify::data::{RigData, RigPoint};
+use crate::identify::data::{RigData, RigPoint, SlipAxis};
 
 /// The slip and force columns of the sweep along `axis`, and the aligning
 /// moment (cornering only).

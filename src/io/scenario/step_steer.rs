@@ -1,9 +1,8 @@
 //! A step steer as a scenario file gives it (`kind = "step-steer"`): its
 //! keys, their defaults, and which of its two amplitudes is given.
 
-use super::run_start;
 use crate::error::{InputError, Limit, ParamError, ParamReason};
-use crate::io::limits::speed;
+use crate::io::limits::{run_start, speed};
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::vehicle::VehicleModel;
 use serde::Deserialize;

@@ -35,6 +35,25 @@ pub enum FitError {
         /// Free parameters.
         parameters: usize,
     },
+    /// [`FitError::TooFewPoints`] where the slip-angle thinning merged
+    /// samples into bins: how many samples and how wide a bin, so that a
+    /// user told "2 points" of a file with 3 rows sees where the third went.
+    #[error("{} with a measured {quantity} in {} of {}° slip angle (--bin-deg) cannot fit {}; {}", plural(*samples, "sample", "samples"), plural(*points, "bin", "bins"), crate::format::readable(*bin_deg, 3), plural(*parameters, "parameter", "parameters"), match samples > parameters {
+        true => format!("--bin-deg 0 keeps every sample ({samples} points)"),
+        false => format!("every sample kept (--bin-deg 0) would still be no more than {parameters} points: the fit needs more samples"),
+    })]
+    TooFewBins {
+        /// Samples with the quantity measured, before thinning.
+        samples: usize,
+        /// The bins they were thinned to (the fit's points).
+        points: usize,
+        /// The bin, degrees.
+        bin_deg: f64,
+        /// The measured quantity (`lateral force`, …).
+        quantity: &'static str,
+        /// Free parameters.
+        parameters: usize,
+    },
     /// A model without parameters for the quantity.
     #[error("the {model} model has no {quantity} to fit")]
     NothingToFit {

@@ -374,10 +374,16 @@ pub enum InputProblem {
         gaps: Vec<(f64, f64)>,
     },
     /// A runs folder without CSV files.
-    #[error("no measured runs: the runs folder {} holds no *.csv file", folder.display())]
+    #[error("no measured runs: the runs folder {} holds no *.csv file{}", folder.display(), match holds.is_empty() {
+        true => " (it is empty)".to_string(),
+        false => format!(" (it holds {})", holds.join(", ")),
+    })]
     EmptyRunsFolder {
         /// The folder.
         folder: PathBuf,
+        /// What it holds instead, by name (a folder with a trailing `/`):
+        /// a user who put the runs in a subfolder or as `.txt` sees where.
+        holds: Vec<String>,
     },
     /// A run listed twice.
     #[error("the run {} is listed twice (as {} too): each run is held out once", run.display(), also.display())]

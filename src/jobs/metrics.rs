@@ -17,6 +17,7 @@ mod coarse;
 mod declared;
 mod exchanged;
 pub(super) mod filter_speed;
+mod gap_said;
 mod noise_said;
 mod steps;
 
@@ -150,9 +151,12 @@ fn settings_said(
 ) -> Vec<String> {
     let mut out = Vec::new();
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
+        let rate = 1.0 / crate::measured::clean::median_interval(clock);
         out.push(format!(
-            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered",
-            crate::error::Num(f)
+            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered (0.4 × {} Hz = {} Hz; a cutoff at or above it is not applied)",
+            crate::error::Num(f),
+            crate::format::rounded(rate, 3),
+            crate::format::rounded(0.4 * rate, 3)
         ));
     }
     let piece = m.t_end - m.t_start;
@@ -163,6 +167,7 @@ fn settings_said(
         (settings.e1, settings.e2),
     ));
     let dt = crate::measured::clean::median_interval(clock);
+    out.extend(gap_said::piece_ended_by_gap(&m.cleaning, m.t_end, dt));
     out.extend(peak_time_said(&m.metrics, dt));
     out.extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
     // A cutoff suggested is measured through, so that following it is

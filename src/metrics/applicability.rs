@@ -14,7 +14,9 @@
 //! a slide only where the tyres are near their grip: at a crawl a large
 //! steer turns the car about a point near the line of its rear axle, and
 //! its sideslip (`β ≈ b·δ/l`) passes 10° with the tyres barely loaded
-//! ([`KINEMATIC_GRIP`]). Units: rad, m/s and % as in [`StepMetrics`].
+//! ([`KINEMATIC_GRIP`]). Linear tyres have no grip to share: their
+//! largest slip angles judge it instead ([`LINEAR_SLIP`]). Units: rad,
+//! m/s and % as in [`StepMetrics`].
 //!
 //! A schedule is held to what a car on the road can drive
 //! ([`schedule_applicability`]): the 2-DOF model takes the speed as an
@@ -129,7 +131,17 @@ pub enum Overshoot {
     NoSideslip,
     /// Tyres with no friction limit (linear ones): no grip to lose.
     NoGripLimit,
+    /// Linear tyres whose axles' largest |slip angle| anywhere in the run
+    /// is this, rad (front, rear): no grip to lose, and a sideslip beyond
+    /// [`SLIDING_SIDESLIP`] is judged by them, not by itself (within
+    /// [`LINEAR_SLIP`] it is the turn's geometry).
+    LinearSlip([f64; 2]),
 }
+
+/// The slip angle within which a linear tyre stands for a real one, rad
+/// (3°): the least of the 3–10° at which real tyres' forces peak, so that
+/// every road or racing tyre is still short of its peak there.
+pub const LINEAR_SLIP: f64 = 3.0 * std::f64::consts::PI / 180.0;
 
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
 /// m/s², the lower axle's peak at static load, road friction included):
@@ -156,7 +168,7 @@ pub fn applicability_with_grip(
     let simulated = matches!(grip, Some(Grip::Tyres(_)))
         || matches!(
             overshoot,
-            Some(Overshoot::GripUsed(_) | Overshoot::NoGripLimit)
+            Some(Overshoot::GripUsed(_) | Overshoot::NoGripLimit | Overshoot::LinearSlip(_))
         );
     for (name, time) in [
         ("yaw rate", Some(m.yaw_rate_response_time)),
@@ -176,12 +188,44 @@ pub fn applicability_with_grip(
         let share = grip
             .zip(m.ay_steady)
             .map(|(g, ay)| (ay.abs() / g.accel(), g));
-        let gripless = matches!(overshoot, Some(Overshoot::NoGripLimit));
+        let gripless = matches!(
+            overshoot,
+            Some(Overshoot::NoGripLimit | Overshoot::LinearSlip(_))
+        );
+        // Linear tyres are judged by their slip angles: a crawl's 10°
+        // sideslip at 0.05° of slip is the turn's geometry (β ≈ b·δ/l),
+        // and was said to take the tyres beyond their range.
+        let linear_slip = match overshoot {
+            Some(Overshoot::LinearSlip(slip)) => Some(slip),
+            _ => None,
+        };
         out.push(match (share.filter(|s| s.0 < KINEMATIC_GRIP), speed) {
+            _ if linear_slip.is_some_and(|s| s[0].max(s[1]) <= LINEAR_SLIP)
+                && speed.is_some() =>
+            {
+                let [front, rear] = linear_slip.unwrap_or_default();
+                format!(
+                    "the steady sideslip is {:.1}°, beyond 10°, {}",
+                    beta.to_degrees(),
+                    kinematic_turn_because(
+                        &format!(
+                            "the linear tyres' slip angles stay within {}° (front) and {}° (rear), short of the 3° where real tyres' forces begin to peak",
+                            crate::format::significant(front.to_degrees(), 2),
+                            crate::format::significant(rear.to_degrees(), 2)
+                        ),
+                        speed.unwrap_or_default(),
+                        m.steer_step
+                    )
+                )
+            }
             // Linear tyres have no grip to slide past.
             _ if gripless => format!(
-                "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity (a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
-                beta.to_degrees()
+                "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity ({}a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
+                beta.to_degrees(),
+                linear_slip.map_or_else(String::new, |s| format!(
+                    "the largest is {}°; ",
+                    crate::format::significant(s[0].max(s[1]).to_degrees(), 2)
+                ))
             ),
             (Some((share, g)), Some(u)) => format!(
                 "the steady sideslip is {:.1}°, beyond 10°, {}",
@@ -230,7 +274,7 @@ fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>
             "the yaw rate overshoots its steady value by {percent:.0} % with the sideslip within ±{:.1}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
             beta.to_degrees()
         ),
-        Some(Overshoot::NoGripLimit) => format!(
+        Some(Overshoot::NoGripLimit | Overshoot::LinearSlip(_)) => format!(
             "the yaw rate overshoots its steady value by {percent:.0} % on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response (the yaw damping falls with speed{at}, and soft tyres lower it); {ringing}"
         ),
         Some(Overshoot::NoSideslip) => format!(
@@ -246,9 +290,21 @@ fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>
 /// sideslip. A slow car's sideslip is the geometry of its turn, so what
 /// limits the turn is the steer, and the lock beside it says how close.
 pub(crate) fn kinematic_turn(share: f64, whose: &str, speed: f64, steer: f64) -> String {
+    kinematic_turn_because(
+        &format!(
+            "the tyres use no more than {:.0} % of {whose}",
+            100.0 * share
+        ),
+        speed,
+        steer,
+    )
+}
+
+/// [`kinematic_turn`] with its evidence `why` (the grip used, or a linear
+/// tyre's slip angles) given in words.
+fn kinematic_turn_because(why: &str, speed: f64, steer: f64) -> String {
     format!(
-        "but no slide: the tyres use no more than {:.0} % of {whose}, and at {:.2} m/s the {:.1}° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip",
-        100.0 * share,
+        "but no slide: {why}, and at {:.2} m/s the {:.1}° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip",
         speed.abs(),
         steer.to_degrees()
     )

@@ -1,7 +1,23 @@
 //! The zero-phase low-pass `handling metrics` runs over a measured record
 //! before its metrics: a second-order Butterworth section (bilinear
 //! transform, pre-warped; Butterworth 1930) run forward and backward, so
-//! that no crossing moves. Units: s, Hz; the channel's own.
+//! that no crossing moves; and the rate it must stay below to be applied
+//! ([`FILTER_LIMIT`]). Units: s, Hz; the channel's own.
+
+/// The share of the sampling rate a low-pass must stay below to be
+/// applied: at or above it the run is left unfiltered (a Butterworth
+/// designed near Nyquist has its poles at the unit circle).
+pub(crate) const FILTER_LIMIT: f64 = 0.4;
+
+/// Whether a low-pass at `hz` is below [`FILTER_LIMIT`] of the rate of
+/// samples `dt` (s) apart. A logger's times are decimal numbers a binary
+/// float does not hold (0.02 s is 0.0199999… or 0.0200000…1), so the
+/// median interval of a 50 Hz log can put 0.4 × its rate a hair above
+/// 20 Hz: the comparison allows 1 ppm, and 20 Hz on a 50 Hz log is at
+/// the limit, as the book says (`--filter-hz 20` had filtered it).
+pub(crate) fn below_filter_limit(hz: f64, dt: f64) -> bool {
+    hz * dt < FILTER_LIMIT * (1.0 - 1e-6)
+}
 
 /// Zero-phase low-pass: a second-order Butterworth section (bilinear
 /// transform, pre-warped) run forward then backward, each pass started in

@@ -8,7 +8,7 @@
 //!
 //! Units: s, rad, rad/s, m/s² as in [`super::StepMetrics`].
 
-use super::filter::zero_phase_low_pass;
+use super::filter::{below_filter_limit, zero_phase_low_pass};
 use super::noise::{held_noise_scale, noise_deviation, noise_gain, HeldEvery};
 use super::settling::{sideslip_scale, verdict, ChannelSettling};
 use super::variance::total_variance;
@@ -108,7 +108,9 @@ struct LowPass {
 impl LowPass {
     fn of(t: &[f64], s: &MetricSettings) -> Self {
         let dt = crate::measured::clean::median_interval(t);
-        let hz = s.filter_hz.filter(|f| *f > 0.0 && *f < 0.4 / dt);
+        let hz = s
+            .filter_hz
+            .filter(|f| *f > 0.0 && below_filter_limit(*f, dt));
         LowPass { dt, hz }
     }
 

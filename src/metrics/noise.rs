@@ -79,7 +79,7 @@ pub(super) fn held_noise_scale(every: usize, dt: f64, filter_hz: Option<f64>) ->
     }
     let k = every as f64;
     let filtered = filter_hz.map_or(1.0, |f| {
-        let at_updates = match f < 0.4 / (k * dt) {
+        let at_updates = match super::filter::below_filter_limit(f, k * dt) {
             true => noise_gain(k * dt, f),
             false => 1.0,
         };

@@ -173,10 +173,11 @@ impl Figure {
         let mut text = String::new();
         {
             let root = SVGBackend::with_string(&mut text, self.size()).into_drawing_area();
-            self.draw_on(&root).map_err(|e| OutputError::Draw {
-                path: for_file.to_path_buf(),
-                detail: e.to_string(),
-            })?;
+            self.draw_on(&root, Raster::Vector)
+                .map_err(|e| OutputError::Draw {
+                    path: for_file.to_path_buf(),
+                    detail: e.to_string(),
+                })?;
         }
         Ok(text)
     }
@@ -221,7 +222,7 @@ impl Figure {
         let mut rgb = vec![0u8; 3 * w as usize * h as usize];
         {
             let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-            self.draw_on(&root)?;
+            self.draw_on(&root, Raster::Pixels)?;
         }
         let mut png = Vec::new();
         super::encode::write_png(&mut png, w, h, &rgb)?;
@@ -232,6 +233,7 @@ impl Figure {
     fn draw_on<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
+        raster: Raster,
     ) -> Result<(), Box<dyn std::error::Error>>
     where
         DB::ErrorType: 'static,
@@ -252,7 +254,7 @@ impl Figure {
             })
             .collect();
         for (k, (area, panel)) in areas.iter().zip(&self.panels).enumerate() {
-            draw_panel(area, panel, keyed_columns[k % self.columns])?;
+            draw_panel(area, panel, keyed_columns[k % self.columns], raster)?;
         }
         root.present()?;
         Ok(())
@@ -276,6 +278,7 @@ fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
     key_room: bool,
+    raster: Raster,
 ) -> Result<(), Box<dyn std::error::Error>>
 where
     DB::ErrorType: 'static,
@@ -335,7 +338,7 @@ where
         .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
     for s in &panel.series {
-        draw_series(&mut chart, s)?;
+        draw_series(&mut chart, s, raster)?;
     }
     if let Some(side) = side {
         super::legend::draw(&side, &panel.series)?;
@@ -348,9 +351,42 @@ where
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
+/// What a figure is drawn on: pixels (PNG) or vector paths (SVG).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Raster {
+    /// A bitmap.
+    Pixels,
+    /// SVG text.
+    Vector,
+}
+
+/// The segments of a line through `points` as its pixels on `chart` give
+/// them: consecutive points on one pixel merged (a segment of no length
+/// has no direction to widen it along).
+fn pixel_segments<DB: DrawingBackend>(
+    chart: &Chart<'_, DB>,
+    points: &[(f64, f64)],
+) -> Vec<[(f64, f64); 2]> {
+    let mut out = Vec::with_capacity(points.len());
+    let mut last: Option<((f64, f64), (i32, i32))> = None;
+    for &p in points {
+        let px = chart.backend_coord(&p);
+        match last {
+            Some((_, q)) if q == px => {}
+            Some((from, _)) => {
+                out.push([from, p]);
+                last = Some((p, px));
+            }
+            None => last = Some((p, px)),
+        }
+    }
+    out
+}
+
 fn draw_series<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     s: &Series,
+    raster: Raster,
 ) -> Result<(), Box<dyn std::error::Error>>
 where
     DB::ErrorType: 'static,
@@ -358,6 +394,19 @@ where
     let c = palette(s.color);
     let all = || s.x.iter().copied().zip(s.y.iter().copied());
     match s.style {
+        // On a bitmap, plotters fills a line wider than a pixel as one
+        // polygon round the whole path, which a noisy trace folds over
+        // itself: the even-odd fill left holes, and a replay's measured
+        // forward speed was drawn as a broken line. Each segment is its
+        // own polygon there; SVG strokes the path as it is.
+        Style::Line if raster == Raster::Pixels => {
+            let segments = pixel_segments(chart, &thin(&s.x, &s.y, 4000));
+            chart.draw_series(
+                segments
+                    .into_iter()
+                    .map(|seg| PathElement::new(seg.to_vec(), c.stroke_width(2))),
+            )?;
+        }
         Style::Line => {
             chart.draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?;
         }

@@ -137,7 +137,16 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let mut inputs = vec![file.clone()];
     let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
     let prior = axle_prior(&src, f.tyres.as_ref(), &tyres)?;
-    let mut folder_notes = Vec::new();
+    // A `[tyres]` with `front` only runs it on both axles, as a scenario's.
+    let mut folder_notes: Vec<String> = f
+        .tyres
+        .as_ref()
+        .filter(|t| t.file.is_none() && t.front.is_some() && t.rear.is_none() && t.rig.is_none())
+        .map(|_| {
+            "[tyres] gives `front` only: the rear axle runs on the front file too, at its own static load, as a scenario's `rear` defaults to its `front`".to_string()
+        })
+        .into_iter()
+        .collect();
     let files = run_files(
         &src,
         f.runs.as_ref(),
@@ -502,11 +511,16 @@ fn base_tyres(
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
             return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
         }
-        (None, Some(fr), Some(re), None) => {
-            let (fr, re) = (beside(base, fr), beside(base, re));
-            inputs.extend([fr.clone(), re.clone()]);
+        // `rear` defaults to `front`, as a scenario's does (noted where
+        // the campaign is read); a campaign had refused it.
+        (None, Some(fr), re, None) => {
+            let (fr, re) = (beside(base, fr), beside(base, re.as_ref().unwrap_or(fr)));
+            inputs.push(fr.clone());
             src.referenced_tyre("tyres.front", &fr, true)?;
-            src.referenced_tyre("tyres.rear", &re, true)?;
+            if spec.rear.is_some() {
+                inputs.push(re.clone());
+                src.referenced_tyre("tyres.rear", &re, true)?;
+            }
             let (front, rear) = static_wheel_loads(&f.vehicle);
             let (mut f, mut r) = (load_axle_tyre(&fr, front)?.0, load_axle_tyre(&re, rear)?.0);
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;

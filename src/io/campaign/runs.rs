@@ -71,18 +71,18 @@ pub(super) fn run_files(
             });
         found.sort();
         skipped.sort();
+        let names: Vec<String> = skipped
+            .iter()
+            .map(|p| {
+                let name = p.file_name().unwrap_or_default().to_string_lossy();
+                if p.is_dir() {
+                    format!("{name}/")
+                } else {
+                    name.into_owned()
+                }
+            })
+            .collect();
         if !skipped.is_empty() {
-            let names: Vec<String> = skipped
-                .iter()
-                .map(|p| {
-                    let name = p.file_name().unwrap_or_default().to_string_lossy();
-                    if p.is_dir() {
-                        format!("{name}/")
-                    } else {
-                        name.into_owned()
-                    }
-                })
-                .collect();
             notes.push(format!(
                 "{}: {} entr{} not read ({}): the runs are the *.csv files of the folder itself",
                 d.display(),
@@ -96,6 +96,7 @@ pub(super) fn run_files(
                 file,
                 InputProblem::EmptyRunsFolder {
                     folder: d.to_path_buf(),
+                    holds: names,
                 },
             ));
         }

@@ -55,7 +55,9 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let (fit, stages) = two_stage::beside_direct(asks_two_stage, &conditions, &settings, || {
         fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
     });
-    let fit = fit.map_err(on_data(o, None))?;
+    let fit = fit
+        .map_err(|e| thinned_too_far(e, &grouped.report))
+        .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         file: String::new(),
@@ -198,6 +200,32 @@ fn later_fits(
         curvature_hold::hold_curvature(o, r, tyre0, inputs.settings)?;
     }
     further::aligning_and_longitudinal(o, r, inputs)
+}
+
+/// Too few points where the slip-angle bins merged samples, said with
+/// the samples and the bin ([`FitError::TooFewBins`]): three rows 0.0025
+/// rad apart, two of them in one 0.25° bin, were said as "2 points".
+fn thinned_too_far(e: Error, report: &crate::identify::grouping::GroupingReport) -> Error {
+    match e {
+        Error::Fit(FitError::TooFewPoints {
+            points,
+            quantity,
+            parameters,
+        }) if report.used > points
+            && report.slip_axis == crate::identify::grouping::SlipAxis::Angle
+            && report.slip_bin > 0.0 =>
+        {
+            FitError::TooFewBins {
+                samples: report.used,
+                points,
+                bin_deg: report.slip_bin.to_degrees(),
+                quantity,
+                parameters,
+            }
+            .into()
+        }
+        e => e,
+    }
 }
 
 /// The grouping the options ask for (load, pressure, camber selected;

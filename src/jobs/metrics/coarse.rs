@@ -249,10 +249,17 @@ pub fn coarse_said(m: &StepMetrics, dt: f64, steer_rise: f64) -> Vec<String> {
         ));
     }
     // The median interval of a log may read a hair under its period.
-    if dt >= VARIANCE_COARSE * (1.0 - 1e-6) || unresolved {
+    let coarse = dt >= VARIANCE_COARSE * (1.0 - 1e-6);
+    if coarse || unresolved {
         let ay = m.ay_total_variance.is_some();
+        // The advice fits the log: a 50 Hz log of an unresolved step was
+        // told to log at 20 Hz or faster, which it already did.
+        let advice = match coarse {
+            true => "log at 20 Hz or faster, and ramp the step over a few intervals, to compare them",
+            false => "here the step, rising within one interval, not the log's rate, causes it: ramp the step over a few intervals to compare them",
+        };
         said.push(format!(
-            "E_r{} are integrals over samples {interval} s apart ({hz} Hz){}: they are biased by where the samples fall on the step ({} read E_r {}{}): log at 20 Hz or faster, and ramp the step over a few intervals, to compare them",
+            "E_r{} are integrals over samples {interval} s apart ({hz} Hz){}: they are biased by where the samples fall on the step ({} read E_r {}{}): {advice}",
             if ay { ", E_ay and Er" } else { "" },
             match unresolved {
                 true => ", of a step faster than one interval",

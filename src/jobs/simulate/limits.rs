@@ -6,9 +6,13 @@
 //! lateral acceleration beyond [`ANY_TYRE_AY`] g of the car's weight plus
 //! its down-force (a racing slick on a dry road reaches about 1.5 g
 //! without down-force), which a linear tyre gives at any steer. Slip
-//! angles are printed wrapped to (−180°, 180°]: the small-angle model's
-//! `α = δ − β − a·r/u` of a spinning car runs past a turn. Units: rad,
-//! m/s², N; printed in degrees and g.
+//! angles are printed as the history holds them, the largest and its
+//! time: the small-angle model's `α = δ − β − a·r/u` of a spinning car
+//! runs past a turn (34 rad, 1952°, at the end of an oversteering linear
+//! car's run above its critical speed), and beyond a quarter turn it is
+//! said as the model's number, no angle a tyre sees. A wrapped value
+//! (180.0° said of that run) matched no column of `history.csv`.
+//! Units: rad, m/s², N; printed in degrees and g.
 
 use crate::constants::G;
 use crate::io::Scenario;
@@ -35,32 +39,38 @@ pub(super) fn wrapped(a: f64) -> f64 {
     }
 }
 
-/// A wrapped angle `a` (rad) in degrees to 0.1°, a turn's −180.0° (the
-/// rounding of −179.96°) said as 180.0°: the interval is (−180°, 180°].
-fn degrees(a: f64) -> String {
-    match format!("{:.1}", a.to_degrees()) {
-        s if s == "-180.0" => "180.0".into(),
-        s => s,
+/// A slip angle `a` (rad, as the history holds it) in words: degrees to
+/// 0.1°; beyond a quarter turn with its radians too and said as the
+/// small-angle model's number, which no tyre sees as an angle.
+fn slip_words(a: f64) -> String {
+    match a.abs() > PI / 2.0 {
+        false => format!("{:.1}°", a.to_degrees()),
+        true => format!(
+            "{:.0}° ({} rad: the small-angle model's α = δ − β − a·r/u of a car turned past a quarter turn, no angle a tyre sees)",
+            a.to_degrees(),
+            crate::format::significant(a, 4)
+        ),
     }
 }
 
 /// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest
-/// (wrapped), when, and from when; `friction` is each axle's peak
-/// friction coefficient, infinite for a tyre with no limit (linear).
+/// (as the history holds it), when, and from when; `friction` is each
+/// axle's peak friction coefficient, infinite for a tyre with no limit
+/// (linear).
 pub(super) fn axle_sliding(h: &TimeHistory, friction: [f64; 2]) -> Vec<String> {
     [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
         .into_iter()
         .zip(friction)
         .filter_map(|((axle, alpha), mu)| {
-            let from = alpha.iter().position(|v| wrapped(*v).abs() > SLIDING_SLIP)?;
+            let from = alpha.iter().position(|v| v.abs() > SLIDING_SLIP)?;
             let (i, a) = alpha
                 .iter()
-                .map(|v| wrapped(*v))
+                .copied()
                 .enumerate()
                 .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
             let reach = format!(
-                "the {axle} axle's slip angle reaches {}° at t = {:.2} s (beyond 15° from t = {:.2} s)",
-                degrees(a),
+                "the {axle} axle's slip angle reaches {} at t = {:.2} s (beyond 15° from t = {:.2} s)",
+                slip_words(a),
                 h.t[i],
                 h.t[from]
             );
@@ -120,5 +130,13 @@ mod tests {
         assert!((wrapped(-PI) - PI).abs() < 1e-12);
         assert!((wrapped(deg(28.3)) - deg(28.3)).abs() < 1e-15);
         assert!((wrapped(deg(540.0)) - PI).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_slip_angle_past_a_quarter_turn_is_said_as_the_history_holds_it() {
+        // The oversteering linear car at 35 m/s ends its run at 34.07 rad.
+        let said = slip_words(34.066_583_8);
+        assert!(said.starts_with("1952° (34.07 rad: "), "{said}");
+        assert_eq!(slip_words(-0.5), "-28.6°");
     }
 }

@@ -8,6 +8,7 @@ pub(crate) mod checks;
 pub(crate) mod critical;
 mod grid_peak;
 mod idle_effects;
+mod layout;
 mod limits;
 pub(crate) mod nominal_load;
 mod straight;
@@ -260,10 +261,16 @@ fn applicability(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) 
             grip.map(Grip::Tyres),
             match peak_share {
                 Some(share) => Some(Overshoot::GripUsed(share)),
-                None => checks::gripless(sc).then_some(Overshoot::NoGripLimit),
+                // Linear tyres are judged by their largest slip angles.
+                None => checks::gripless(sc).then(|| Overshoot::LinearSlip(largest_slip(h))),
             },
         )
     })
+}
+
+/// Each axle's largest |slip angle| in the run, rad (front, rear).
+fn largest_slip(h: &TimeHistory) -> [f64; 2] {
+    [&h.alpha_front, &h.alpha_rear].map(|a| a.iter().fold(0.0, |m: f64, v| m.max(v.abs())))
 }
 
 /// What the manoeuvre and its metrics say of themselves: a step still
@@ -318,6 +325,8 @@ fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
 /// notes are returned.
 fn run_checks(sc: &Scenario, h: &TimeHistory, warnings: &mut Vec<String>) -> Vec<String> {
     let mut said = checks::checks(sc, h);
+    // A layout no car has, first: the rest is read on it.
+    warnings.extend(layout::layout_warnings(&sc.model.vehicle));
     warnings.append(&mut said.warnings);
     warnings.extend(unfitted::longitudinal_only(sc));
     warnings.extend(unfitted::tir_lateral_unfitted(sc));

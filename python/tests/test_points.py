@@ -45,6 +45,25 @@ def test_forces_refuse_each_point_the_cli_refuses_by_argument_and_index(mf, kw, 
     assert err.refused[0] == (argument, index, err.value) or value is None
 
 
+def test_forces_refuse_one_pressure_in_bar_among_pressures_in_pa_at_its_index(mf):
+    # The median (2.3e5 Pa) is a tyre's, so the array passes as a whole;
+    # its third value, 2.4 bar, is refused at its index as tyre-eval
+    # refuses that cell of a points file (it was evaluated at 2.4 Pa).
+    with pytest.raises(handling.PointError) as e:
+        mf.forces(fz=4000.0, alpha=0.05, pressure=[2.2e5, 2.3e5, 2.4])
+    err = e.value
+    assert (err.argument, err.index, err.value) == ("pressure", 2, 2.4), str(err)
+    assert err.refused == [("pressure", 2, 2.4)]
+    assert err.problem is not None and "bar" in err.reason
+    assert "pressure[2]: " in str(err) and "1 point refused" in str(err)
+    # Cells in two units: each refused at its own index.
+    with pytest.raises(handling.PointError) as e:
+        mf.forces(fz=4000.0, alpha=0.05, pressure=[2.2e5, 2.2, 220.0])
+    assert [(a, i) for a, i, _ in e.value.refused] == [("pressure", 1), ("pressure", 2)]
+    f = mf.forces(fz=4000.0, alpha=0.05, pressure=[2.2e5, 2.3e5, 2.4e5])
+    assert np.all(np.isfinite(f["fy"]))
+
+
 def test_forces_name_every_refused_point_in_index_order(mf):
     with pytest.raises(handling.PointError) as e:
         mf.forces(fz=[4000.0, 4000.0, np.inf], alpha=[3.0, 0.0, 0.0], speed=[10.0, -5.0, 10.0])

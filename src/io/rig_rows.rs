@@ -33,14 +33,27 @@ pub(crate) fn refuse_rows_not_in_pa(
     p: &[f64],
     known: Option<Known>,
 ) -> Result<(), InputError> {
+    let errors = rows_not_in_pa(p, known)
+        .into_iter()
+        .map(|(i, slip)| file.error_at(path, i, "pressure", slip.into()))
+        .collect();
+    InputError::all_of(path, errors).map_or(Ok(()), Err)
+}
+
+/// Every positive pressure of `p` below [`MIN_MEDIAN_PRESSURE`] (its
+/// index, 0-based) and why: a value written in kPa, bar or psi among
+/// pressures in Pa, with the reading that lands among the pressures
+/// `known` (of the tyre, else half to twice the median of `p`). The rule
+/// of [`refuse_rows_not_in_pa`], for a caller holding arrays rather than
+/// a file (the Python `Tyre.forces`). Run once the median has passed.
+pub(crate) fn rows_not_in_pa(p: &[f64], known: Option<Known>) -> Vec<(usize, UnitSlip)> {
     let mut sorted: Vec<f64> = p.iter().copied().filter(|v| *v > 0.0).collect();
     sorted.sort_by(f64::total_cmp);
     let Some(&median) = sorted.get(sorted.len() / 2) else {
-        return Ok(());
+        return Vec::new();
     };
     let known = known.unwrap_or(([0.5 * median, 2.0 * median], "half to twice the median"));
-    let errors = p
-        .iter()
+    p.iter()
         .enumerate()
         .filter(|(_, v)| **v > 0.0 && **v < MIN_MEDIAN_PRESSURE)
         .map(|(i, &value)| {
@@ -53,10 +66,9 @@ pub(crate) fn refuse_rows_not_in_pa(
                 // that lands it among any pneumatic tyre's is still said.
                 meant: meant(value, known).or_else(|| meant(value, INFLATION)),
             };
-            file.error_at(path, i, "pressure", slip.into())
+            (i, slip)
         })
-        .collect();
-    InputError::all_of(path, errors).map_or(Ok(()), Err)
+        .collect()
 }
 
 /// The first reading of `value` in kPa, bar or psi that lands among the

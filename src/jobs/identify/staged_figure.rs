@@ -1,10 +1,10 @@
 //! The figure of a staged Magic Formula fit: the measured rows of each
-//! fitted stage as points coloured by condition and the identified tyre
-//! as a black line over them, one line per test condition (load, camber,
+//! fitted stage as hollow rings, a colour per condition (load, camber,
 //! pressure and, for the combined-slip stages, the level of the other
-//! slip), drawn over the
-//! condition's own slip range at its mean load, camber, pressure, speed and
-//! other slip. A panel per stage, camber level and pressure level (and load
+//! slip), and the identified tyre as a line in the condition's colour
+//! drawn over every condition's points: a smooth curve of
+//! [`LINE_POINTS`] slips evenly spaced over the condition's own slip
+//! range, at its mean load, camber, pressure, speed and other slip. A panel per stage, camber level and pressure level (and load
 //! level where the other slip has several levels), each titled with its own
 //! σ = sqrt(Σe²/ΣF²)·100 % over its rows (the stage's σ is over all of
 //! them). The x axis is the slip the stage's rows sweep: the slip ratio
@@ -18,7 +18,7 @@
 use crate::format::{fixed, plural};
 use crate::identify::grouping::{Levels as Named, Variable};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
-use crate::report::plot::{tick_label, Figure, Panel, Series, Style, INK};
+use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style, INK};
 use crate::tyre::mf::MagicFormula;
 
 /// A slip variable: the x of a panel, or the level its lines are drawn at.
@@ -361,7 +361,16 @@ fn panel(
             ..Panel::default()
         };
     }
-    let mut series = key_entries(Style::Points(3), INK);
+    // The key opens with the grey swatches of measured (points) and
+    // fitted (line), then a colour per level: its points and its fitted
+    // line in that colour, so that each curve is read against its own
+    // points (black lines over coloured points could not be told apart).
+    let mut series = key_entries(Style::Points(3), MEASURED);
+    series[0].marker = Some(RING);
+    // Every level's line is drawn after every level's points: a line drawn
+    // before the next level's points lay under them where two curves meet
+    // (the aligning moment's near zero slip and past its peak).
+    let mut lines = Vec::new();
     let (mut e2, mut y2) = (0.0, 0.0);
     let count = if by_other {
         lv.other.len()
@@ -377,23 +386,28 @@ fn panel(
         if at.is_empty() {
             continue;
         }
-        let colour = level_colour(series.len() / 2 - 1);
+        // One colour per level drawn in the panel, none the key's grey.
+        let colour = level_colour(lines.len());
         let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
         let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
         for (r, m) in at.iter().zip(&measured) {
             e2 += (st.model(tyre, r) - m).powi(2);
             y2 += m * m;
         }
-        let label = if by_other {
-            key.x.other().level(lv.other[k])
-        } else {
-            Variable::Load.display(lv.load[k])
-        };
-        series.push(Series::line(&label, &xs, &measured, colour).styled(Style::Points(3)));
+        let label = level_label(key, lv, by_other, k);
         let (lx, ly) = model_line(tyre, st, key.x, &at);
-        // Black over the coloured points, so that a close fit is seen.
-        series.push(Series::line("", &lx, &ly, INK));
+        // The key's entry on the level's line, as the swarm figure's; on
+        // its points where it has no line (a single slip value).
+        let (point_label, line_label) = if lx.is_empty() {
+            (label.as_str(), "")
+        } else {
+            ("", label.as_str())
+        };
+        let points = Series::line(point_label, &xs, &measured, colour).styled(Style::Points(3));
+        series.push(points.marked(RING));
+        lines.push(Series::line(line_label, &lx, &ly, colour));
     }
+    series.extend(lines);
     let sigma = 100.0 * (e2 / y2).sqrt();
     Panel {
         title: key.title(&format!(
@@ -407,6 +421,24 @@ fn panel(
         y_label: channel(st).into(),
         series,
         ..Panel::default()
+    }
+}
+
+/// How a measured row is drawn: a ring, hollow, so that the level's
+/// fitted line, drawn in the same colour over it, is seen through its
+/// points (over filled dots of its colour a close fit's line vanished).
+const RING: Marker = Marker {
+    shape: Shape::Ring,
+    size: 3,
+};
+
+/// The key's name of a panel's `k`-th level: the other slip's level with
+/// `by_other`, else the load, as the terminal spells it.
+fn level_label(key: &Key, lv: &Levels, by_other: bool, k: usize) -> String {
+    if by_other {
+        key.x.other().level(lv.other[k])
+    } else {
+        Variable::Load.display(lv.load[k])
     }
 }
 

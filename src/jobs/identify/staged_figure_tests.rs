@@ -1,7 +1,7 @@
 //! The staged fit's figure measured on what it draws ([`Panel::axes`],
 //! the series' styles): axis ranges against the data's, the fitted model
-//! as a line over each condition's points, each panel's own σ, the x
-//! variable of each stage.
+//! as a line in each condition's colour over every condition's points, a
+//! colour per condition, each panel's own σ, the x variable of each stage.
 
 use super::*;
 use crate::report::plot::Axes;
@@ -121,12 +121,49 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points()
             "{}: a line per condition",
             p.title
         );
+        // Every line drawn after every condition's points, so that no
+        // condition's points hide another's curve.
+        let drawn: Vec<Style> = p
+            .series
+            .iter()
+            .filter(|s| !s.x.is_empty())
+            .map(|s| s.style)
+            .collect();
+        let first_line = drawn.iter().position(|s| *s == Style::Line).unwrap();
+        assert!(
+            drawn[first_line..].iter().all(|s| *s == Style::Line),
+            "{}: {drawn:?}",
+            p.title
+        );
+        // Measured as hollow rings, through which the line is seen.
+        assert!(points.iter().all(|m| m.marker == Some(RING)), "{}", p.title);
+        // A colour per condition, none black nor the key's grey.
+        let mut colours: Vec<usize> = points.iter().map(|m| m.color).collect();
+        colours.sort_unstable();
+        colours.dedup();
+        assert_eq!(colours.len(), points.len(), "{}: {colours:?}", p.title);
+        assert!(colours.iter().all(|c| *c != INK && *c != MEASURED));
         for (m, l) in points.iter().zip(&lines) {
-            // The line in black over the coloured points, in increasing x,
-            // over their slip range.
-            assert_eq!(l.color, INK);
-            assert_ne!(m.color, INK);
+            // The line in its points' colour, a smooth curve (at least 100
+            // slips, far more than the condition's 41 or 20 points) in
+            // increasing x, over their slip range.
+            assert_eq!(l.color, m.color, "{}", p.title);
+            assert!(
+                l.x.len() >= 100 && l.x.len() > 2 * m.x.len(),
+                "{}: {} points on the line, {} measured",
+                p.title,
+                l.x.len(),
+                m.x.len()
+            );
             assert!(l.x.windows(2).all(|w| w[1] > w[0]), "{}", p.title);
+            // Evenly spaced: not the measured points' own slips.
+            let step = l.x[1] - l.x[0];
+            assert!(
+                l.x.windows(2)
+                    .all(|w| (w[1] - w[0] - step).abs() < 1e-9 * step.abs().max(1.0)),
+                "{}",
+                p.title
+            );
             let (mx0, mx1) =
                 m.x.iter()
                     .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
@@ -193,7 +230,16 @@ fn each_panel_reads_its_own_sigma_and_its_stages_slip_with_units() {
         fx.title
     );
     let labels: Vec<&str> = fx.series.iter().map(|s| s.label.as_str()).collect();
-    assert_eq!(labels, ["measured", "fitted", "α 3°", "", "α 8°", ""]);
+    // The levels' entries on their lines, drawn after the points.
+    assert_eq!(labels, ["measured", "fitted", "", "", "α 3°", "α 8°"]);
+    // The key's swatches grey; each level's line in its points' colour.
+    assert_eq!(
+        (fx.series[0].color, fx.series[1].color),
+        (MEASURED, MEASURED)
+    );
+    assert_eq!(fx.series[2].color, fx.series[4].color);
+    assert_eq!(fx.series[3].color, fx.series[5].color);
+    assert_ne!(fx.series[2].color, fx.series[3].color);
     let (lo, hi) = (fx.series[2].x[0], fx.series[2].x[19]);
     assert_eq!((lo, hi), (-20.0, 20.0));
 }

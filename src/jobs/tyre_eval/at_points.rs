@@ -4,14 +4,15 @@
 //! functions — a value that is no finite number, one outside its physical
 //! range or an angle that reads in degrees, a negative speed, a file of
 //! only negative loads (`physical.rs`), a pressure at or below 0 or not in
-//! Pa (`crate::io::rig`), loads in kN — each said at its argument and
+//! Pa (the whole array by its median, or one value among pressures in Pa:
+//! `pressure.rs`), loads in kN — each said at its argument and
 //! index; and the warning the CLI gives of slip ratios beyond ±1
 //! (`slip_ratio.rs`). Units: SI, rad, Pa, as `tyre-eval`'s points file.
 
 use super::slip_ratio::{self, SlipPastLock};
 use super::{physical, pressure};
 use crate::error::InputProblem;
-use crate::io::rig::{load_in_kn, pressure_not_in_pa};
+use crate::io::rig::load_in_kn;
 use crate::tyre::Tyre;
 
 /// One refused value: the argument (`fz`, `kappa`, `alpha`, `camber`,
@@ -72,10 +73,12 @@ pub fn refused_points(tyre: &Tyre, inputs: [&[f64]; 5], pressure: &[f64]) -> Vec
             let low = (0..values.len()).filter(|&i| values[i].is_finite() && values[i] <= 0.0);
             let said = |i: usize| InputProblem::NonPositivePressure { value: values[i] };
             refused.extend(low.map(|i| at(i, Some(said(i)))));
+            // The points file's rule: a column in kPa, bar or psi once,
+            // by its median; a cell so written among pressures in Pa
+            // (2.4 beside 2.2e5 and 2.3e5) at its own index.
             let known = pressure::tyre_pressures(tyre, None);
-            if let Some((i, slip)) = pressure_not_in_pa(values, known) {
-                refused.push(at(i, Some(slip.into())));
-            }
+            let slips = pressure::not_in_pa(values, known).into_iter();
+            refused.extend(slips.map(|(i, slip)| at(i, Some(slip.into()))));
         }
         if argument == "fz" {
             if let Some((i, slip)) = load_in_kn(values, |fz| fz > 0.0) {
@@ -126,5 +129,31 @@ mod tests {
             ("pressure", 0, 2.2)
         );
         assert!(refused_points(&tyre, [&ok, &zero, &zero, &zero, &[16.7; 4]], &[]).is_empty());
+    }
+
+    /// One pressure in bar among pressures in Pa passes the median rule
+    /// (the median, 2.3e5 Pa, is a tyre's): it is refused at its own
+    /// index, as the points file refuses its cell, with the bar reading
+    /// that lands it among the tyre's pressures; the Pa ones pass.
+    #[test]
+    fn a_pressure_in_bar_among_pressures_in_pa_is_refused_at_its_index() {
+        let tyre = Tyre::Linear(crate::tyre::Linear::new(80e3));
+        let ok = [4000.0; 3];
+        let zero = [0.0; 3];
+        let speed = [16.7; 3];
+        let inputs = [&ok[..], &zero, &zero, &zero, &speed];
+        let r = refused_points(&tyre, inputs, &[2.2e5, 2.3e5, 2.4]);
+        let at: Vec<_> = r.iter().map(|r| (r.argument, r.index, r.value)).collect();
+        assert_eq!(at, [("pressure", 2, 2.4)], "{r:?}");
+        let said = r[0].to_string();
+        assert!(
+            said.starts_with("pressure[2]: ") && said.contains("bar"),
+            "{said}"
+        );
+        // Bar and kPa in one array: each cell said in its own unit.
+        let r = refused_points(&tyre, inputs, &[2.2e5, 2.2, 220.0]);
+        let at: Vec<_> = r.iter().map(|r| (r.index, r.value)).collect();
+        assert_eq!(at, [(1, 2.2), (2, 220.0)], "{r:?}");
+        assert!(refused_points(&tyre, inputs, &[2.2e5, 2.3e5, 2.4e5]).is_empty());
     }
 }

@@ -6,7 +6,7 @@
 
 use super::{physical, pressure};
 use crate::error::{Error, InputProblem};
-use crate::io::rig::{load_in_kn, pressure_not_in_pa};
+use crate::io::rig::load_in_kn;
 use std::path::Path;
 
 /// The points file's columns, checked: `fz, kappa, alpha, camber,
@@ -127,15 +127,15 @@ fn refuse_pressure_units(
     pressure: Option<&[f64]>,
     known: Option<pressure::Known>,
 ) -> Result<(), Error> {
-    let mixed = pressure.is_some_and(|p| pressure::mixed_units(p, known));
-    if let Some((i, slip)) = pressure
-        .filter(|_| !mixed)
-        .and_then(|p| pressure_not_in_pa(p, known))
-    {
-        return Err(c.error_at(points, i, "pressure", slip.into()).into());
+    let Some(p) = pressure else {
+        return Ok(());
+    };
+    let errors = pressure::not_in_pa(p, known)
+        .into_iter()
+        .map(|(i, slip)| c.error_at(points, i, "pressure", slip.into()))
+        .collect();
+    match crate::error::InputError::all_of(points, errors) {
+        Some(e) => Err(e.into()),
+        None => Ok(()),
     }
-    if let Some(p) = pressure {
-        pressure::refuse_rows_not_in_pa(points, c, p, known)?;
-    }
-    Ok(())
 }

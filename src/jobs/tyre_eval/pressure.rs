@@ -8,11 +8,11 @@
 //! at where one does, as `identify` answers a level requested in another
 //! unit (`crate::error::LevelSlip`).
 
-use crate::error::MIN_MEDIAN_PRESSURE;
+use crate::error::{UnitSlip, MIN_MEDIAN_PRESSURE};
 use crate::io::fitted_ranges::FittedRanges;
-use crate::io::rig::INFLATION;
-use crate::io::rig_rows::meant;
-pub(super) use crate::io::rig_rows::{refuse_rows_not_in_pa, Known};
+use crate::io::rig::{pressure_not_in_pa, INFLATION};
+pub(super) use crate::io::rig_rows::Known;
+use crate::io::rig_rows::{meant, rows_not_in_pa};
 use crate::tyre::Tyre;
 
 /// The pressures a tyre is known to run at, Pa, and what they are: a
@@ -52,4 +52,21 @@ pub(super) fn mixed_units(p: &[f64], known: Option<Known>) -> bool {
         return false;
     };
     units.any(|u| u != first)
+}
+
+/// The pressures of `p` (Pa) that `tyre-eval` refuses as written in kPa,
+/// bar or psi, read against the pressures `known` of the tyre, each at
+/// its index (0-based) with why: a column in one such unit once, at its
+/// first cell, by its median; else, or where its cells read in different
+/// units (2.2 in bar beside 220 in kPa), every such cell with its own
+/// reading — one cell in bar among pressures in Pa (`[2.2e5, 2.3e5,
+/// 2.4]`) passes the median and is refused at its own index. The one
+/// rule of the points file and of the Python `Tyre.forces`'s arrays.
+pub(super) fn not_in_pa(p: &[f64], known: Option<Known>) -> Vec<(usize, UnitSlip)> {
+    if !mixed_units(p, known) {
+        if let Some(column) = pressure_not_in_pa(p, known) {
+            return vec![column];
+        }
+    }
+    rows_not_in_pa(p, known)
 }

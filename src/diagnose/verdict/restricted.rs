@@ -41,15 +41,22 @@
 //! fits only where every set's `R_r` stays below [`ACCEPT`] −
 //! [`SCREEN_MARGIN`] − [`RESTRICTED_MARGIN`] ([`rules::screened_restricted`]):
 //! ten points more than the full fits' screen, several times what the
-//! coupling was seen to add. Otherwise every set is polished and the full
-//! fits' screening and search run as before (the same fits, from the same
-//! global stages): a step in which a set could be added is decided on full
-//! fits alone, so no set a full fit would accept is dropped for the
-//! restricted fits' sake.
+//! coupling was seen to add. Otherwise only the sets whose restricted fit
+//! stays at or above that are polished ([`screen_step`]): a set below it
+//! would be screened by its full fit too, by the same argument. Where
+//! their full fits are all screened ([`screened_additions`]), so is the
+//! step. Where one is not, the rest are polished too, and the full fits'
+//! search runs as before (the same fits, from the same global stages): a
+//! step in which a set could be added is decided on full fits alone, so no
+//! set a full fit would accept is dropped for the restricted fits' sake.
+//! On the racing log one set of the greedy step from `steer_path`
+//! (`steer_path+steering_ratio`, 15 % in its full fit) had made all 18
+//! sets of the step be polished (`benchmarks.md`).
 //!
 //! The screened rows then report the restricted fits (in-sample error,
-//! share of what the current set leaves, ΔBIC): a lower bound on what the
-//! sets remove, as the rows say.
+//! share of what the current set leaves, ΔBIC) where those screened them,
+//! a lower bound on what the sets remove, as the rows say; the full fits'
+//! where the set was polished.
 
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::problem::Problem;
@@ -61,12 +68,11 @@ use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules;
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{ACCEPT, RESTRICTED_MARGIN, SCREEN_MARGIN};
-use crate::diagnose::verdict::score::{Context, Scored, Started};
-#[cfg(doc)]
-use crate::diagnose::verdict::screening::screened_additions;
-use crate::diagnose::verdict::screening::screened_row;
+use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
+use crate::diagnose::verdict::screening::{screened_additions, screened_row};
 use crate::optim::bounded::{BoundedLm, Jacobians};
 use crate::optim::local::Residuals;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// Iteration budget of a restricted fit: its one to four parameters start
@@ -176,37 +182,83 @@ impl Context<'_> {
     }
 }
 
-/// The greedy step's screening by restricted fits (`restricted`, one per
-/// set of the step, [`Context::restricted`]): where every set removes less
-/// than [`ACCEPT`] − [`SCREEN_MARGIN`] − [`RESTRICTED_MARGIN`] of the
-/// in-sample gap above noise `current` leaves, their rows as screened
-/// (their folds and polish spared); None: the sets are to be polished.
-pub(crate) fn screened_restricted(
-    ctx: &Context,
+/// What screening a greedy step found ([`screen_step`]).
+pub(crate) enum Step<'a> {
+    /// No set of the step can be added: every set's row as screened.
+    Screened(Vec<Screened>),
+    /// A set could be added: every set polished, in the order tried.
+    Polished(Vec<Fitted<'a>>),
+}
+
+/// A greedy step's screening (`started`: the current set with each
+/// remaining effect added, their global stages done). Without `screening`,
+/// every set is polished. With it, every set's restricted fit first
+/// ([`Context::restricted`]); a set whose restricted fit removes less than
+/// [`ACCEPT`] − [`SCREEN_MARGIN`] − [`RESTRICTED_MARGIN`] of the in-sample
+/// gap above noise `current` leaves ([`rules::screened_restricted`]) would
+/// be screened by its full fit too, so only the others are polished. Where
+/// their full fits are screened as well ([`screened_additions`]), none of
+/// the step can be added: the rows, the restricted fits' where they
+/// screened, the full fits' elsewhere. Otherwise the rest are polished too
+/// and every set is cross-validated, as without screening: a step in which
+/// a set could be added is decided on full fits alone.
+pub(crate) fn screen_step<'a>(
+    ctx: &Context<'a>,
     base: &Baseline,
     current: &Scored,
-    restricted: &[Scored],
-) -> Option<Vec<Screened>> {
-    let extra: Vec<f64> = restricted
+    started: Vec<Started<'a>>,
+    screening: bool,
+) -> Step<'a> {
+    let polish_all = |s: Vec<Started<'a>>| s.into_par_iter().map(|s| ctx.polish(s)).collect();
+    if !screening {
+        return Step::Polished(polish_all(started));
+    }
+    let restricted: Vec<Scored> = started
+        .par_iter()
+        .map(|s| ctx.restricted(s, current))
+        .collect();
+    let extra: Option<Vec<f64>> = restricted
         .iter()
         .map(|sc| base.insample_extra(&current.insample, &sc.insample))
-        .collect::<Option<_>>()?;
-    if !extra.iter().all(|&x| rules::screened_restricted(x)) {
-        return None;
-    }
-    let rows = restricted
-        .iter()
-        .zip(extra)
-        .map(|(sc, x)| {
-            if let Some(rec) = ctx.timing {
-                rec.candidate(false);
-            }
-            // Its fit and the folds it was spared count as done.
-            for _ in 0..=ctx.folds.len() {
-                ctx.tick();
-            }
-            screened_row(sc, x, Some(&current.kinds), base)
-        })
         .collect();
-    Some(rows)
+    let Some(extra) = extra else {
+        return Step::Polished(polish_all(started));
+    };
+    let low: Vec<bool> = extra
+        .iter()
+        .map(|&x| rules::screened_restricted(x))
+        .collect();
+    // The sets the restricted fits do not screen, polished first.
+    let (high, rest): (Vec<_>, Vec<_>) = started.into_iter().zip(&low).partition(|(_, l)| !**l);
+    let high: Vec<Fitted> = polish_all(high.into_iter().map(|(s, _)| s).collect());
+    if let Some(full_rows) = screened_additions(ctx, base, current, &high, true) {
+        let mut full_rows = full_rows.into_iter();
+        let rows = restricted
+            .iter()
+            .zip(extra)
+            .zip(&low)
+            .filter_map(|((sc, x), &l)| {
+                if !l {
+                    return full_rows.next();
+                }
+                if let Some(rec) = ctx.timing {
+                    rec.candidate(false);
+                }
+                // Its fit and the folds it was spared count as done.
+                for _ in 0..=ctx.folds.len() {
+                    ctx.tick();
+                }
+                Some(screened_row(sc, x, Some(&current.kinds), base))
+            })
+            .collect();
+        return Step::Screened(rows);
+    }
+    // A set could be added: the rest polished too, every set in its place.
+    let mut rest: Vec<Fitted> = polish_all(rest.into_iter().map(|(s, _)| s).collect());
+    let (mut high, mut fitted) = (high.into_iter(), Vec::with_capacity(low.len()));
+    rest.reverse();
+    for l in low {
+        fitted.extend(if l { rest.pop() } else { high.next() });
+    }
+    Step::Polished(fitted)
 }

@@ -39,15 +39,15 @@ use crate::diagnose::report::{
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::pairs::{paired, Fallback, Simpler};
-use crate::diagnose::verdict::restricted::screened_restricted;
+use crate::diagnose::verdict::restricted::{screen_step, Step};
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{
     ACCEPT, ALTERNATIVE_STARTS, CONFOUNDED, CONFOUNDED_NOISE, DISAGREEMENT, PARSIMONY, PROMISING,
     SIGNIFICANT,
 };
-use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
-use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
+use crate::diagnose::verdict::score::{Context, Scored, Started};
+use crate::diagnose::verdict::screening::one_screened_row_per_set;
 use crate::diagnose::verdict::twins::simpler_twin;
 use rayon::prelude::*;
 
@@ -362,23 +362,15 @@ fn greedy(
             .filter(|e| !current.kinds.contains(e))
             .collect();
         let started = extensions(ctx, singles, base, &current, &tries);
-        // The restricted fits first: where they screen the step, the sets'
-        // polish is spared (`restricted`).
-        if screening {
-            let restricted: Vec<Scored> = started
-                .par_iter()
-                .map(|s| ctx.restricted(s, &current))
-                .collect();
-            if let Some(rows) = screened_restricted(ctx, base, &current, &restricted) {
+        // The restricted fits first: the sets they screen are not polished
+        // unless a set of the step could be added (`restricted`).
+        let fitted = match screen_step(ctx, base, &current, started, screening) {
+            Step::Screened(rows) => {
                 out.screened.extend(rows);
                 break;
             }
-        }
-        let fitted: Vec<Fitted> = started.into_par_iter().map(|s| ctx.polish(s)).collect();
-        if let Some(rows) = screened_additions(ctx, base, &current, &fitted, screening) {
-            out.screened.extend(rows);
-            break;
-        }
+            Step::Polished(fitted) => fitted,
+        };
         let mut scored: Vec<Scored> = fitted.par_iter().map(|f| ctx.cross_validate(f)).collect();
         scored.sort_by(|a, b| {
             a.heldout

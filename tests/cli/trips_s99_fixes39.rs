@@ -1,4 +1,4 @@
-//! Loose ends of the real-log diagnosis (issue 39, session 99): a bank
+//! Loose ends of the real-log diagnosis (session 99): a bank
 //! look-alike said as confounded whatever the standstills read, simulate's
 //! `history.csv` writing a body-frame `ay` beside its `roll` (read back,
 //! `diagnose` levelled it twice), rows dropped in a regular pattern said
@@ -253,9 +253,9 @@ fn a_standstill_whose_speed_flickers_across_min_speed_says_so() {
     let c = banked_campaign(dir.path(), "\"sensor_bias\"", |d, k| {
         banked_run(d, k, false, 0.0, 0.0, None)
     });
-    // Pulling away: from 12 s it creeps from 4.9 to 4.99 m/s, and one
-    // sample reads 5.125 m/s at 12.5 s (0.18 m/s above its neighbours:
-    // no spike, a flicker).
+    // Pulling away: from 12 s it creeps from 4.97 to 4.99 m/s, and one
+    // sample reads 5.01 m/s at 12.5 s (0.03 m/s above its neighbours: no
+    // spike, a flicker; 0.18 m/s was treated as a spike).
     let run = dir.path().join("runs/run0.csv");
     let text = fs::read_to_string(&run).unwrap();
     let edited: Vec<String> = text
@@ -271,9 +271,9 @@ fn a_standstill_whose_speed_flickers_across_min_speed_says_so() {
                 return l.to_string();
             }
             let u = if (at - 12.5).abs() < 1e-9 {
-                5.125
+                5.01
             } else {
-                4.9 + 0.09 * (at - 12.0) / 0.98
+                4.97 + 0.02 * (at - 12.0) / 0.98
             };
             let (_, tail) = rest.split_once(',').unwrap();
             format!("{t},{u},{tail}")
@@ -287,7 +287,7 @@ fn a_standstill_whose_speed_flickers_across_min_speed_says_so() {
         .find(|l| l.contains("standstill 0.00–12.98 s in") && l.contains("run0.csv"))
         .unwrap_or_else(|| panic!("{said}"));
     assert!(
-        line.contains("below min_speed = 5 m/s but for flickers across it between slow samples, up to 5.13 m/s, counted with the span) excluded"),
+        line.contains("below min_speed = 5 m/s but for flickers across it between slow samples, up to 5.01 m/s, counted with the span) excluded"),
         "{line}"
     );
 }

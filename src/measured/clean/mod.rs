@@ -70,7 +70,7 @@
 //! Layout: this file holds the thresholds and the settings; `report.rs` the
 //! report types; `glitches.rs` the detection and treatment of glitches in
 //! one channel; `gaps.rs` the time gaps; `holes.rs` the holes in time shorter than a gap
-//! (rows dropped); `pieces.rs` the slow spans and pieces, and the
+//! (rows dropped), `missing.rs` how they are reported; `pieces.rs` the slow spans and pieces, and the
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
 mod gaps;
@@ -78,6 +78,7 @@ mod glitches;
 mod held;
 pub(crate) mod holes;
 mod inject;
+mod missing;
 mod moves;
 mod pieces;
 mod repair;

@@ -373,7 +373,7 @@ pub struct CleaningReport {
     /// Glitches per kind.
     pub counts: GlitchCounts,
     /// Rows missing in holes shorter than a time gap, per run that has any.
-    pub missing_rows: Vec<super::holes::MissingRows>,
+    pub missing_rows: Vec<super::missing::MissingRows>,
     /// Every glitch, in run and time order.
     pub glitches: Vec<Glitch>,
     /// Spans excluded for low speed.

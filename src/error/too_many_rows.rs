@@ -9,9 +9,10 @@ use super::number::Num;
 use crate::format::rounded_up;
 use std::fmt;
 
-/// The size of a row of `history.csv` as written, bytes: 14 or 15 columns
-/// of about 10 characters (a step steer's history wrote 140 bytes a row,
-/// a sine's with roll steer 169). It was 280, twice the written size.
+/// The size of a row of `history.csv` as written, bytes: 14 columns of
+/// about 10 characters, 16 with roll (`roll`, `ay_body`; a step steer's
+/// history wrote 140 bytes a row, a sine's with roll steer 169 before its
+/// `ay_body`). It was 280, twice the written size.
 pub const HISTORY_ROW_BYTES: f64 = 150.0;
 
 /// The rows (the first and one per `step` after it) a run of `duration`

@@ -117,7 +117,47 @@ impl TimeHistory {
         self.t.is_empty()
     }
 
-    /// Column names and columns, in output order (for CSV).
+    /// What a body-fixed accelerometer at the centre of gravity reads
+    /// where the model rolls, m/s²: `a_y·cos φ + g·sin φ` (ISO 8855, φ
+    /// positive with the right side down, as in a left turn; the specific
+    /// force resolved in the rolled frame, Groves 2013), the inverse of the
+    /// levelling a measured run's logged roll gets
+    /// ([`crate::measured::calibration::roll::levelled`]). None without
+    /// roll: the body does not tilt and the reading is [`Self::ay`].
+    pub fn accelerometer_ay(&self) -> Option<Vec<f64>> {
+        (!self.roll.is_empty()).then(|| {
+            self.ay
+                .iter()
+                .zip(&self.roll)
+                .map(|(a, p)| a * p.cos() + crate::constants::G * p.sin())
+                .collect()
+        })
+    }
+
+    /// Column names and columns as `history.csv` holds them (`FORMATS.md`
+    /// read back): where the model rolls, `ay` is what an accelerometer on
+    /// the rolled body reads (`accelerometer`, [`Self::accelerometer_ay`]),
+    /// as a measured run's `ay` is, and the body frame's lateral
+    /// acceleration (the metrics' `ay`, the tyres' force over the mass)
+    /// follows the roll as `ay_body`; without roll, [`Self::columns`].
+    pub fn written_columns<'a>(
+        &'a self,
+        accelerometer: Option<&'a [f64]>,
+    ) -> Vec<(&'static str, &'a [f64])> {
+        let mut columns = self.columns();
+        if let Some(read) = accelerometer {
+            for c in &mut columns {
+                if c.0 == "ay" {
+                    c.1 = read;
+                }
+            }
+            columns.push(("ay_body", &self.ay));
+        }
+        columns
+    }
+
+    /// Column names and columns, in output order (for CSV): the model's
+    /// own values (`ay` in the body frame).
     pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
         let mut columns: Vec<(&'static str, &[f64])> = vec![
             ("t", &self.t),

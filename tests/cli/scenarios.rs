@@ -627,7 +627,9 @@ fn a_scenario_with_tyre_lag_and_roll_steer_integrates_and_writes_the_roll() {
     assert!(gain(&m1) < 0.97 * gain(&m0), "{} {}", gain(&m1), gain(&m0));
     let csv = fs::read_to_string(dir.path().join("l/history.csv")).unwrap();
     let header = csv.lines().next().unwrap();
-    assert!(header.ends_with(",roll"), "{header}");
+    // The roll, then the body frame's ay (`ay` is what the rolled
+    // accelerometer reads).
+    assert!(header.ends_with(",roll,ay_body"), "{header}");
     let last: Vec<f64> = csv
         .lines()
         .last()
@@ -636,7 +638,7 @@ fn a_scenario_with_tyre_lag_and_roll_steer_integrates_and_writes_the_roll() {
         .map(|x| x.parse().unwrap())
         .collect();
     // Steady roll: 4°/g of the default roll model times the steady ay.
-    let (ay, roll) = (last[5], last[14]);
+    let (ay, roll) = (last[15], last[14]);
     let k = 4f64.to_radians() / 9.80665;
     assert!((roll - k * ay).abs() < 1e-4 * k * ay.abs(), "{roll} {ay}");
     let h0 = fs::read_to_string(dir.path().join("b/history.csv")).unwrap();

@@ -1,7 +1,8 @@
 //! The diagnosis's conclusion once the search has run: the verdict's
 //! look-alikes (confounded where the runs do not tell them apart, unless
 //! the verdict's set, fitted with one in its first effect's place, does
-//! clearly worse), and the verdict made from the search, the ranked
+//! clearly worse, or the standstills contradict its bank:
+//! [`crate::diagnose::verdict::standstills`]), and the verdict made from the search, the ranked
 //! singles and the held-out shrinkage ([`crate::diagnose::verdict::conclude`]).
 
 use crate::diagnose::campaign::{Campaign, StatedFriction};
@@ -16,6 +17,7 @@ use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules::ACCEPT;
 use crate::diagnose::verdict::score::{Context, Scored};
 use crate::diagnose::verdict::search::{lookalikes_alone, Search};
+use crate::diagnose::verdict::standstills::set_aside;
 use crate::diagnose::verdict::twins::{confounded_with, in_set};
 
 /// The verdict, the groups of look-alikes it is confounded with, and the
@@ -92,6 +94,15 @@ pub(super) fn conclude(
         };
         e.confounded_with = lookalikes_alone(singles, &confounded, start, base);
         e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
+        // A single's bank-like look-alike the standstills contradict is
+        // set aside, not confounded (a set's look-alikes are judged in it).
+        if let (Some(l), true) = (&mut e.confounded_with, e.in_set.is_empty()) {
+            let alone = |k: EffectKind| {
+                let s = singles.iter().find(|s| s.kinds[0] == k)?;
+                Some(base.rank(s).parameters)
+            };
+            set_aside(l, &mut confounded, &e.parameters, alone, &ctx.calibrated);
+        }
     }
     Concluded {
         verdict,

@@ -82,7 +82,8 @@ impl Serialize for Verdict {
                     confounded_with: e
                         .confounded_with
                         .iter()
-                        .flat_map(|l| l.members.iter().map(|m| m.effect))
+                        .flat_map(|l| l.members.iter().filter(|m| m.confounded()))
+                        .map(|m| m.effect)
                         .collect(),
                     lookalikes: e.confounded_with.as_ref(),
                     in_set: &e.in_set,

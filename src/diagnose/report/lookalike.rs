@@ -53,6 +53,69 @@ pub struct Lookalike {
     pub reduction_percent: f64,
     /// Its held-out gap above noise, alone.
     pub gap: f64,
+    /// A bank-like look-alike's bank read against the standstills (None:
+    /// it fits no bank, or no standstill measured `a_y`).
+    pub standstills: Option<StandstillBank>,
+    /// Why it is not confounded with the verdict though its gap lies in
+    /// the window (None: confounded).
+    pub set_aside: Option<SetAside>,
+}
+
+impl Lookalike {
+    /// Whether the runs leave it confounded with the verdict: in the
+    /// window, and nothing beside the fit sets it aside.
+    pub fn confounded(&self) -> bool {
+        self.set_aside.is_none()
+    }
+}
+
+/// Why a look-alike in the confounding window is set aside, typed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SetAside {
+    /// The runs' standstills contradict the bank it fits and side with
+    /// the verdict ([`Lookalike::standstills`] holds the reading).
+    StandstillsContradictBank,
+}
+
+/// A bank-like look-alike (`bank_profile`, `road_bank`) against the
+/// standstills' `a_y`. Parked, a body-fixed accelerometer reads its offset
+/// plus `g·sin θ` of the road's bank θ (ISO 8855, bank positive with the
+/// left edge higher; Groves 2013); the calibration reads the standstills
+/// less `g·sin θ_logged` of a logged bank. A look-alike that fits a bank
+/// `θ_fit` there and no offset predicts they read `g·sin θ_fit −
+/// g·sin θ_logged`; the verdict predicts its own fitted offset (through
+/// its own bank, if it fits one). Accelerations in m/s², banks in rad.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StandstillBank {
+    /// What the standstills read (the logged bank's `g·sin` removed).
+    pub measured: f64,
+    /// Its standard error.
+    pub measured_std_error: f64,
+    /// The bank the look-alike fits where the standstills stood.
+    pub bank: f64,
+    /// The logged bank there (None: no bank column, a flat road as read).
+    pub logged_bank: Option<f64>,
+    /// The runs determine every parameter of that bank (none held, none
+    /// traded beyond its range): false, its value there is one of many
+    /// that fit the runs alike, and the standstills contradict none.
+    pub determined: bool,
+    /// What the standstills would read with the look-alike's bank.
+    pub predicted: f64,
+    /// Its standard error, from the fitted bank's.
+    pub predicted_std_error: f64,
+    /// `|measured − predicted|` over their combined standard error.
+    pub standard_errors: f64,
+    /// What the standstills read by the verdict's fit.
+    pub verdict_predicted: f64,
+    /// Its standard error.
+    pub verdict_predicted_std_error: f64,
+    /// `|measured − verdict_predicted|` over their combined standard error.
+    pub verdict_standard_errors: f64,
+    /// The two predictions differ by more than
+    /// [`crate::diagnose::report::outcome::CALIBRATION_AGREES`] combined
+    /// standard errors: the standstills can tell them apart.
+    pub apart: bool,
 }
 
 /// The verdict's look-alikes alone and the window they lie in.

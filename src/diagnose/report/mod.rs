@@ -35,7 +35,8 @@ pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, ClassMismatch,
     Closest, Evidence, Explained, FarFromOff, GapFinding, InSet, Lookalike, Lookalikes, MassAlike,
     NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning,
-    Refusal, Refused, Searched, ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
+    Refusal, Refused, Searched, SetAside, StandstillBank, ThroughBank, Unseen, Verdict,
+    VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

@@ -20,7 +20,9 @@ pub use crate::diagnose::report::evidence::{
     CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony, Searched, ThroughBank,
     CALIBRATION_AGREES,
 };
-pub use crate::diagnose::report::lookalike::{InSet, Lookalike, Lookalikes, Window};
+pub use crate::diagnose::report::lookalike::{
+    InSet, Lookalike, Lookalikes, SetAside, StandstillBank, Window,
+};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 pub use crate::diagnose::report::tyre_class::ClassMismatch;

@@ -65,7 +65,7 @@ pub(crate) fn calibration_evidence(
 /// The uncertainty of a fitted value the report trusts: its standard
 /// error, or the fold refits' scatter where the report says the standard
 /// error does not cover it ([`ParameterValue::understated`]).
-fn trusted_std_error(p: &ParameterValue) -> f64 {
+pub(super) fn trusted_std_error(p: &ParameterValue) -> f64 {
     match p.fold_std_error.filter(|_| p.understated()) {
         Some(j) => j.max(p.std_error),
         None => p.std_error,
@@ -80,7 +80,7 @@ fn trusted_std_error(p: &ParameterValue) -> f64 {
 /// `bank_profile.scale·θ + bank_profile.offset + road_bank.bank`
 /// ([`crate::vehicle::Effects`]); the standstills' mean logged bank stands
 /// for each one's (g·sin is linear within 0.2 % to 0.1 rad).
-fn through_fitted_bank(
+pub(super) fn through_fitted_bank(
     parameters: &[ParameterValue],
     as_logged: f64,
     logged_bank: Option<f64>,

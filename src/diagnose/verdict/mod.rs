@@ -20,4 +20,5 @@ pub mod rules;
 pub(crate) mod score;
 pub(crate) mod screening;
 pub(crate) mod search;
+pub(crate) mod standstills;
 pub(crate) mod twins;

@@ -479,6 +479,9 @@ pub(crate) fn lookalikes_alone(
                 effect,
                 reduction_percent: r.reduction_percent,
                 gap: gap_above(r.heldout_error_after, base.jn),
+                // Read against the standstills by the conclusion.
+                standstills: None,
+                set_aside: None,
             })
         })
         .collect();

@@ -464,7 +464,11 @@ impl SimulateReport {
         let files = FILES.map(|f| self.out_dir.join(f));
         // Nine significant digits: what a run integrated to a relative
         // tolerance of 1e-9 carries (17 wrote the arithmetic's noise).
-        write_columns_to(&files[0], &self.history.columns(), Some(9))?;
+        // Where the model rolls, `ay` as its accelerometer reads it: a
+        // history read back as a measured run is levelled by its roll.
+        let read = self.history.accelerometer_ay();
+        let columns = self.history.written_columns(read.as_deref());
+        write_columns_to(&files[0], &columns, Some(9))?;
         if let Some(m) = &self.metrics {
             let file = MetricsFile {
                 scenario: &self.scenario,

@@ -5,6 +5,11 @@
 //! - Time gaps split a run (a replay cannot bridge a dropout): an interval
 //!   longer than five times the median interval on each side of it
 //!   (`gaps.rs`; a change of the logger's rate is no gap).
+//! - Holes shorter than a gap (rows dropped: every third row of a 100 Hz
+//!   log missing) do not split it: the replay runs across them and scores
+//!   the rows present. They are counted per run and said, with the regular
+//!   pattern they make where there is one (`holes.rs`), never as "0 time
+//!   gaps" alone.
 //! - Glitches are found on every sample of the driving and response channels
 //!   (steer, speed; yaw rate, ay, beta) with robust statistics of the
 //!   channel itself. Its scale is `σ_d = 1.4826·MAD(Δx)`, the robust spread
@@ -64,13 +69,16 @@
 //!
 //! Layout: this file holds the thresholds and the settings; `report.rs` the
 //! report types; `glitches.rs` the detection and treatment of glitches in
-//! one channel; `gaps.rs` the time gaps; `pieces.rs` the slow spans and pieces, and the
+//! one channel; `gaps.rs` the time gaps; `holes.rs` the holes in time shorter than a gap
+//! (rows dropped), `missing.rs` how they are reported; `pieces.rs` the slow spans and pieces, and the
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
 mod gaps;
 mod glitches;
 mod held;
+pub(crate) mod holes;
 mod inject;
+mod missing;
 mod moves;
 mod pieces;
 mod repair;

@@ -179,6 +179,9 @@ pub fn clean_run(
     let parts = split_times(&run, report);
     let mut moving: Vec<MeasuredRun> = Vec::new();
     let name = run.path.display().to_string();
+    report
+        .missing_rows
+        .extend(super::holes::missing_rows(&name, &run.t, &parts));
     for (lo, hi) in parts {
         let mut part = slice(&run, lo, hi, "");
         treat_held(&mut part, settings.min_speed, report);

@@ -372,6 +372,8 @@ pub struct CleaningReport {
     pub held: Vec<HeldChannel>,
     /// Glitches per kind.
     pub counts: GlitchCounts,
+    /// Rows missing in holes shorter than a time gap, per run that has any.
+    pub missing_rows: Vec<super::missing::MissingRows>,
     /// Every glitch, in run and time order.
     pub glitches: Vec<Glitch>,
     /// Spans excluded for low speed.
@@ -453,8 +455,23 @@ impl CleaningReport {
                 plural(r, "reversing span", "reversing spans")
             ),
         };
+        // Rows dropped shorter than a gap split nothing: said beside the
+        // gaps where a run has any, so that "0 time gaps" is not all.
+        let holes: usize = self.missing_rows.iter().map(|m| m.holes).sum();
+        let missing = match holes {
+            0 => String::new(),
+            h => format!(
+                " and {} shorter than a gap ({} missing)",
+                plural(h, "hole", "holes"),
+                plural(
+                    self.missing_rows.iter().map(|m| m.samples).sum(),
+                    "row",
+                    "rows"
+                )
+            ),
+        };
         format!(
-            "{} read, {} kept; {} below {} m/s excluded ({}), {} in {} dropped; glitches: {}, {}, {}, {} ({} repaired, {} masked)",
+            "{} read, {} kept; {} below {} m/s excluded ({}), {} in {} dropped; glitches: {}, {}, {}, {}{missing} ({} repaired, {} masked)",
             plural(self.samples_read, "sample", "samples"),
             self.samples_kept,
             self.samples_slow,
@@ -475,6 +492,7 @@ impl CleaningReport {
     /// first few glitches, the slow spans and the pieces.
     pub fn summary(&self, first: usize) -> Vec<String> {
         let mut out = vec![self.counts_line()];
+        out.extend(self.missing_rows.iter().map(|m| m.line()));
         for h in &self.held {
             if h.log_rate_changes {
                 out.push(format!(

@@ -41,7 +41,7 @@ pub(super) fn measure(
     let filled = fill_masked_by_channel(piece, &found.glitches);
     let mut spans = unmeasured(piece, &filled);
     spans.extend(
-        uniform::holes(&filled.t)
+        crate::measured::clean::holes::holes(&filled.t)
             .into_iter()
             .map(|(from, length, missing)| Span {
                 from,

@@ -7,96 +7,25 @@
 //! local interval; each channel is interpolated linearly between samples,
 //! which adds no information to the slower part and keeps the faster part's.
 //! A rate is a change when the local median intervals (over
-//! [`LOCAL`] intervals each side) differ by more than a factor [`CHANGE`]:
+//! `holes::LOCAL` intervals each side) differ by more than a factor [`CHANGE`]:
 //! a logger's jitter, even ±3 ms at 100 Hz, moves them by less.
 //!
 //! A hole in time shorter than a time gap (which splits the run: five
 //! intervals) is put on the grid too: an interval of at least
-//! [`HOLE`] local intervals, within a quarter of a whole number of them (a
+//! `holes::HOLE` local intervals, within a quarter of a whole number of them (a
 //! logger's jitter of ±3 ms at 100 Hz reaches 1.6 intervals, between
 //! whole numbers). Read as it is, the filter took the hole for one sample
 //! step and moved the response around it: 4 samples missing during the
 //! rise read an ay response time of 0.3618 s for the intact log's 0.3448 s.
 //! The missing samples are counted and said. Times in s.
 
+use crate::measured::clean::holes::{holes, local_intervals, pattern};
 use crate::measured::clean::median;
 use crate::measured::MeasuredRun;
-
-/// Intervals on each side of one whose median is its local interval.
-const LOCAL: usize = 5;
 
 /// Ratio of the longest to the shortest local interval above which the
 /// rate is said to change.
 const CHANGE: f64 = 2.0;
-
-/// Local intervals from which an interval is a hole of missing samples.
-const HOLE: f64 = 1.5;
-
-/// The local interval of each interval of `t`: the median over [`LOCAL`]
-/// intervals each side, or the median of its intervals of at most
-/// [`SHORT`] of that median where they lie on both sides of it (or at it)
-/// and make [`SHORT_SHARE`] of the window or more. A log that misses every third
-/// row alternates 0.02 and 0.01 s: its median flipped between them, and
-/// the log was said to change its rate from 50 to 100 Hz, its 267
-/// missing samples uncounted; a change of rate has its short intervals on
-/// one side only.
-fn local_intervals(t: &[f64]) -> Vec<f64> {
-    let dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-    let mut buf = Vec::with_capacity(2 * LOCAL + 1);
-    (0..dt.len())
-        .map(|k| {
-            let (lo, hi) = (k.saturating_sub(LOCAL), (k + LOCAL + 1).min(dt.len()));
-            buf.clear();
-            buf.extend_from_slice(&dt[lo..hi]);
-            let m = median(&mut buf);
-            let short = |d: &f64| *d <= SHORT * m;
-            // Each side with the interval itself (a run's end has one side).
-            let side = |s: &[f64]| s.len() < 2 || s.iter().any(short);
-            let both = side(&dt[lo..=k]) && side(&dt[k..hi]);
-            buf.clear();
-            buf.extend(dt[lo..hi].iter().copied().filter(short));
-            if !both || (buf.len() as f64) < SHORT_SHARE * (hi - lo) as f64 {
-                return m;
-            }
-            // Rows dropped leave whole multiples of the shorter interval; a
-            // logger's jitter spreads between them and keeps the median.
-            let short = median(&mut buf);
-            let whole = |d: &f64| (d / short - (d / short).round()).abs() <= ON_GRID;
-            if dt[lo..hi].iter().all(whole) {
-                short
-            } else {
-                m
-            }
-        })
-        .collect()
-}
-
-/// How near a whole multiple of the shorter interval every interval of
-/// the window lies where rows were dropped, in shorter intervals.
-const ON_GRID: f64 = 0.15;
-
-/// An interval this share of the window's median or less is a shorter one
-/// (a log missing rows between them: 0.01 s among 0.02 s).
-const SHORT: f64 = 0.75;
-
-/// The share of a window the shorter intervals make that gives its local
-/// interval: a logger's jitter (±3 ms at 100 Hz) puts under a tenth there.
-const SHORT_SHARE: f64 = 0.3;
-
-/// The holes of `t`: for each, where it starts (s), its length (s) and the
-/// samples missing in it.
-pub(super) fn holes(t: &[f64]) -> Vec<(f64, f64, usize)> {
-    let local = local_intervals(t);
-    t.windows(2)
-        .zip(&local)
-        .filter_map(|(w, &m)| {
-            let ratio = (w[1] - w[0]) / m;
-            let whole = ratio.round();
-            (m > 0.0 && ratio >= HOLE && (ratio - whole).abs() < 0.25)
-                .then(|| (w[0], w[1] - w[0], whole as usize - 1))
-        })
-        .collect()
-}
 
 /// The warning of the holes of `t`, none without.
 fn holes_said(t: &[f64], dt: f64) -> Option<String> {
@@ -114,26 +43,6 @@ fn holes_said(t: &[f64], dt: f64) -> Option<String> {
         crate::format::readable(longest.0, 3),
         crate::format::readable(1.0 / dt, 3)
     ))
-}
-
-/// The regular pattern of holes `h` on a grid of `dt`, where there is one:
-/// at least 10 holes, nine in ten of them missing the same number of
-/// samples as the middle one, and nine in ten of them that number of rows
-/// after the last as the middle one (the missing counted; a log's ends may
-/// break the pattern). That number missing, of every so many rows.
-fn pattern(h: &[(f64, f64, usize)], dt: f64) -> Option<(usize, usize)> {
-    if h.len() < 10 {
-        return None;
-    }
-    let rows: Vec<usize> = h
-        .windows(2)
-        .map(|w| ((w[1].0 - w[0].0) / dt).round() as usize)
-        .collect();
-    let (missing, every) = (h[h.len() / 2].2, rows[rows.len() / 2]);
-    let most = |n: usize| 10 * n >= 9 * h.len();
-    let regular = most(h.iter().filter(|x| x.2 == missing).count())
-        && most(rows.iter().filter(|r| **r == every).count() + 1);
-    regular.then_some((missing, every))
 }
 
 /// The shortest and longest local intervals of `t`, where they differ by

@@ -26,6 +26,8 @@ fn a_look_alike_that_removes_a_smaller_share_is_said_with_the_window_it_lies_in(
                 effect: EffectKind::SteerPath,
                 reduction_percent: 52.0,
                 gap: 0.9,
+                standstills: None,
+                set_aside: None,
             }],
         });
     }
@@ -46,6 +48,8 @@ fn a_sets_look_alike_fitted_in_its_place_is_confounded_or_told_apart_by_the_set(
         effect,
         reduction_percent,
         gap,
+        standstills: None,
+        set_aside: None,
     };
     if let Verdict::Explained(e) = &mut v {
         e.confounded_with = Some(Lookalikes {
@@ -82,4 +86,69 @@ fn a_sets_look_alike_fitted_in_its_place_is_confounded_or_told_apart_by_the_set(
     assert!(statement(&v).contains(
         "; yaw_inertia alone lies in the confounding window of sensor_delay alone (the single the set was grown from), but"
     ));
+}
+
+#[test]
+fn a_look_alike_the_standstills_set_aside_is_said_with_why_and_not_as_confounded() {
+    use crate::diagnose::report::{Lookalike, Lookalikes, SetAside, StandstillBank};
+    let mut v = explained(90.0);
+    let reading = StandstillBank {
+        measured: -0.201,
+        measured_std_error: 0.002,
+        bank: 0.0,
+        logged_bank: Some(0.0),
+        determined: true,
+        predicted: 0.0,
+        predicted_std_error: 0.0039,
+        standard_errors: 45.65,
+        verdict_predicted: -0.2,
+        verdict_predicted_std_error: 0.005,
+        verdict_standard_errors: 0.2,
+        apart: true,
+    };
+    let member = |effect, set_aside| Lookalike {
+        effect,
+        reduction_percent: 80.4,
+        gap: 0.633,
+        standstills: Some(reading),
+        set_aside,
+    };
+    if let Verdict::Explained(e) = &mut v {
+        e.effects = vec![EffectKind::SensorBias];
+        e.confounded_with = Some(Lookalikes {
+            start: EffectKind::SensorBias,
+            start_reduction_percent: 90.0,
+            window: window(),
+            members: vec![member(
+                EffectKind::BankProfile,
+                Some(SetAside::StandstillsContradictBank),
+            )],
+        });
+    }
+    let s = statement(&v);
+    assert!(!s.contains("confounded)"), "{s}");
+    assert!(
+        s.contains("; bank_profile removes 80.4 % (gap above noise 0.633) alone, against sensor_bias's 90.0 % (0.502): within the confounding window of sensor_bias's gap, 1.5 × 0.502 + 0.25 × 0.941 = 0.988, but the standstills contradict its bank: parked, they read -0.201 ± 0.002 m/s²; its bank there, 0.0000 rad, the logged bank 0.0000 rad, would read 0.000 ± 0.0039 m/s² (45.6 standard errors off), the verdict's fit -0.200 ± 0.005 m/s² (0.2): set aside, not confounded"),
+        "{s}"
+    );
+    // Not set aside: confounded, the reading said beside it.
+    if let Verdict::Explained(e) = &mut v {
+        let l = e.confounded_with.as_mut().unwrap();
+        l.members = vec![member(EffectKind::RoadBank, None)];
+        l.members[0].standstills.as_mut().unwrap().determined = false;
+    }
+    let s = statement(&v);
+    assert!(
+        s.contains("so the runs do not tell it from sensor_bias (confounded); the standstills do not tell road_bank apart: parked, they read -0.201 ± 0.002 m/s²; its bank there, 0.0000 rad as fitted, the logged bank 0.0000 rad, is one of many the runs fit alike (its parameters not all determined), so no reading refutes it; the verdict's fit -0.200 ± 0.005 m/s² (0.2)"),
+        "{s}"
+    );
+    // Determined, but predicting about what the verdict does.
+    if let Verdict::Explained(e) = &mut v {
+        let b = e.confounded_with.as_mut().unwrap().members[0]
+            .standstills
+            .as_mut()
+            .unwrap();
+        (b.determined, b.apart) = (true, false);
+    }
+    assert!(statement(&v).ends_with("(0.2): the two predict alike"));
 }

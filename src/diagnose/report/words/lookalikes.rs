@@ -2,12 +2,16 @@
 //! above noise beside those of what it stands in for, and the confounding
 //! window they lie in with its terms (`1.5 × G + 0.25 × J_n = bound`), for
 //! a single verdict ([`Lookalikes`]) and for a set's look-alikes fitted in
-//! its place ([`InSet`]). Not "about as well": a look-alike that removes
+//! its place ([`InSet`]), and those set aside though in the window with
+//! why ([`SetAside`]). Not "about as well": a look-alike that removes
 //! 50 % against the verdict's 74 % can lie in the window. Gaps and held-out
 //! errors are dimensionless, reductions in percent.
 
 use crate::diagnose::effects::{joined, same_effects, EffectKind};
-use crate::diagnose::report::outcome::{Explained, InSet, Lookalikes, Window};
+use crate::diagnose::report::outcome::CALIBRATION_AGREES;
+use crate::diagnose::report::outcome::{
+    Explained, InSet, Lookalike, Lookalikes, SetAside, StandstillBank, Window,
+};
 use crate::diagnose::report::Evidence;
 
 /// A confounding window with its terms: `1.5 × 0.310 + 0.25 × 0.941 =
@@ -28,31 +32,108 @@ pub fn window(w: &Window) -> String {
 /// alone ([`Lookalikes`]): each one's share and gap beside the share and
 /// gap of the single the window is of, and the window, not "about as
 /// well" (a look-alike may remove 50 % against the verdict's 74 % and
-/// still lie in it).
+/// still lie in it). Those set aside ([`SetAside`]) are said with why,
+/// not as confounded.
 pub(super) fn alone(head: String, l: &Lookalikes, first: EffectKind) -> String {
-    let each: Vec<String> = l
-        .members
-        .iter()
-        .map(|m| {
-            format!(
-                "{} removes {:.1} % (gap above noise {:.3})",
-                m.effect.name(),
-                m.reduction_percent,
-                m.gap
-            )
-        })
-        .collect();
-    let it = if l.members.len() == 1 { "it" } else { "them" };
-    format!(
-        "{head}; but {} alone, against {}'s {:.1} % ({:.3}): within the confounding window of {}'s gap, {}, so the runs do not tell {it} from {} (confounded)",
-        each.join(", "),
+    let each = |m: &Lookalike| {
+        format!(
+            "{} removes {:.1} % (gap above noise {:.3})",
+            m.effect.name(),
+            m.reduction_percent,
+            m.gap
+        )
+    };
+    let (alike, aside): (Vec<&Lookalike>, Vec<&Lookalike>) =
+        l.members.iter().partition(|m| m.confounded());
+    let against = format!(
+        "against {}'s {:.1} % ({:.3}): within the confounding window of {}'s gap, {}",
         l.start.name(),
         l.start_reduction_percent,
         l.window.gap,
         l.start.name(),
         window(&l.window),
-        first.name()
+    );
+    let mut out = head;
+    if !alike.is_empty() {
+        let it = if alike.len() == 1 { "it" } else { "them" };
+        let each: Vec<String> = alike.iter().map(|m| each(m)).collect();
+        out += &format!(
+            "; but {} alone, {against}, so the runs do not tell {it} from {} (confounded)",
+            each.join(", "),
+            first.name()
+        );
+        for m in &alike {
+            if let Some(b) = &m.standstills {
+                out += &format!(
+                    "; the standstills do not tell {} apart: {}",
+                    m.effect.name(),
+                    standstill_bank(b)
+                );
+            }
+        }
+    }
+    for m in aside {
+        let why = match (&m.set_aside, &m.standstills) {
+            (Some(SetAside::StandstillsContradictBank), Some(b)) => format!(
+                "the standstills contradict its bank: {}",
+                standstill_bank(b)
+            ),
+            _ => String::new(),
+        };
+        out += &format!(
+            "; {} alone, {against}, but {why}: set aside, not confounded",
+            each(m)
+        );
+    }
+    out
+}
+
+/// A bank-like look-alike's bank against the standstills, as a clause:
+/// what they read, what its bank there would read (where the runs
+/// determine it), and what the verdict's fit reads (m/s², banks in rad).
+fn standstill_bank(b: &StandstillBank) -> String {
+    let r = |v: f64| crate::format::rounded(v, 2);
+    let logged = b
+        .logged_bank
+        .map_or(String::new(), |t| format!(", the logged bank {t:.4} rad"));
+    let verdict = format!(
+        "the verdict's fit {:.3} ± {} m/s² ({:.1})",
+        b.verdict_predicted,
+        r(b.verdict_predicted_std_error),
+        b.verdict_standard_errors
+    );
+    let read = format!(
+        "parked, they read {:.3} ± {} m/s²",
+        b.measured,
+        r(b.measured_std_error)
+    );
+    if !b.determined {
+        return format!(
+            "{read}; its bank there, {:.4} rad as fitted{logged}, is one of many the runs fit alike (its parameters not all determined), so no reading refutes it; {verdict}",
+            b.bank
+        );
+    }
+    format!(
+        "{read}; its bank there, {:.4} rad{logged}, would read {:.3} ± {} m/s² ({:.1} standard errors off), {verdict}{}",
+        b.bank,
+        b.predicted,
+        r(b.predicted_std_error),
+        b.standard_errors,
+        why_not(b)
     )
+}
+
+/// Why a determined reading sets nothing aside, where it does not.
+fn why_not(b: &StandstillBank) -> &'static str {
+    if !b.apart {
+        ": the two predict alike"
+    } else if b.standard_errors <= CALIBRATION_AGREES {
+        ": its reading agrees"
+    } else if b.verdict_standard_errors >= b.standard_errors {
+        ": the verdict's reads as far off or further"
+    } else {
+        ""
+    }
 }
 
 /// The verdict sentence `head` of a set `e` whose first effect `first`

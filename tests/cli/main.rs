@@ -503,6 +503,7 @@ mod trips_s98_mount28;
 mod trips_s98_real28;
 mod trips_s98_step28;
 mod trips_s98_words28;
+mod trips_s99_fix41d;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -180,7 +180,7 @@ fn bands_of_a_steer_at_its_noise_level_are_not_findings() {
         "\"sensor_delay\", \"steering_compliance\"",
     );
     let (stdout, d) = diagnose(&c);
-    assert!(!stdout.contains("yaw-rate response"), "{stdout}");
+    assert!(!stdout.contains(" Hz off"), "{stdout}");
     for r in d["gap"]["runs"].as_array().unwrap() {
         assert_eq!(r["bands"].as_array().map(Vec::len), Some(0), "{r}");
     }
@@ -219,10 +219,12 @@ fn a_campaign_with_no_gap_has_no_best_candidate_in_the_fleet() {
     let stdout = String::from_utf8_lossy(&o.stdout);
     let csv = fs::read_to_string(out.join("fleet.csv")).unwrap();
     let mut lines = csv.lines();
+    // The columns before the statement (which holds commas) split plainly.
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let line = lines.next().unwrap();
+    let row: Vec<&str> = line.split(',').collect();
     let at = |name: &str| head.iter().position(|h| *h == name).unwrap();
-    assert_eq!(row[at("kind")], "no_significant_gap", "{csv}");
+    assert!(line.ends_with(",no_significant_gap"), "{csv}");
     assert_eq!(row[at("best")], "", "{csv}");
     assert_eq!(row[at("best_reduction_percent")], "", "{csv}");
     assert!(
@@ -249,21 +251,28 @@ fn a_truck_tir_on_a_sedan_is_a_warning_carried_into_the_verdict() {
         "sine",
         "kind = \"sine\"\nspeed = 20.0\namplitude = 0.02\nfrequency = 0.5\nstart = 1.0\nend = 11.0\n",
     );
+    let slow = simulated_rows(
+        dir.path(),
+        "slow",
+        "kind = \"sine\"\nspeed = 15.0\namplitude = 0.03\nfrequency = 0.3\nstart = 1.0\nend = 11.0\n",
+    );
     let mut noise = Noise(8);
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay\n");
-    for c in &rows {
-        csv += &format!(
-            "{:.2},{:.6},{:.6},{:.6},{:.6}\n",
-            c[0],
-            c[2],
-            c[1],
-            c[4] + 0.002 * noise.gauss(),
-            c[5] + 0.05 * noise.gauss()
-        );
-    }
     let c = dir.path().join("campaign");
     fs::create_dir_all(c.join("runs")).unwrap();
-    fs::write(c.join("runs/sine.csv"), csv).unwrap();
+    for (name, rows) in [("sine.csv", &rows), ("slow.csv", &slow)] {
+        let mut csv = String::from("t,speed,steer,yaw_rate,ay\n");
+        for c in rows.iter() {
+            csv += &format!(
+                "{:.2},{:.6},{:.6},{:.6},{:.6}\n",
+                c[0],
+                c[2],
+                c[1],
+                c[4] + 0.002 * noise.gauss(),
+                c[5] + 0.05 * noise.gauss()
+            );
+        }
+        fs::write(c.join("runs").join(name), csv).unwrap();
+    }
     fs::write(
         c.join("vehicle.toml"),
         format!(

@@ -382,12 +382,13 @@ mod tests {
     }
 
     /// A persistent error does not excuse itself. A residual of white
-    /// noise σ = 1 plus a step of 0.5 halfway through 800 samples: its
-    /// mean is 0.25, its noise white (τ = 1), so the standard error is
-    /// √(σ² + 0.0625)/√800 = 0.0364 (the scatter about the mean counts the
-    /// step's ±0.25 too) and the bias 6.9 standard errors over 800 effective
-    /// samples, where the whole residual's correlation time (the step
-    /// counted as noise) left a handful of samples and no significance.
+    /// noise σ = 1 plus a step of 2 halfway through 800 samples (a sideslip
+    /// twice the model's from a step steer on): its mean is 1, its noise
+    /// white (τ = 1), so the standard error is √(σ² + 1)/√800 = 0.0500
+    /// (the scatter about the mean counts the step's ±1 too) and the bias
+    /// 20 standard errors over 800 effective samples. The whole residual's
+    /// correlation time, the step counted as noise, leaves a few dozen
+    /// samples and the bias under the 4 standard errors.
     #[test]
     fn a_step_in_the_residual_is_a_bias_over_the_noise_s_samples() {
         use rand::SeedableRng;
@@ -398,26 +399,23 @@ mod tests {
             .map(|_| crate::optim::stats::gauss(&mut rng))
             .collect();
         // The noise exactly of mean 0 and sd 1: the closed form holds to the sample.
-        let (m, sd) = (mean(&noise), {
-            let m = mean(&noise);
-            (noise.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / 800.0).sqrt()
-        });
+        let m = mean(&noise);
+        let sd = (noise.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / 800.0).sqrt();
         let e: Vec<f64> = noise
             .iter()
             .enumerate()
-            .map(|(i, x)| (x - m) / sd + if i >= 400 { 0.5 } else { 0.0 })
+            .map(|(i, x)| (x - m) / sd + if i >= 400 { 2.0 } else { 0.0 })
             .collect();
         let b = bias_test(&t, &e, 1.0, true);
-        let closed = (1.0_f64 + 0.0625).sqrt() / 800.0_f64.sqrt();
+        let closed = 2.0_f64.sqrt() / 800.0_f64.sqrt();
         assert!(b.effective_samples > 600.0, "{b:?}");
-        assert!(
-            (b.standard_error / closed - 1.0).abs() < 0.15,
-            "{b:?} against {closed}"
-        );
-        assert!(b.significant && b.standard_errors > 5.5, "{b:?}");
+        assert!((b.standard_error / closed - 1.0).abs() < 0.15, "{b:?} against {closed}");
+        assert!(b.significant && b.standard_errors > 17.0, "{b:?}");
         // The whole residual's correlation time, the step counted as noise.
         let whole = correlation_time(&e);
+        let old = 1.0 / (2.0 * whole / 800.0).sqrt();
         assert!(800.0 / whole < 0.1 * b.effective_samples, "τ {whole}");
+        assert!(old < BIAS_STANDARD_ERRORS, "τ {whole}: {old} standard errors");
     }
 
     /// Pure white noise about zero is no bias: its noise time is one sample.

@@ -409,13 +409,19 @@ mod tests {
         let b = bias_test(&t, &e, 1.0, true);
         let closed = 2.0_f64.sqrt() / 800.0_f64.sqrt();
         assert!(b.effective_samples > 600.0, "{b:?}");
-        assert!((b.standard_error / closed - 1.0).abs() < 0.15, "{b:?} against {closed}");
+        assert!(
+            (b.standard_error / closed - 1.0).abs() < 0.15,
+            "{b:?} against {closed}"
+        );
         assert!(b.significant && b.standard_errors > 17.0, "{b:?}");
         // The whole residual's correlation time, the step counted as noise.
         let whole = correlation_time(&e);
         let old = 1.0 / (2.0 * whole / 800.0).sqrt();
         assert!(800.0 / whole < 0.1 * b.effective_samples, "τ {whole}");
-        assert!(old < BIAS_STANDARD_ERRORS, "τ {whole}: {old} standard errors");
+        assert!(
+            old < BIAS_STANDARD_ERRORS,
+            "τ {whole}: {old} standard errors"
+        );
     }
 
     /// Pure white noise about zero is no bias: its noise time is one sample.

@@ -11,6 +11,8 @@
 //! one), read from the error's typed fields, never from its message. SI
 //! units and radians throughout.
 
+mod ranges;
+mod spelling;
 use handling::error::{
     DiagnosisError as LibDiagnosisError, Error, FitError as LibFitError,
     InputError as LibInputError, InputProblem, OptionsError as LibOptionsError, UnitSlip,
@@ -169,7 +171,8 @@ fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
 /// The exception class of an error's kind and its attributes (only typed
 /// fields of the error, never its message text).
 fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<PyAny>)>) {
-    let message = e.to_string();
+    // The command line's options as Python's keywords.
+    let message = spelling::pythonic(&e.to_string());
     let text = |s: &str| py_obj(py, s);
     let path = |p: &Path| py_obj(py, p.display().to_string());
     let opt = |n: Option<usize>| n.map_or_else(|| py.None(), |n| py_obj(py, n));
@@ -447,6 +450,7 @@ impl PyTyre {
         // The points `tyre-eval` refuses, refused; its warnings, warned.
         let inputs = [s[0], s[1], s[2], s[3], s[4]];
         points::check_points(py, tyre, inputs, s[5], PointError::new_err)?;
+        ranges::warn_ranges(py, tyre, inputs, s[5])?;
         let pts = py.detach(|| tyre.evaluate_points(s[0], s[1], s[2], s[3], s[4], s[5]));
         let col = |f: &dyn Fn(&handling::tyre::PointForces) -> f64| {
             PyArray1::from_iter(py, pts.iter().map(f)).into_any()
@@ -638,9 +642,32 @@ fn _bench_simulate(py: Python<'_>, scenario: PathBuf, n: usize) -> PyResult<f64>
     })
 }
 
-/// Step-steer metrics of a measured run; report JSON.
+/// The angle columns `metrics` reads in degrees (its CLI's `--degrees`
+/// takes these alone).
+const METRICS_ANGLES: [&str; 3] = ["steer", "yaw_rate", "beta"];
+
+/// `degrees`' names as the run's angle columns (the package refuses any
+/// other name first, as an `OptionsError` with `name` and `known`).
+fn angle_columns(degrees: &[String]) -> PyResult<Vec<handling::io::AngleColumn>> {
+    degrees
+        .iter()
+        .map(|d| {
+            handling::io::AngleColumn::from_name(d.trim())
+                .filter(|c| METRICS_ANGLES.contains(&c.name()))
+                .ok_or_else(|| {
+                    PyValueError::new_err(format!(
+                        "metrics: `{d}` is not an angle column metrics reads: one of {}",
+                        METRICS_ANGLES.join(", ")
+                    ))
+                })
+        })
+        .collect()
+}
+
+/// Step-steer metrics of a measured run (`degrees`: its columns in
+/// degrees, deg/s for the yaw rate, as `metrics --degrees`); report JSON.
 #[pyfunction]
-#[pyo3(signature = (run, pre_window=0.5, steady_window=1.0, min_speed=5.0, filter_hz=handling::metrics::MEASURED_FILTER_HZ, variance_window=4.0, min_overshoot=handling::metrics::DEFAULT_MIN_OVERSHOOT))]
+#[pyo3(signature = (run, pre_window=0.5, steady_window=1.0, min_speed=5.0, filter_hz=handling::metrics::MEASURED_FILTER_HZ, variance_window=4.0, min_overshoot=handling::metrics::DEFAULT_MIN_OVERSHOOT, degrees=Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 fn metrics(
     py: Python<'_>,
@@ -651,7 +678,9 @@ fn metrics(
     filter_hz: f64,
     variance_window: f64,
     min_overshoot: f64,
+    degrees: Vec<String>,
 ) -> PyResult<String> {
+    let degrees = angle_columns(&degrees)?;
     let settings = MetricSettings {
         pre_window,
         steady_window,
@@ -660,7 +689,9 @@ fn metrics(
         min_overshoot,
         ..MetricSettings::default()
     };
-    let r = detached(py, || jobs::metrics::run(&run, &settings, min_speed))?;
+    let r = detached(py, || {
+        jobs::metrics::run_with_degrees(&run, &settings, min_speed, &degrees)
+    })?;
     json(&r)
 }
 

@@ -501,6 +501,10 @@ fn run(
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     findings.extend(dominant(&base.heldout, &scales, &findings));
+    // ... and one that an assumed floor makes so says that too.
+    if let Verdict::NoSignificantGap(n) = &mut verdict {
+        n.assumed = assumed_floors(&noise, &findings);
+    }
     let channel_shares = crate::diagnose::report::shares::channel_shares(
         &parts,
         &noise,
@@ -538,4 +542,23 @@ fn run(
         overlays,
         timing: recorder.timing(),
     })
+}
+
+/// The channels whose held-out RMS (their [`GapFinding::Channel`]) is
+/// within three noise floors only because the floor is assumed
+/// ([`AssumedFloor::of`]).
+fn assumed_floors(
+    noise: &[crate::diagnose::report::ChannelNoise],
+    findings: &[GapFinding],
+) -> Vec<crate::diagnose::report::outcome::AssumedFloor> {
+    findings
+        .iter()
+        .filter_map(|f| match f {
+            GapFinding::Channel { channel, rms, .. } => noise
+                .iter()
+                .find(|n| n.channel == *channel)
+                .and_then(|n| crate::diagnose::report::outcome::AssumedFloor::of(n, *rms)),
+            _ => None,
+        })
+        .collect()
 }

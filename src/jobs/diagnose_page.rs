@@ -58,7 +58,12 @@ pub fn page(
     );
     verdict(&mut p, d);
     if !d.notes.is_empty() {
-        let notes: Vec<String> = d.notes.iter().map(words::note).collect();
+        // A warning among them says so, as the terminal does.
+        let said = |n: &crate::diagnose::report::Note| match n.is_warning() {
+            true => format!("warning: {}", words::note(n)),
+            false => words::note(n),
+        };
+        let notes: Vec<String> = d.notes.iter().map(said).collect();
         p.section("notes", "Notes on the inputs").lines(&notes);
     }
     let mut findings = vec![words::channels_trusted(&d.gap.noise)];

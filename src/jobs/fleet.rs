@@ -31,7 +31,8 @@ pub struct Recurring {
     pub effect: EffectKind,
     /// Campaigns whose verdict names it.
     pub verdicts: usize,
-    /// Campaigns where it is the best single candidate.
+    /// Campaigns where it is the best single candidate, none of its
+    /// parameters on a bound.
     pub best: usize,
 }
 
@@ -199,6 +200,7 @@ fn failed_row(name: String, e: &Error) -> FleetRow {
         heldout_error_after: None,
         noise_level: None,
         best: None,
+        best_on_bound: false,
         statement: e.to_string(),
         failed: true,
         runs_folder: None,
@@ -278,6 +280,13 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
     let after = d
         .verdict_row()
         .map_or(d.gap.heldout_error, |c| c.heldout_error_after);
+    // A best candidate only where there is a gap and it removes some of it
+    // (to the table's 0.1 %).
+    let gap = d.verdict.kind() != crate::diagnose::report::VerdictKind::NoSignificantGap;
+    let best = d
+        .ranking
+        .first()
+        .filter(|b| gap && b.reduction_percent >= 0.05);
     FleetRow {
         campaign: name.to_string(),
         runs: d.runs.len(),
@@ -286,10 +295,8 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         heldout_error_before: Some(d.gap.heldout_error),
         heldout_error_after: Some(after),
         noise_level: Some(d.gap.noise_level),
-        best: d
-            .ranking
-            .first()
-            .and_then(|b| Some((*b.effects.first()?, b.reduction_percent))),
+        best: best.and_then(|b| Some((*b.effects.first()?, b.reduction_percent))),
+        best_on_bound: best.is_some_and(|b| b.parameters.iter().any(|p| p.at_bound)),
         statement: d.verdict.statement(),
         failed: false,
         runs_folder: None,
@@ -314,7 +321,7 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf, lock: OutputLock) -> FleetR
                 .count(),
             best: distinct
                 .iter()
-                .filter(|r| r.best.is_some_and(|b| b.0 == effect))
+                .filter(|r| !r.best_on_bound && r.best.is_some_and(|b| b.0 == effect))
                 .count(),
         })
         .filter(|r| r.verdicts + r.best > 0)

@@ -505,6 +505,7 @@ mod trips_s98_step28;
 mod trips_s98_words28;
 mod trips_s99_fig41;
 mod trips_s99_fix41c;
+mod trips_s99_fix41d;
 mod trips_s99_fixes39;
 mod trips_s99_perf40;
 mod trips_simulate;

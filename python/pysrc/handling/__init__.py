@@ -200,7 +200,11 @@ class Tyre:
         The points are checked as ``tyre-eval`` checks a points file: a
         value it refuses raises :class:`PointError` naming the argument,
         the index in the flattened broadcast arrays and the value; slip
-        ratios beyond ±1 are warned of (``UserWarning``), as it warns.
+        ratios beyond ±1 are warned of (``UserWarning``), as it warns, and
+        so are the points outside a ``.tir`` file's ranges (load, slip,
+        camber, pressure), in its words: with the file's limit checks on
+        they are evaluated at the range's end (a 40 kN load of a file
+        whose ``FZMAX`` is 18 kN gives the forces at 18 kN).
         """
         args = [fz, kappa, alpha, camber, speed]
         if pressure is not None:
@@ -792,6 +796,7 @@ def metrics(
     variance_window: Optional[float] = None,
     min_overshoot: Optional[float] = None,
     *,
+    degrees: Sequence[str] = (),
     vehicle: Union[Vehicle, Mapping[str, float], None] = None,
     tyres: Any = None,
     manoeuvre: Optional[Mapping[str, Any]] = None,
@@ -808,8 +813,13 @@ def metrics(
     (default 5), ``filter_hz`` the zero-phase low-pass cut-off in Hz
     (default 10; 0: unfiltered), ``min_overshoot`` the least yaw-rate
     overshoot that is a peak in % (default 1; 0: any maximum above the
-    noise); a :class:`MeasuredMetrics` (its
+    noise), ``degrees`` the run's columns in degrees (of ``steer``,
+    ``yaw_rate`` in deg/s, ``beta``; ``handling metrics --degrees``); a
+    :class:`MeasuredMetrics` (its
     ``metrics`` a :class:`StepMetrics`, with the run's cleaning report).
+    A run without a step steer raises :class:`InputError` with its ``path``,
+    as the CLI's error of that file (the file holds no step; a
+    :class:`MetricsError` is a step whose metric cannot be computed).
 
     Of a simulated step steer, given a :class:`Scenario` or its keywords
     (``vehicle``, ``tyres``, ``manoeuvre``, ...: see :class:`Scenario`):
@@ -830,6 +840,8 @@ def metrics(
     if isinstance(run, Scenario) or (run is None and any(v is not None for v in kw.values())):
         if min_speed is not None:
             raise TypeError("metrics: `min_speed` applies to a measured run, not to a scenario")
+        if degrees:
+            raise TypeError("metrics: `degrees` applies to a measured run (a scenario's replay states it under [manoeuvre] degrees)")
         sc = _scenario(run, kw, "metrics")
         assert isinstance(sc, Scenario)
         windows = dict(
@@ -856,6 +868,18 @@ def metrics(
         return m
     if run is None:
         raise TypeError("metrics: give a measured run (CSV), a Scenario or the scenario keywords")
+    if isinstance(degrees, str):
+        degrees = [degrees]
+    known = ["steer", "yaw_rate", "beta"]
+    for d in degrees:
+        if d not in known:
+            err = OptionsError(
+                f"metrics: `{d}` is not an angle column metrics reads in degrees: one of {', '.join(known)}"
+            )
+            err.kind = "options"
+            err.name = d
+            err.known = known
+            raise err
     return MeasuredMetrics.from_dict(json.loads(
         _handling.metrics(
             _path(run),
@@ -865,6 +889,7 @@ def metrics(
             10.0 if filter_hz is None else filter_hz,
             4.0 if variance_window is None else variance_window,
             1.0 if min_overshoot is None else min_overshoot,
+            list(degrees),
         )
     ))
 

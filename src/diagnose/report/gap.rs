@@ -256,7 +256,7 @@ pub fn trusted_channel_gap(
     let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
     let from = scored_from(rec.start);
     let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
-    let bias = scan::bias_test(&e, noise_floor, resolved);
+    let bias = scan::bias_test(t, &e, noise_floor, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated);
     let found = Found {
         whole: significant,
@@ -451,16 +451,55 @@ pub struct BandGap {
 /// Frequency bands of the sweep analysis, Hz.
 const BANDS: [(f64, f64); 5] = [(0.1, 0.3), (0.3, 0.6), (0.6, 1.2), (1.2, 2.4), (2.4, 4.0)];
 
+/// The least yaw-rate response the steer must drive in a band, in units of
+/// the measured channel's noise in one DFT bin (`n·σ²`, σ its noise floor),
+/// for the band's gain and phase to be said. The band's gain estimate
+/// `Σ Y·U*/Σ|U|²` carries the noise as a complex error of relative size
+/// `1/√S` at that ratio `S` (Bendat & Piersol 2010, ch. 9): at 300 the
+/// gain's standard error is 4 % (0.35 dB) and the phase's 2.3°, so the
+/// 1 dB and 10° a finding needs are three standard errors and more. A steer
+/// at the noise level (round 29: white noise of 0.0002 rad on a straight)
+/// drives less than one bin's noise and read "off by −7 dB, +100°".
+pub const BAND_SNR: f64 = 300.0;
+
+/// A run's band analysis: the bands said, and those left unsaid because the
+/// steer drives no response above the noise there ([`BAND_SNR`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Bands {
+    /// Bands with steer content and a response above the noise.
+    pub found: Vec<BandGap>,
+    /// Bands holding the steer's power share but no response above the
+    /// noise: no statement is made of them.
+    pub without_steer: usize,
+}
+
 /// Gain and phase errors of the yaw-rate response per frequency band, for a
 /// run whose steer oscillates (at least six sign changes about its mean: a
 /// sweep or a sine; a step has no band content worth splitting). Both
 /// responses are estimated as `H = Σ Y·U*/Σ |U|²` over the DFT bins of the
 /// band (the run resampled to its median interval, means removed); a band is
 /// reported when it holds at least 5 % of the steer's power in 0.1–4 Hz.
+/// No noise floor: every such band ([`band_gaps_above`] gates them).
+#[cfg(test)]
 pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) -> Vec<BandGap> {
+    band_gaps_above(t, steer, measured, simulated, 0.0).found
+}
+
+/// [`band_gaps`], a band said only where the response the steer drives in
+/// it (the larger of the measured and the simulated yaw rate's part
+/// coherent with the steer, `|Σ Y·U*|²/Σ|U|²`) exceeds [`BAND_SNR`] times
+/// the measured yaw rate's noise in one bin, `n·σ²` with σ `noise_floor`
+/// (rad/s); the others are counted.
+pub fn band_gaps_above(
+    t: &[f64],
+    steer: &[f64],
+    measured: &[f64],
+    simulated: &[f64],
+    noise_floor: f64,
+) -> Bands {
     let n0 = t.len();
     if n0 < 32 {
-        return Vec::new();
+        return Bands::default();
     }
     let m0 = mean(steer);
     let crossings = steer
@@ -468,7 +507,7 @@ pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) 
         .filter(|w| (w[0] - m0).signum() != (w[1] - m0).signum())
         .count();
     if crossings < 6 {
-        return Vec::new();
+        return Bands::default();
     }
     let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
     dts.sort_by(f64::total_cmp);
@@ -500,7 +539,7 @@ pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) 
         .map(|f| (f, dft(&u, f), dft(&ym, f), dft(&ys, f)))
         .collect();
     let power: f64 = bins.iter().map(|b| b.1 .0 * b.1 .0 + b.1 .1 * b.1 .1).sum();
-    let mut out = Vec::new();
+    let mut out = Bands::default();
     for (lo, hi) in BANDS {
         let (mut uu, mut mr, mut mi, mut sr, mut si) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for (f, (ur, ui), (yr, yi), (zr, zi)) in &bins {
@@ -516,10 +555,15 @@ pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) 
         if power <= 0.0 || uu < 0.05 * power {
             continue;
         }
+        let coherent = (mr * mr + mi * mi).max(sr * sr + si * si) / uu;
+        if coherent <= BAND_SNR * n as f64 * noise_floor * noise_floor {
+            out.without_steer += 1;
+            continue;
+        }
         let (gm, gs) = (mr.hypot(mi) / uu, sr.hypot(si) / uu);
         let phase = (si.atan2(sr) - mi.atan2(mr)).to_degrees();
         let phase = (phase + 540.0).rem_euclid(360.0) - 180.0;
-        out.push(BandGap {
+        out.found.push(BandGap {
             f_low: lo,
             f_high: hi,
             gain_measured: gm,

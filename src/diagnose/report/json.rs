@@ -38,6 +38,7 @@ enum Details<'a> {
     NoSignificantGap {
         threshold: f64,
         resting_on: &'a [crate::diagnose::model::scale::StatedExcess],
+        assumed: &'a [crate::diagnose::report::outcome::AssumedFloor],
         far_from_off: Option<&'a crate::diagnose::report::outcome::FarFromOff>,
     },
     NotIdentifiable {
@@ -95,6 +96,7 @@ impl Serialize for Verdict {
                 Details::NoSignificantGap {
                     threshold: n.threshold,
                     resting_on: &n.resting_on,
+                    assumed: &n.assumed,
                     far_from_off: n.far_from_off.as_ref(),
                 },
             ),

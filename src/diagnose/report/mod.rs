@@ -191,6 +191,9 @@ pub struct RunGap {
     pub channels: Vec<ChannelGap>,
     /// Gain and phase error per frequency band (runs with a rich input).
     pub bands: Vec<crate::diagnose::report::gap::BandGap>,
+    /// Bands with the steer's power share whose response lies at the
+    /// noise ([`crate::diagnose::report::gap::BAND_SNR`]): not said.
+    pub bands_without_steer: usize,
 }
 
 /// Where the gap lies.

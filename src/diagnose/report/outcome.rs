@@ -178,11 +178,51 @@ pub struct NoSignificantGap {
     /// than [`crate::diagnose::model::scale::STATED_EXCESS`] times what
     /// they show of themselves: the verdict rests on those statements.
     pub resting_on: Vec<crate::diagnose::model::scale::StatedExcess>,
+    /// The channels whose floor is assumed (an estimated output's, nothing
+    /// stated) and whose held-out RMS would be a gap against their own
+    /// scatter: the verdict rests on that assumption.
+    pub assumed: Vec<AssumedFloor>,
     /// The candidate that fits farthest from its off value, in standard
     /// errors, of those that lower the held-out error: the rule weighs no
     /// candidate on a gap within noise, and the words say what it found
     /// and what would decide it (None: none fits [`FAR_FROM_OFF`] from off).
     pub far_from_off: Option<FarFromOff>,
+}
+
+/// A channel within three noise floors only because its floor is assumed:
+/// read as an estimated output and trusted to an estimated output's
+/// uncertainty, nothing stated, its RMS above three of its own scatter.
+/// Issue 39 item 6 chose the floor; the verdict says it rests on it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct AssumedFloor {
+    /// The channel.
+    pub channel: Channel,
+    /// The floor it is trusted to, its unit.
+    pub floor: f64,
+    /// Its own high-frequency scatter, its unit.
+    pub scatter: f64,
+    /// Its RMS (held-out, or the replay's), its unit.
+    pub rms: f64,
+}
+
+impl AssumedFloor {
+    /// The assumption a channel's verdict of RMS `rms` rests on, where it
+    /// does: within [`SIGNIFICANT_NOISE_FLOORS`] of its assumed floor,
+    /// beyond them of its scatter.
+    pub fn of(n: &super::ChannelNoise, rms: f64) -> Option<Self> {
+        let own = n.scatter;
+        let rests = n.source == super::ScaleSource::Estimated
+            && own.is_finite()
+            && own > 0.0
+            && !above_noise(rms, n.noise_floor)
+            && above_noise(rms, own);
+        rests.then_some(AssumedFloor {
+            channel: n.channel,
+            floor: n.noise_floor,
+            scatter: own,
+            rms,
+        })
+    }
 }
 
 /// Standard errors from its off value beyond which a parameter fitted on a
@@ -319,6 +359,16 @@ pub enum VerdictWarning {
         /// The parameters, as the verdict reports them.
         parameters: Vec<ParameterValue>,
     },
+    /// The given base tyres are used far from their load range: a wheel's
+    /// static load over the file's `FNOMIN` beyond a factor of three
+    /// (`simulate`'s rule); the effects fitted may stand in for a tyre of
+    /// another class of vehicle.
+    TyresFarFromLoad {
+        /// Front wheel's static load over the front file's FNOMIN, where far.
+        front: Option<f64>,
+        /// The rear's.
+        rear: Option<f64>,
+    },
     /// What the verdict's effects leave is itself a gap: a held-out error
     /// above the significance threshold of the noise level, the rest of
     /// the gap a further cause and not noise. Said of a verdict that
@@ -431,6 +481,15 @@ pub enum GapFinding {
         gain_error_db: f64,
         /// Phase error, degrees.
         phase_error_deg: f64,
+    },
+    /// Frequency bands holding the steer's power share whose yaw-rate
+    /// response lies at the noise ([`crate::diagnose::report::gap::BAND_SNR`]):
+    /// no gain or phase is said of them.
+    BandsWithoutSteer {
+        /// Such bands over all runs.
+        bands: usize,
+        /// Runs with at least one.
+        runs: usize,
     },
     /// One channel carries most of the base model's held-out error: it
     /// decides every fit.

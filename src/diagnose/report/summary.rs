@@ -33,15 +33,24 @@ pub(crate) fn base_run_gap(
         .iter()
         .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
         .collect();
+    let channels = run_gap(run, &history, trusted);
+    // The bands are judged against the yaw rate's noise floor, as its gap is.
+    let floor = channels
+        .iter()
+        .find(|c| c.channel == Channel::YawRate)
+        .map_or(0.0, |c| c.noise_floor);
+    let bands = crate::diagnose::report::gap::band_gaps_above(
+        &t,
+        &pick(&run.steer),
+        &pick(&run.yaw_rate),
+        &yaw_rate,
+        floor,
+    );
     RunGap {
         run: run.path.display().to_string(),
-        channels: run_gap(run, &history, trusted),
-        bands: crate::diagnose::report::gap::band_gaps(
-            &t,
-            &pick(&run.steer),
-            &pick(&run.yaw_rate),
-            &yaw_rate,
-        ),
+        channels,
+        bands: bands.found,
+        bands_without_steer: bands.without_steer,
     }
 }
 
@@ -264,6 +273,15 @@ pub(crate) fn gap_summary(
                 });
             }
         }
+    }
+    // Bands left unsaid are counted, not dropped without a word.
+    let quiet: Vec<usize> = runs.iter().map(|r| r.bands_without_steer).collect();
+    let bands: usize = quiet.iter().sum();
+    if bands > 0 {
+        out.push(GapFinding::BandsWithoutSteer {
+            bands,
+            runs: quiet.iter().filter(|&&b| b > 0).count(),
+        });
     }
     out
 }

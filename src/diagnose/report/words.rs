@@ -27,7 +27,7 @@ pub use gap::band_lines;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
-pub use trust::{channel_trust, channels_trusted, channels_trusted_for, Reader};
+pub use trust::{assumed_floor, channel_trust, channels_trusted, channels_trusted_for, Reader};
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
@@ -380,7 +380,7 @@ pub fn rank_warning(w: &RankWarning) -> String {
 /// A note on the inputs.
 pub fn note(n: &Note) -> String {
     match n {
-        Note::Campaign { text } => text.clone(),
+        Note::Campaign { text } | Note::TyresFarFromLoad { text } => text.clone(),
         Note::NotACandidate { effect, lacks } => {
             format!("{}: not a candidate: {lacks}", effect.name())
         }
@@ -535,6 +535,12 @@ pub fn finding(f: &GapFinding) -> String {
             "{} carries {share_percent:.0} % of the base model's held-out error (each channel over its noise floor{}): it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
             channel.name(),
             gap::offsets_aside(less_offsets)
+        ),
+        GapFinding::BandsWithoutSteer { bands, runs } => format!(
+            "frequency bands: {} in {} without steer content: the steer there drives no yaw-rate response above {} × the gyro's noise in one frequency bin, so no gain or phase is said of them",
+            crate::format::plural(*bands, "band", "bands"),
+            crate::format::plural(*runs, "run", "runs"),
+            crate::diagnose::report::gap::BAND_SNR
         ),
         GapFinding::WithoutAy { runs, of } => {
             format!("|ay| levels are u·r on the {runs} of {of} runs without an ay channel")

@@ -58,6 +58,7 @@ pub(crate) fn verdict(
             threshold: SIGNIFICANT,
             // Named by the pipeline, which has the channels' trust.
             resting_on: Vec::new(),
+            assumed: Vec::new(),
             far_from_off: far_from_off(
                 order.iter().map(|&i| base.rank(&singles[i])),
                 heldout_error,

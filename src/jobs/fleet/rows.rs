@@ -28,8 +28,14 @@ pub struct FleetRow {
     pub heldout_error_after: Option<f64>,
     /// J of the noise alone.
     pub noise_level: Option<f64>,
-    /// The best single candidate and its share of the gap removed, %.
+    /// The best single candidate and its share of the gap removed, %: none
+    /// where the gap is within noise or the best removes none of it (a
+    /// campaign with no gap named steering_compliance at 0 %).
     pub best: Option<(EffectKind, f64)>,
+    /// The best candidate has a parameter on a bound: its value is a
+    /// limit, not a measurement, and it does not count as recurring.
+    #[serde(default)]
+    pub best_on_bound: bool,
     /// The verdict in words, or why the campaign failed.
     pub statement: String,
     /// Whether it failed (not read or not diagnosed).

@@ -19,6 +19,7 @@ pub(crate) mod unlimited;
 use super::metrics::{metric_lines, UNITS};
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
+use crate::diagnose::report::outcome::AssumedFloor;
 use crate::diagnose::report::trust::channel_trust;
 use crate::diagnose::report::{words, ChannelNoise};
 use crate::error::{Error, InputError, InputProblem, PieceRefusal, ScenarioProblem};
@@ -350,9 +351,17 @@ fn run_checks(sc: &Scenario, h: &TimeHistory, warnings: &mut Vec<String>) -> Vec
 /// sensor of its type.
 fn replay_gap(sc: &Scenario, run: &MeasuredRun, h: &TimeHistory) -> ReplayGap {
     let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
+    let mut channels = run_gap(run, h, &trust.floors);
+    // A gap within noise only by an assumed floor says so (issue 41).
+    for g in &mut channels {
+        let noise = trust.noise.iter().find(|n| n.channel == g.channel);
+        if let Some(a) = noise.and_then(|n| AssumedFloor::of(n, g.rms)) {
+            g.verdict += &format!("; {}", words::assumed_floor(&a));
+        }
+    }
     ReplayGap {
         run: run.path.display().to_string(),
-        channels: run_gap(run, h, &trust.floors),
+        channels,
         noise: trust.noise,
         cleaning: sc.cleaning.clone(),
     }

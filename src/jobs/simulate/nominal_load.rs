@@ -18,6 +18,20 @@ use crate::vehicle::Vehicle;
 /// another class of vehicle (a 30 kN truck tyre at 3 kN: 0.1).
 pub(super) const NOMINAL_SHARE: (f64, f64) = (1.0 / 3.0, 3.0);
 
+/// Each axle's (front, rear) static wheel load over its `.tir`'s `FNOMIN`,
+/// where beyond [`NOMINAL_SHARE`]; None for an axle within it or not on a
+/// Magic Formula file.
+pub(crate) fn nominal_shares_of(vehicle: &Vehicle, [f, r]: [&Tyre; 2]) -> [Option<f64>; 2] {
+    let (front, rear) = vehicle.static_axle_loads();
+    [(f, front), (r, rear)].map(|(tyre, load)| {
+        let Tyre::MagicFormula(t) = tyre else {
+            return None;
+        };
+        let share = 0.5 * load / t.coefficients.FNOMIN;
+        (!(NOMINAL_SHARE.0..=NOMINAL_SHARE.1).contains(&share)).then_some(share)
+    })
+}
+
 /// What to say of each axle (front, rear) whose `.tir` has an `FNOMIN`
 /// the car's static wheel loads lie beyond [`NOMINAL_SHARE`] of (`checks`
 /// words it per axle, one line for both where they say the same).

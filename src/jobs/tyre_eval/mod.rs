@@ -71,6 +71,7 @@ mod points;
 mod pressure;
 mod radius;
 mod ranges;
+pub use ranges::{ranges_left, RangeLeft};
 mod reads;
 pub use reads::{read_ranges, reads, Reads};
 mod rolling;

@@ -15,9 +15,12 @@
 //!   a record of pure noise shows a local gap in at most about one run in a
 //!   hundred, however long.
 //! - The bias against its standard error `max(floor, sd(e))·√(τ/n)`, τ the
-//!   residual's integrated autocorrelation time (Sokal's window, as the
-//!   calibration's means use): significant beyond
-//!   [`BIAS_STANDARD_ERRORS`].
+//!   noise's integrated autocorrelation time ([`noise_time`]: the residual
+//!   less its moving mean, Sokal's window as the calibration's means use),
+//!   not the whole residual's: a persistent error is slow, and counted as
+//!   noise it made itself its own excuse (a sideslip twice the model's read
+//!   "1.8 standard errors over 3 effective samples" of 800); significant
+//!   beyond [`BIAS_STANDARD_ERRORS`].
 //! - The time shift: the lag of the largest correlation of the measured
 //!   channel with the simulated one over ±[`MAX_SHIFT`] s, refined between
 //!   samples by a parabola through the peak and its neighbours; only where
@@ -241,13 +244,15 @@ pub(super) fn worst_window(
         })
 }
 
-/// The residual `e`'s mean against its standard error, the noise floor
-/// `floor` the least scatter it is judged with.
-pub(super) fn bias_test(e: &[f64], floor: f64, resolved: bool) -> BiasTest {
+/// The residual `e` at times `t`: its mean against its standard error, the
+/// noise floor `floor` the least scatter it is judged with, the effective
+/// samples counted by the noise's correlation time ([`noise_time`]), not
+/// by the residual's own: the error tested is not its noise.
+pub(super) fn bias_test(t: &[f64], e: &[f64], floor: f64, resolved: bool) -> BiasTest {
     let n = e.len().max(1) as f64;
     let m = mean(e);
     let var = e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n;
-    let tau = correlation_time(e);
+    let tau = noise_time(t, e);
     let standard_error = (var.max(floor * floor) * tau / n).sqrt();
     let standard_errors = m.abs() / standard_error;
     BiasTest {
@@ -374,6 +379,66 @@ mod tests {
         let whole = correlation_time(&e);
         let hidden = worst_window(t1, scored_from(t1[0]), e1, 1.0, whole, 100, true).unwrap();
         assert!(!hidden.significant, "τ {whole}: {hidden:?}");
+    }
+
+    /// A persistent error does not excuse itself. A residual of white
+    /// noise σ = 1 plus a step of 2 halfway through 800 samples (a sideslip
+    /// twice the model's from a step steer on): its mean is 1, its noise
+    /// white (τ = 1), so the standard error is √(σ² + 1)/√800 = 0.0500
+    /// (the scatter about the mean counts the step's ±1 too) and the bias
+    /// 20 standard errors over 800 effective samples. The whole residual's
+    /// correlation time, the step counted as noise, leaves a few dozen
+    /// samples and the bias under the 4 standard errors.
+    #[test]
+    fn a_step_in_the_residual_is_a_bias_over_the_noise_s_samples() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        let t: Vec<f64> = (0..800).map(|i| 0.01 * i as f64).collect();
+        let noise: Vec<f64> = t
+            .iter()
+            .map(|_| crate::optim::stats::gauss(&mut rng))
+            .collect();
+        // The noise exactly of mean 0 and sd 1: the closed form holds to the sample.
+        let m = mean(&noise);
+        let sd = (noise.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / 800.0).sqrt();
+        let e: Vec<f64> = noise
+            .iter()
+            .enumerate()
+            .map(|(i, x)| (x - m) / sd + if i >= 400 { 2.0 } else { 0.0 })
+            .collect();
+        let b = bias_test(&t, &e, 1.0, true);
+        let closed = 2.0_f64.sqrt() / 800.0_f64.sqrt();
+        assert!(b.effective_samples > 600.0, "{b:?}");
+        assert!(
+            (b.standard_error / closed - 1.0).abs() < 0.15,
+            "{b:?} against {closed}"
+        );
+        assert!(b.significant && b.standard_errors > 17.0, "{b:?}");
+        // The whole residual's correlation time, the step counted as noise.
+        let whole = correlation_time(&e);
+        let old = 1.0 / (2.0 * whole / 800.0).sqrt();
+        assert!(800.0 / whole < 0.1 * b.effective_samples, "τ {whole}");
+        assert!(
+            old < BIAS_STANDARD_ERRORS,
+            "τ {whole}: {old} standard errors"
+        );
+    }
+
+    /// Pure white noise about zero is no bias: its noise time is one sample.
+    #[test]
+    fn white_noise_is_no_bias() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let t: Vec<f64> = (0..800).map(|i| 0.01 * i as f64).collect();
+        let mut alarms = 0;
+        for _ in 0..200 {
+            let e: Vec<f64> = t
+                .iter()
+                .map(|_| crate::optim::stats::gauss(&mut rng))
+                .collect();
+            alarms += usize::from(bias_test(&t, &e, 1.0, true).significant);
+        }
+        assert!(alarms <= 1, "{alarms} of 200");
     }
 
     #[test]

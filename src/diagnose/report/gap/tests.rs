@@ -216,3 +216,38 @@ fn a_run_with_no_steady_start_is_not_split_by_time_after_an_input() {
         );
     }
 }
+
+/// A steer at the noise level drives no band response above the gyro's
+/// noise: round 29's straights (white noise of 0.0002 rad at 20 m/s, a
+/// gyro of 0.0017 rad/s) read "0.10–0.30 Hz off by −7 dB, +100°". Every
+/// band that holds the steer's power is counted as without steer content;
+/// the chirp of 0.02 rad, the same gyro noise on both, keeps its bands.
+#[test]
+fn bands_are_said_only_where_the_steer_drives_a_response_above_the_noise() {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(29);
+    let mut gauss = || crate::optim::stats::gauss(&mut rng);
+    let t = grid(1001, 0.01);
+    let gyro = 0.0017;
+    let steer: Vec<f64> = t.iter().map(|_| 0.0002 * gauss()).collect();
+    // A yaw-rate gain of 5 1/s, lagging one sample, plus the gyro's noise.
+    let gain = |k: usize| 5.0 * steer[k.saturating_sub(1)];
+    let simulated: Vec<f64> = (0..t.len()).map(gain).collect();
+    let measured: Vec<f64> = (0..t.len()).map(|k| gain(k) + gyro * gauss()).collect();
+    let quiet = band_gaps_above(&t, &steer, &measured, &simulated, gyro);
+    assert!(quiet.found.is_empty(), "{quiet:?}");
+    assert!(quiet.without_steer >= 3, "{quiet:?}");
+    // Without a floor the same run reads every band, as before.
+    assert!(band_gaps(&t, &steer, &measured, &simulated).len() >= 3);
+    // A chirp of 0.02 rad over 30 s with the same gyro noise keeps them.
+    let t = grid(6001, 0.005);
+    let chirp = |x: f64| (PI * (0.1 * x + 0.65 / 2.0 * x * x / 1.0 * 0.5)).sin();
+    let steer: Vec<f64> = t.iter().map(|&x| 0.02 * chirp(x)).collect();
+    let measured: Vec<f64> = steer.iter().map(|d| 10.0 * d + gyro * gauss()).collect();
+    let simulated: Vec<f64> = steer.iter().map(|d| 11.0 * d).collect();
+    let swept = band_gaps_above(&t, &steer, &measured, &simulated, gyro);
+    assert!(
+        swept.found.len() >= 3 && swept.without_steer == 0,
+        "{swept:?}"
+    );
+}

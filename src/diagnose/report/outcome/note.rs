@@ -19,6 +19,14 @@ pub enum Note {
         /// The note.
         text: String,
     },
+    /// A given tyre file whose `FNOMIN` the car's static wheel loads lie
+    /// far from (`simulate`'s words, `nominal_load`): a warning, carried
+    /// into the verdict's warnings
+    /// ([`crate::diagnose::report::outcome::VerdictWarning::TyresFarFromLoad`]).
+    TyresFarFromLoad {
+        /// The words, per axle.
+        text: String,
+    },
     /// An effect the runs cannot show, left out of the candidates.
     NotACandidate {
         /// The effect.
@@ -101,4 +109,11 @@ pub enum Note {
         /// Samples judged.
         samples: usize,
     },
+}
+
+impl Note {
+    /// Whether the terminal and the page say it as a warning, not a note.
+    pub fn is_warning(&self) -> bool {
+        matches!(self, Note::TyresFarFromLoad { .. })
+    }
 }

@@ -87,6 +87,7 @@ fn no_gap_names_its_threshold() {
         noise_level: 0.95,
         threshold: 1.3,
         resting_on: Vec::new(),
+        assumed: Vec::new(),
         far_from_off: None,
     });
     assert_eq!(
@@ -106,6 +107,7 @@ fn no_gap_names_its_threshold() {
         noise_level: 0.95,
         threshold: 1.3,
         resting_on: excess.into_iter().collect(),
+        assumed: Vec::new(),
         far_from_off: None,
     });
     assert_eq!(

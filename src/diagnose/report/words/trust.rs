@@ -7,6 +7,7 @@
 use super::{rms, std_error, value};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
+use crate::diagnose::report::outcome::AssumedFloor;
 use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource};
 
 /// Who reads the channels' trust, for what a user can do where a
@@ -154,6 +155,20 @@ pub fn excess_note(e: &StatedExcess) -> String {
     )
 }
 
+/// An assumed floor the verdict rests on ([`AssumedFloor`]) in words:
+/// what the channel is trusted to and why, and what its own scatter would
+/// make of its RMS.
+pub fn assumed_floor(a: &AssumedFloor) -> String {
+    let (name, u) = (a.channel.name(), a.channel.unit());
+    format!(
+        "this rests on an assumed floor: {name} is read as an estimated output and trusted to {} {u}, an estimated output's uncertainty, not one stated; with {name} trusted to its scatter, {} {u}, its RMS {} {u} would be {} noise floors, a gap (where {name} is a sensor, state `[channels] {name} = …` in the campaign)",
+        rms(a.floor),
+        rms(a.scatter),
+        rms(a.rms),
+        crate::format::fixed(a.rms / a.scatter, 0),
+    )
+}
+
 /// A verdict of no significant gap, with the stated uncertainties it
 /// rests on ([`StatedExcess`]).
 pub fn no_gap(n: &NoSignificantGap) -> String {
@@ -169,6 +184,10 @@ pub fn no_gap(n: &NoSignificantGap) -> String {
             e.channel.unit(),
             stated_excess(e)
         );
+    }
+    for a in &n.assumed {
+        v += "; ";
+        v += &assumed_floor(a);
     }
     if let Some(f) = &n.far_from_off {
         v += &far_from_off(f, n.threshold);

@@ -33,6 +33,18 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
         VerdictWarning::OnSearchBound { parameters } => {
             super::parameters::on_search_bound(parameters)
         }
+        VerdictWarning::TyresFarFromLoad { front, rear } => {
+            let each: Vec<String> = [("front", front), ("rear", rear)]
+                .into_iter()
+                .filter_map(|(axle, share)| {
+                    share.map(|x| format!("{axle} {} × FNOMIN", crate::format::fixed(x, 2)))
+                })
+                .collect();
+            format!(
+                "the base tyres are used far from their load range ({} a wheel standing still): a tyre file of another class of vehicle, so the effects fitted may stand in for the tyres' misfit, not for the car",
+                each.join(", ")
+            )
+        }
         VerdictWarning::GapRemains {
             heldout_error_after,
             noise_level,

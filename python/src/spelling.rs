@@ -1,0 +1,139 @@
+//! An error's message as Python says it: the library's messages name the
+//! command line's options (`metrics --degrees steer`, "drop --load"),
+//! which a Python user does not type; raised from Python they name the
+//! keyword instead (`degrees=["steer"]`, "drop `load=`"). Only the
+//! spelling of options changes; numbers and every other word stay.
+
+/// `--name` (letters, digits and dashes) as its keyword, `name` with
+/// underscores.
+fn keyword(flag: &str) -> String {
+    flag.trim_start_matches("--").replace('-', "_")
+}
+
+/// A value as Python writes it: a number as it is, anything else quoted;
+/// a list for `degrees` (the columns in degrees).
+fn value(name: &str, v: &str) -> String {
+    let quoted = |s: &str| {
+        if s.parse::<f64>().is_ok() {
+            s.to_string()
+        } else {
+            format!("\"{s}\"")
+        }
+    };
+    if name == "degrees" {
+        let each: Vec<String> = v.split(',').map(|c| format!("\"{}\"", c.trim())).collect();
+        return format!("[{}]", each.join(", "));
+    }
+    // `mf61|mf62`: either value, each quoted.
+    v.split('|').map(quoted).collect::<Vec<_>>().join("|")
+}
+
+/// A quoted command (`metrics --degrees steer`, `--camber 2`,
+/// `identify --model mf61|mf62`) as keywords (`degrees=["steer"]`,
+/// `camber=2`, `model="mf61"|"mf62"`); None where it names no option.
+fn quoted_command(span: &str) -> Option<String> {
+    let at = span.find("--")?;
+    let words: Vec<&str> = span[at..].split_whitespace().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < words.len() {
+        let w = words[i];
+        if !w.starts_with("--") {
+            return None;
+        }
+        let name = keyword(w);
+        match words.get(i + 1).filter(|v| !v.starts_with("--")) {
+            Some(v) => {
+                out.push(format!("{name}={}", value(&name, v)));
+                i += 2;
+            }
+            None => {
+                out.push(format!("{name}="));
+                i += 1;
+            }
+        }
+    }
+    Some(out.join(", "))
+}
+
+/// The message with each option the command line spells (`--load`, in
+/// quotes or bare) spelt as Python's keyword.
+pub fn pythonic(message: &str) -> String {
+    // Quoted spans first: `…` pairs.
+    let mut out = String::new();
+    let mut parts = message.split('`');
+    if let Some(first) = parts.next() {
+        out += &bare(first);
+    }
+    let rest: Vec<&str> = parts.collect();
+    for (k, part) in rest.iter().enumerate() {
+        let inside = k % 2 == 0 && k + 1 < rest.len();
+        if inside {
+            match quoted_command(part) {
+                Some(py) => out += &format!("`{py}`"),
+                None => out += &format!("`{part}`"),
+            }
+        } else if k % 2 == 0 {
+            // An unpaired backtick: the rest as it is.
+            out += "`";
+            out += &bare(part);
+        } else {
+            out += &bare(part);
+        }
+    }
+    out
+}
+
+/// Bare `--name` words (outside quotes) as `` `name=` ``.
+fn bare(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(at) = rest.find("--") {
+        let after = &rest[at + 2..];
+        let len = after
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+            .unwrap_or(after.len());
+        let starts_word = at == 0 || rest[..at].ends_with([' ', '(', '"', '\'']);
+        if len == 0 || !starts_word || !after.starts_with(|c: char| c.is_ascii_lowercase()) {
+            out += &rest[..at + 2];
+            rest = after;
+            continue;
+        }
+        out += &rest[..at];
+        out += &format!("`{}=`", keyword(&after[..len]));
+        rest = &after[len..];
+    }
+    out + rest
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pythonic;
+
+    #[test]
+    fn options_are_spelt_as_keywords() {
+        assert_eq!(
+            pythonic("a column in degrees is declared so: `metrics --degrees steer`, or `degrees = [\"steer\"]` under a campaign's [runs]"),
+            "a column in degrees is declared so: `degrees=[\"steer\"]`, or `degrees = [\"steer\"]` under a campaign's [runs]"
+        );
+        assert_eq!(
+            pythonic(
+                "fit a model that takes one load (gim), or, where --load selected it, drop --load"
+            ),
+            "fit a model that takes one load (gim), or, where `load=` selected it, drop `load=`"
+        );
+        assert_eq!(
+            pythonic("`identify --model mf61|mf62`"),
+            "`model=\"mf61\"|\"mf62\"`"
+        );
+        assert_eq!(
+            pythonic("`--camber 2` and `--hold`"),
+            "`camber=2` and `hold=`"
+        );
+        // Not options: a range, a dash in words.
+        assert_eq!(
+            pythonic("from -1 to 2 -- nothing"),
+            "from -1 to 2 -- nothing"
+        );
+    }
+}

@@ -2,6 +2,9 @@
 //! the reduction columns.
 
 use super::*;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::pipeline::PartAxis;
 
 /// Nine channel-and-axis charts become three print-sized panels: a
 /// panel per axis holding every channel, labels about 10 pt on a

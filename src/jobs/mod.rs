@@ -23,6 +23,7 @@
 
 pub mod design;
 pub mod diagnose;
+mod diagnose_gap_map;
 mod diagnose_overlays;
 pub mod diagnose_page;
 pub mod equilibria;

@@ -1,4 +1,4 @@
-"""Round 29's findings in the Python API (issue 41): `Tyre.forces` clipped
+"""Round 29's findings in the Python API: `Tyre.forces` clipped
 at a `.tir` file's ranges without a word where `tyre-eval` warns; `metrics`
 had no `degrees` while its errors told a Python user to type
 `metrics --degrees steer`; a run without a step steer raises the CLI's

@@ -1,4 +1,4 @@
-//! Issue 41's Magic Formula fit figure, as a user makes it
+//! The Magic Formula fit figure, as a user makes it
 //! (`identify cornering.csv --model mf61 --out o` on the public Hoosier
 //! file): the fitted curves were drawn in black over points coloured by
 //! load, so that which curve belonged to which load, and how close each

@@ -1,4 +1,4 @@
-//! Round 29's findings in `simulate`'s replay and `diagnose` (issue 41): a
+//! Round 29's findings in `simulate`'s replay and `diagnose`: a
 //! measured sideslip twice the model's read "no significant gap" over "3
 //! effective samples" of 800; band gains and phases said of a steer at its
 //! noise level; a fleet's "best candidate" on a campaign with no gap; a

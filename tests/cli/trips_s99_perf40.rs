@@ -1,4 +1,4 @@
-//! Session 99, issue 40: a greedy step whose restricted fits screen all but
+//! A greedy step whose restricted fits screen all but
 //! some of its sets polishes only those (`verdict/restricted.rs`): on the
 //! racing log, `steer_path+steering_ratio` removes more than 10 % of what
 //! the steer path leaves in its restricted fit and is polished, and

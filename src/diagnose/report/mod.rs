@@ -32,11 +32,11 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, ClassMismatch,
-    Closest, Evidence, Explained, FarFromOff, GapFinding, InSet, Lookalike, Lookalikes, MassAlike,
-    NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning,
-    Refusal, Refused, Searched, SetAside, StandstillBank, ThroughBank, Unseen, Verdict,
-    VerdictKind, VerdictWarning, Window,
+    above_noise, AssumedFloor, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened,
+    ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet, Lookalike,
+    Lookalikes, MassAlike, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback,
+    Parsimony, RankWarning, Refusal, Refused, Searched, SetAside, StandstillBank, ThroughBank,
+    Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{
@@ -352,4 +352,24 @@ pub struct Overlay {
     pub after: Observed,
     /// Base-model combined error of the run.
     pub gap: f64,
+}
+
+impl AssumedFloor {
+    /// The assumption a channel's verdict of RMS `rms` rests on, where it
+    /// does: within [`outcome::SIGNIFICANT_NOISE_FLOORS`] of its assumed floor,
+    /// beyond them of its scatter.
+    pub fn of(n: &ChannelNoise, rms: f64) -> Option<Self> {
+        let own = n.scatter;
+        let rests = n.source == ScaleSource::Estimated
+            && own.is_finite()
+            && own > 0.0
+            && !above_noise(rms, n.noise_floor)
+            && above_noise(rms, own);
+        rests.then_some(AssumedFloor {
+            channel: n.channel,
+            floor: n.noise_floor,
+            scatter: own,
+            rms,
+        })
+    }
 }

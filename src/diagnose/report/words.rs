@@ -15,6 +15,7 @@ mod evidence;
 mod gap;
 mod lookalikes;
 mod parameters;
+mod rank;
 mod trust;
 mod warnings;
 pub use crate::diagnose::report::shares::carries_line as channel_shares;
@@ -27,13 +28,14 @@ pub use gap::band_lines;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
+pub use rank::{rank_warning, rank_warnings};
 pub use trust::{assumed_floor, channel_trust, channels_trusted, channels_trusted_for, Reader};
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
-    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
-    Refused, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, Refusal, Refused, Verdict,
+    VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{Confounded, Reduction, Shrinkage};
 use crate::format::signed;
@@ -308,73 +310,6 @@ pub fn channel_change(s: &Shrinkage) -> String {
 /// digits (0.0032 rad/s, 0.00021 rad), one text for one number.
 pub fn rms(v: f64) -> String {
     crate::format::decimals_or_digits(v, 4, 2)
-}
-
-/// A ranked candidate's warnings in one line (None without any).
-pub fn rank_warnings(w: &[RankWarning]) -> Option<String> {
-    let lines: Vec<String> = w.iter().map(rank_warning).collect();
-    (!lines.is_empty()).then(|| lines.join("; "))
-}
-
-/// One warning on a ranked candidate.
-pub fn rank_warning(w: &RankWarning) -> String {
-    match w {
-        RankWarning::Disagreement {
-            insample_percent,
-            heldout_percent,
-        } => {
-            // A negative reduction is a larger gap, not a smaller removal.
-            let heldout = if *heldout_percent < 0.0 {
-                format!("makes it {:.0} % larger", -heldout_percent)
-            } else {
-                format!("only {heldout_percent:.0} %")
-            };
-            format!(
-                "the fit on all runs removes {insample_percent:.0} % of the gap but {heldout} on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
-            )
-        }
-        RankWarning::AxlesNoTyre { no_tyre } => format!(
-            "fitted with it, the axles are no tyre ({}): it cannot be a verdict",
-            no_tyre_list(no_tyre)
-        ),
-        RankWarning::FoldsFar {
-            parameter,
-            value: v,
-            std_error,
-            reported_std_error,
-            fold_value,
-            distance,
-            far,
-            folds,
-        } => {
-            // The robust standard error the table gives, where there is one.
-            let given = if reported_std_error.is_finite() && *reported_std_error > 0.0 {
-                format!(
-                    "; {:.1} times the ± {} given, robust to correlated residuals",
-                    (fold_value - v).abs() / reported_std_error,
-                    self::std_error(*reported_std_error)
-                )
-            } else {
-                String::new()
-            };
-            format!(
-                "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {}{given}): its held-out score measures a fit on fewer runs as much as the effect",
-                value(*fold_value),
-                value(*v),
-                self::std_error(*std_error),
-            )
-        }
-        RankWarning::WorseThanSubset {
-            subset,
-            subset_error,
-            error,
-        } => format!(
-            "it fits the runs worse than {subset}, which it contains (in-sample error {error:.3} against {subset_error:.3}): its fit stopped short of that optimum or holds a parameter {subset} fits, so its scores understate the set"
-        ),
-        RankWarning::FoldsNotConverged { failed, folds } => {
-            format!("{failed} of {folds} fold refits did not converge")
-        }
-    }
 }
 
 /// A note on the inputs.

@@ -7,6 +7,7 @@ use crate::diagnose::effects::{EffectKind, Group};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;
+use crate::diagnose::report::RankWarning;
 
 #[test]
 fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {

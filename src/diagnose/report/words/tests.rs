@@ -7,6 +7,7 @@ use crate::diagnose::effects::{Bound, EffectKind, Group};
 use crate::diagnose::report::outcome::{
     Evidence, Explained, NoSignificantGap, OutsideLibrary, VerdictWarning,
 };
+use crate::diagnose::report::RankWarning;
 use crate::diagnose::report::{ParameterValue, Part, Unseen};
 
 pub(super) fn explained(reduction_percent: f64) -> Verdict {

@@ -30,7 +30,8 @@ fn value(name: &str, v: &str) -> String {
 
 /// A quoted command (`metrics --degrees steer`, `--camber 2`,
 /// `identify --model mf61|mf62`) as keywords (`degrees=["steer"]`,
-/// `camber=2`, `model="mf61"|"mf62"`); None where it names no option.
+/// `camber=2`, `model="mf61"|"mf62"`; a flag alone, `--max-ax`, as
+/// `max_ax`); None where it names no option.
 fn quoted_command(span: &str) -> Option<String> {
     let at = span.find("--")?;
     let words: Vec<&str> = span[at..].split_whitespace().collect();
@@ -47,8 +48,9 @@ fn quoted_command(span: &str) -> Option<String> {
                 out.push(format!("{name}={}", value(&name, v)));
                 i += 2;
             }
+            // A flag alone, as in "`--max-ax` = 0": its keyword's name.
             None => {
-                out.push(format!("{name}="));
+                out.push(name);
                 i += 1;
             }
         }
@@ -128,7 +130,7 @@ mod tests {
         );
         assert_eq!(
             pythonic("`--camber 2` and `--hold`"),
-            "`camber=2` and `hold=`"
+            "`camber=2` and `hold`"
         );
         // Not options: a range, a dash in words.
         assert_eq!(

@@ -213,9 +213,9 @@ def test_design_separates_the_delays_a_diagnosis_confounds_and_drives_its_best(t
         handling.design(tmp_path / "d", effects=["sensor_delay", "yaw_inertia"], out=tmp_path / "x")
     # Options no design can honour are refused by the library, as on the
     # command line (max_ax=0 once replayed an empty schedule and panicked).
-    with pytest.raises(handling.ParamError, match=r"`--max-ax` = 0: must lie in \(0, 15\]"):
+    with pytest.raises(handling.ParamError, match=r"`max_ax` = 0: must lie in \(0, 15\]"):
         handling.design(tmp_path / "d", max_ax=0.0, out=tmp_path / "y")
-    with pytest.raises(handling.ParamError, match="`--top` = 0"):
+    with pytest.raises(handling.ParamError, match="`top` = 0"):
         handling.design(tmp_path / "d", top=0, out=tmp_path / "y")
 
 

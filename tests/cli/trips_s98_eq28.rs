@@ -104,8 +104,10 @@ fn a_copied_runs_folder_is_counted_once_and_named() {
     let dir = tempfile::tempdir().unwrap();
     let batch = dir.path().join("batch");
     fs::create_dir(&batch).unwrap();
-    synth_campaign(&batch, "c", &["--seed", "1"]);
-    synth_campaign(&batch, "e", &["--seed", "1"]);
+    // A campaign with a gap, so that its verdict recurs in the fleet's
+    // table (a campaign without one has no best candidate to count).
+    synth_campaign(&batch, "c", &["--effects", "sensor_delay", "--seed", "1"]);
+    synth_campaign(&batch, "e", &["--effects", "sensor_delay", "--seed", "1"]);
     let out = dir.path().join("out");
     let o = run(&[
         "diagnose",

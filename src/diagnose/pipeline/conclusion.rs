@@ -146,14 +146,7 @@ fn told_apart(confounded: &mut Vec<Confounded>, swapped: &[(InSet, Option<Ranked
         .filter(|(s, _)| !s.confounded)
         .map(|(s, _)| s.effects[0])
         .collect();
-    for c in confounded.iter_mut() {
-        let keep: Vec<bool> = c.effects.iter().map(|e| !apart.contains(e)).collect();
-        let mut k = keep.iter();
-        c.effects.retain(|_| *k.next().unwrap_or(&true));
-        let mut k = keep.iter();
-        c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
-    }
-    confounded.retain(|c| c.effects.len() > 1);
+    Confounded::without(confounded, &apart);
 }
 
 #[cfg(test)]

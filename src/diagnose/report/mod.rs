@@ -152,6 +152,22 @@ pub struct Confounded {
     pub separating_runs: Option<separating::SeparatingRuns>,
 }
 
+impl Confounded {
+    /// Drops `apart` (effects told apart from the verdict, with their
+    /// reductions) from every group in `confounded`, and a group where one
+    /// effect is left.
+    pub fn without(confounded: &mut Vec<Confounded>, apart: &[EffectKind]) {
+        for c in confounded.iter_mut() {
+            let keep: Vec<bool> = c.effects.iter().map(|e| !apart.contains(e)).collect();
+            let mut k = keep.iter();
+            c.effects.retain(|_| *k.next().unwrap_or(&true));
+            let mut k = keep.iter();
+            c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
+        }
+        confounded.retain(|c| c.effects.len() > 1);
+    }
+}
+
 /// Noise floor and scale of a channel.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChannelNoise {

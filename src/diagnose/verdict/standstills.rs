@@ -156,14 +156,7 @@ pub(crate) fn set_aside(
         .filter(|m| !m.confounded())
         .map(|m| m.effect)
         .collect();
-    for c in confounded.iter_mut() {
-        let keep: Vec<bool> = c.effects.iter().map(|e| !aside.contains(e)).collect();
-        let mut k = keep.iter();
-        c.effects.retain(|_| *k.next().unwrap_or(&true));
-        let mut k = keep.iter();
-        c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
-    }
-    confounded.retain(|c| c.effects.len() > 1);
+    Confounded::without(confounded, &aside);
 }
 
 #[cfg(test)]

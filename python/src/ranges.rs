@@ -7,8 +7,7 @@
 //! range left; the first point named by its index in the flattened
 //! broadcast arrays, where the CLI names a file's line. Units: N, rad, Pa.
 
-use handling::jobs::tyre_eval::ranges_left;
-use handling::tyre::mf::MfInput;
+use handling::jobs::tyre_eval::{mf_inputs, ranges_left, FirstAt};
 use handling::tyre::Tyre;
 use pyo3::exceptions::PyUserWarning;
 use pyo3::prelude::*;
@@ -25,24 +24,12 @@ pub(crate) fn warn_ranges(
     let Tyre::MagicFormula(mf) = tyre else {
         return Ok(());
     };
-    let [fz, kappa, alpha, camber, speed] = inputs;
-    let points: Vec<MfInput> = (0..fz.len())
-        .map(|i| MfInput {
-            fz: fz[i],
-            kappa: kappa[i],
-            alpha: alpha[i],
-            camber: camber[i],
-            speed: speed[i],
-            pressure: pressure.get(i).copied(),
-        })
-        .collect();
+    let points = mf_inputs(inputs, pressure);
     let index: Vec<usize> = (0..points.len()).collect();
     let left = py.detach(|| ranges_left(mf, &points, &index));
     let category = py.get_type::<PyUserWarning>();
     for r in left {
-        let message = r
-            .line(points.len())
-            .replace("; the first at line ", "; the first at index ");
+        let message = r.said(points.len(), FirstAt::Index);
         let text = std::ffi::CString::new(message).unwrap_or_default();
         // Stack level 2: the caller of `Tyre.forces` (level 1 is its Python body).
         PyErr::warn(py, category.as_any(), &text, 2)?;

@@ -71,7 +71,7 @@ mod points;
 mod pressure;
 mod radius;
 mod ranges;
-pub use ranges::{ranges_left, RangeLeft};
+pub use ranges::{mf_inputs, ranges_left, FirstAt, RangeLeft};
 mod reads;
 pub use reads::{read_ranges, reads, Reads};
 mod rolling;
@@ -238,17 +238,7 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
     let Tyre::MagicFormula(t) = tyre else {
         return MfExtras::default();
     };
-    let [fz, kappa, alpha, camber, speed] = p.columns;
-    let inputs: Vec<MfInput> = (0..fz.len())
-        .map(|i| MfInput {
-            fz: fz[i],
-            kappa: kappa[i],
-            alpha: alpha[i],
-            camber: camber[i],
-            speed: speed[i],
-            pressure: p.pressure.get(i).copied(),
-        })
-        .collect();
+    let inputs = mf_inputs(p.columns, p.pressure);
     // MFeval holds a point to every range's end but `FZMIN`'s, below
     // which the forces are taken at the load given: such a point is not
     // said as evaluated at the ranges' ends.

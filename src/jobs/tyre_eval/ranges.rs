@@ -45,6 +45,33 @@ pub struct RangeLeft {
     pub degrees_inside: bool,
 }
 
+/// The Magic Formula inputs of the point columns `[fz, kappa, alpha,
+/// camber, speed]` (equal lengths) and `pressure` (one per point, or empty
+/// for the tyre's own): N, rad, m/s, Pa.
+pub fn mf_inputs(columns: [&[f64]; 5], pressure: &[f64]) -> Vec<MfInput> {
+    let [fz, kappa, alpha, camber, speed] = columns;
+    (0..fz.len())
+        .map(|i| MfInput {
+            fz: fz[i],
+            kappa: kappa[i],
+            alpha: alpha[i],
+            camber: camber[i],
+            speed: speed[i],
+            pressure: pressure.get(i).copied(),
+        })
+        .collect()
+}
+
+/// Where a range's first point is said to be: a points file's line
+/// (`tyre-eval`), or an index into the arrays given (Python).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FirstAt {
+    /// The points file's line.
+    Line,
+    /// The index into the arrays given.
+    Index,
+}
+
 /// The ranges of `tyre` the points `inputs` (at file lines `lines`) leave,
 /// in [`MagicFormula::file_ranges`]'s order: with the limit checks on, the
 /// ends the points were held to; off, the ranges they were evaluated
@@ -124,8 +151,13 @@ impl RangeLeft {
         }
     }
 
-    /// The range in words, of `count` points.
+    /// The range in words, of `count` points, the first at its file line.
     pub fn line(&self, count: usize) -> String {
+        self.said(count, FirstAt::Line)
+    }
+
+    /// The range in words, of `count` points, the first where `at` says.
+    pub fn said(&self, count: usize, at: FirstAt) -> String {
         let r = &self.range;
         let unit = match r.unit {
             "" => String::new(),
@@ -138,7 +170,7 @@ impl RangeLeft {
         };
         // The value given, and the one evaluated where it is the end's (a
         // 2 MPa pressure is evaluated at PRESMAX): both said.
-        let (evaluated, at) = match (r.column, self.below) {
+        let (evaluated, given) = match (r.column, self.below) {
             _ if self.as_given => (
                 "evaluated at the value given, past the range (the limit checks off, mode 2xx): an extrapolation of the file".to_string(),
                 String::new(),
@@ -151,7 +183,7 @@ impl RangeLeft {
             false => "",
         };
         format!(
-            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}{at}{degrees}",
+            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at {} {}, {} = {}{unit}{given}{degrees}",
             self.points,
             plural(count, "point", "points"),
             end(bound),
@@ -161,6 +193,10 @@ impl RangeLeft {
             },
             end(r.lo),
             end(r.hi),
+            match at {
+                FirstAt::Line => "line",
+                FirstAt::Index => "index",
+            },
             self.first_line,
             r.column,
             rounded(self.first_value, 6)

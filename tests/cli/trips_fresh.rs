@@ -130,7 +130,7 @@ fn rig_forces_no_tyre_carries_are_refused_at_their_cell() {
             e.contains("rig.csv:2:3: column `fy`: -1.99429e303 N is beyond ±1000000 N, which no tyre on a rig carries"),
             "{model}: {e}"
         );
-        assert!(!e.contains("NaN"), "{e}");
+        assert!(!without_temp_names(&e).contains("NaN"), "{e}");
     }
 }
 

@@ -530,7 +530,7 @@ fn a_fitted_tir_holds_the_datas_ranges_and_says_its_longitudinal_force_is_not_fi
         assert!(tir.contains(range), "{tir}");
     }
     // No slip ratio in the data: no range that would cut Fx off.
-    assert!(!tir.contains("KPUMIN"), "{tir}");
+    assert!(!without_temp_names(&tir).contains("KPUMIN"), "{tir}");
     assert!(
         tir.contains(
             "\n$ at one value in the rows: kappa at 0, camber at 0 rad: no range is written\n"
@@ -586,7 +586,11 @@ fn cambers_pooled_into_a_model_without_camber_terms_are_warned_as_pressures_are(
         }
         let o = identify_with(dir.path(), model, &args, &out.with_extension("one.toml"));
         assert!(o.status.success(), "{}", stderr(&o));
-        assert!(!stderr(&o).contains("pooled"), "{}", stderr(&o));
+        assert!(
+            !without_temp_names(&stderr(&o)).contains("pooled"),
+            "{}",
+            stderr(&o)
+        );
     }
     // PAC89 has camber terms: its cambers are fitted, not pooled.
     let out = dir.path().join("pac89.toml");

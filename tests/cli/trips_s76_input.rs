@@ -216,7 +216,7 @@ fn a_hint_proposes_the_likeliest_slip_a_digit_among_them() {
             e.contains(&format!("is a digit slipped? {meant} m is a tyre's radius")),
             "{e}"
         );
-        assert!(!e.contains("inches"), "{e}");
+        assert!(!without_temp_names(&e).contains("inches"), "{e}");
     }
     let (fzmax, line) = with(&in_kn(&t), &[("FZMAX", "100")]);
     let e = eval_refused(&fzmax);
@@ -228,7 +228,7 @@ fn a_hint_proposes_the_likeliest_slip_a_digit_among_them() {
         e.contains("is a digit slipped? 10 kN would be 2.5 times FNOMIN"),
         "{e}"
     );
-    assert!(!e.contains("kgf"), "{e}");
+    assert!(!without_temp_names(&e).contains("kgf"), "{e}");
 }
 
 /// `simulate` of a step steer on the sedan with `[vehicle]` edited:

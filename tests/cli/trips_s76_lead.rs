@@ -116,5 +116,5 @@ fn a_tir_for_another_class_of_vehicle_is_said_with_the_wheel_loads_and_its_fnomi
         "{t}"
     );
     let c = said(&car);
-    assert!(!c.contains("FNOMIN"), "{c}");
+    assert!(!without_temp_names(&c).contains("FNOMIN"), "{c}");
 }

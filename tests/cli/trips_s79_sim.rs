@@ -326,7 +326,7 @@ fn a_lagged_model_integrated_by_dopri5_is_not_reported_as_rk4() {
         first.starts_with("lagged: Dormand–Prince 5(4), rtol 1e-9, atol 1e-11: "),
         "{said}"
     );
-    assert!(!first.contains("RK4"), "{said}");
+    assert!(!without_temp_names(first).contains("RK4"), "{said}");
 }
 
 /// `roll_camber = [500, 0]` ran away (gigabytes of memory, no output), a

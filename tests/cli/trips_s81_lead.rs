@@ -89,5 +89,5 @@ fn an_rk4_step_beyond_its_stability_limit_is_refused_at_the_step() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(!ran.contains("NaN"), "{ran}");
+    assert!(!without_temp_names(&ran).contains("NaN"), "{ran}");
 }

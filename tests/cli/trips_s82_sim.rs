@@ -284,7 +284,7 @@ fn a_sweeps_unknown_unit_and_empty_values_are_not_quoted_as_nan() {
         fs::write(&path, text.replace(&speed, given)).unwrap();
         let e = fails_cleanly("equilibria", &path, dir.path());
         assert!(e.contains(&said), "{e}");
-        assert!(!e.contains("NaN"), "{e}");
+        assert!(!without_temp_names(&e).contains("NaN"), "{e}");
     }
 }
 

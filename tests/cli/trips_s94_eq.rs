@@ -222,13 +222,13 @@ fn study_says_when_the_rbf_extrapolates_and_refuses_negative_targets_and_stiffne
         .lines()
         .find(|l| l.contains("RBF answer"))
         .expect(&said);
-    assert!(!line.contains("NaN"), "{line}");
+    assert!(!without_temp_names(line).contains("NaN"), "{line}");
     assert!(
         line.contains("an extrapolation: Er 0.5 lies outside the Er "),
         "{line}"
     );
     let inv = fs::read_to_string(dir.path().join("out/inverse.json")).unwrap();
-    assert!(!inv.contains("NaN"), "{inv}");
+    assert!(!without_temp_names(&inv).contains("NaN"), "{inv}");
     let dir = study_with("-0.5", "500.0");
     let o = run_in(dir.path(), &["study", "study.toml", "--out", "out"]);
     assert!(!o.status.success());

@@ -164,7 +164,8 @@ fn a_range_of_an_input_the_model_does_not_read_is_said_by_neither_tyre_eval_nor_
         .unwrap_or_else(|| panic!("{said}"));
     assert!(line.contains("(alpha -0.03487 to 0.03470 rad; "), "{line}");
     assert!(
-        !line.contains("camber") || line.contains("at zero slip ratio and camber"),
+        !without_temp_names(line).contains("camber")
+            || line.contains("at zero slip ratio and camber"),
         "{line}"
     );
     assert!(!line.contains("pressure"), "{line}");
@@ -270,7 +271,11 @@ fn lmuy_is_named_for_its_own_zero_and_refused_negative() {
         ],
     );
     assert!(!h.status.success() && !dir.path().join("h.tir").exists());
-    assert!(stderr(&h).contains("LMUY"), "{}", stderr(&h));
+    assert!(
+        without_temp_names(&stderr(&h)).contains("LMUY"),
+        "{}",
+        stderr(&h)
+    );
     let o = eval_in(
         dir.path(),
         "e.tir",

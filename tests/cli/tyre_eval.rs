@@ -336,7 +336,9 @@ fn an_uncoupled_model_at_combined_slip_is_said_with_its_resultant_beyond_frictio
     let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
     let e = stderr(&o);
     assert!(
-        o.status.success() && !e.contains("couple") && !e.contains("friction μ·Fz"),
+        o.status.success()
+            && !without_temp_names(&e).contains("couple")
+            && !e.contains("friction μ·Fz"),
         "{e}"
     );
 }
@@ -472,7 +474,7 @@ fn each_range_a_point_leaves_is_named_with_its_count_ends_and_first_point() {
         assert!(warned.contains(line), "{line}\n{warned}");
     }
     assert!(
-        !warned.contains("KPUMIN") && !warned.contains("PRESMIN"),
+        !without_temp_names(&warned).contains("KPUMIN") && !warned.contains("PRESMIN"),
         "{warned}"
     );
     // Below FZMIN a point is not saturated (MFeval's limit checks clamp

@@ -17,7 +17,8 @@ use handling::error::{
     DiagnosisError as LibDiagnosisError, Error, FitError as LibFitError,
     InputError as LibInputError, InputProblem, OptionsError as LibOptionsError, UnitSlip,
 };
-use handling::io::{load_scenario, load_tyre, tir::read_tir_text};
+use handling::io::tir::{read_tir_text, set_tyre_mode};
+use handling::io::{load_scenario, load_tyre};
 use handling::jobs;
 use handling::jobs::identify::{IdentifyModel, IdentifyReport, Options, Polish, StartArg};
 use handling::jobs::shard::{shard_job, Shard, ShardJob};
@@ -412,9 +413,12 @@ impl PyTyre {
     }
 
     /// Forces at points given as parallel 1-D float64 arrays (SI, rad, Pa);
-    /// `pressure` empty for the file's inflation pressure. Returns
+    /// `pressure` empty for the file's inflation pressure; `mode` MFeval's
+    /// `useMode` as `tyre-eval --mode` takes it (None: the tyre's own, 121
+    /// as a file is read), refused as it refuses it. Returns
     /// `(fx, fy, mz, mx, my)`, `mx`/`my` None unless the Magic Formula.
     #[allow(clippy::too_many_arguments, clippy::type_complexity)]
+    #[pyo3(signature = (fz, kappa, alpha, camber, speed, pressure, mode=None))]
     fn forces_1d<'py>(
         &self,
         py: Python<'py>,
@@ -424,7 +428,19 @@ impl PyTyre {
         camber: PyReadonlyArray1<'py, f64>,
         speed: PyReadonlyArray1<'py, f64>,
         pressure: PyReadonlyArray1<'py, f64>,
+        mode: Option<u32>,
     ) -> PyResult<Bound<'py, PyTuple>> {
+        // The mode set on a copy, by `tyre-eval`'s own function: the
+        // `Tyre` object is immutable (frozen, hashed by its JSON).
+        let moded = match mode {
+            Some(code) => {
+                let mut t = self.tyre.clone();
+                set_tyre_mode(&mut t, code).map_err(|e| py_err(Error::Options(e.into())))?;
+                Some(t)
+            }
+            None => None,
+        };
+        let tyre = moded.as_ref().unwrap_or(&self.tyre);
         let n = fz.len()?;
         let cols = [&fz, &kappa, &alpha, &camber, &speed];
         if cols.iter().any(|c| c.len().ok() != Some(n)) {
@@ -446,7 +462,6 @@ impl PyTyre {
             speed.as_slice()?,
             pressure.as_slice()?,
         ];
-        let tyre = &self.tyre;
         // The points `tyre-eval` refuses, refused; its warnings, warned.
         let inputs = [s[0], s[1], s[2], s[3], s[4]];
         points::check_points(py, tyre, inputs, s[5], PointError::new_err)?;

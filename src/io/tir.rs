@@ -410,7 +410,7 @@ pub(crate) fn write_new(tyre: &MagicFormula) -> String {
 /// Sets MFeval's `useMode` `code` (111, 121, 211, 221) on a Magic Formula
 /// tyre; the reason when the code is refused or the tyre is of another
 /// model (only the Magic Formula has modes).
-pub(crate) fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError> {
+pub fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError> {
     let mode = MfMode::from_use_mode(code)?;
     match tyre {
         Tyre::MagicFormula(t) => {

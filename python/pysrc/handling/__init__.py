@@ -180,6 +180,7 @@ class Tyre:
         camber: Any = 0.0,
         speed: Any = 20.0,
         pressure: Any = None,
+        mode: Optional[int] = None,
     ) -> Dict[str, np.ndarray]:
         """Forces and moments at the contact patch, vectorised.
 
@@ -193,6 +194,13 @@ class Tyre:
         - ``speed``: forward speed of the wheel centre, m/s
         - ``pressure``: inflation pressure, Pa (Magic Formula only; None:
           the file's)
+        - ``mode``: MFeval's ``useMode`` for a Magic Formula tyre, as
+          ``tyre-eval --mode`` takes it: hundreds 1 = limit checks on, 2 =
+          off; tens 1 = α* off, 2 = on; units 1 = no turn slip (turn slip is
+          not modelled). None: the tyre's own (121 for a ``.tir`` file, as
+          ``tyre-eval`` without ``--mode``). A code it refuses,
+          or a mode for another model, raises :class:`OptionsError` in its
+          words.
 
         Returns ``fx`` (N), ``fy`` (N), ``mz`` (N·m) and, for the Magic
         Formula, ``mx`` and ``my`` (N·m), each with the broadcast shape.
@@ -204,7 +212,9 @@ class Tyre:
         so are the points outside a ``.tir`` file's ranges (load, slip,
         camber, pressure), in its words: with the file's limit checks on
         they are evaluated at the range's end (a 40 kN load of a file
-        whose ``FZMAX`` is 18 kN gives the forces at 18 kN).
+        whose ``FZMAX`` is 18 kN gives the forces at 18 kN); with
+        ``mode=221`` (limit checks off) at the value given, and the warning
+        says so.
         """
         args = [fz, kappa, alpha, camber, speed]
         if pressure is not None:
@@ -213,7 +223,7 @@ class Tyre:
         shape = arrays[0].shape
         flat = [np.ascontiguousarray(a.ravel()) for a in arrays]
         p = flat[5] if pressure is not None else np.empty(0, dtype=np.float64)
-        fx, fy, mz, mx, my = self._t.forces_1d(*flat[:5], p)
+        fx, fy, mz, mx, my = self._t.forces_1d(*flat[:5], p, mode)
         out = {"fx": fx.reshape(shape), "fy": fy.reshape(shape), "mz": mz.reshape(shape)}
         for name, v in zip(_MOMENTS, (mx, my)):
             if v is not None:

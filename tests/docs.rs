@@ -21,10 +21,12 @@
 //! the checkout.
 //!
 //! The book's figures (`docs/src/images/*.png`) are the outputs of the
-//! quoted commands of this run, copied over the checkout's ([`FIGURES`]):
-//! the test command refreshes them, so a figure in the book is made by the
-//! current tool, by the command its chapter quotes; an image no quoted
-//! command makes is refused.
+//! quoted commands ([`FIGURES`]): a committed figure that differs, byte
+//! for byte, from the one this run's commands write fails the test, naming
+//! it, so a figure in the book is made by the current tool, by the command
+//! its chapter quotes; `TRYCMD=overwrite` copies the new figures over the
+//! checkout's, to be committed. An image no quoted command makes is
+//! refused.
 //!
 //! The book's table of contents is checked here too: every chapter that
 //! `docs/src/SUMMARY.md` links exists, every page of `docs/src` is linked, and
@@ -65,10 +67,15 @@ const FIGURES: &[(&str, &str, &str)] = &[
     ("study_maps.png", "book-study", "out/study/maps.png"),
 ];
 
-/// Copies the figures the quoted commands wrote under `work` over the
-/// book's (only those that changed, so an unchanged checkout stays so).
-fn refresh_figures(work: &Path) {
+/// Compares the figures the quoted commands wrote under `work` with the
+/// book's, byte for byte (the figures are written the same, byte for
+/// byte, by every run of the same tool): with `overwrite` copies those
+/// that differ over the checkout's; otherwise fails naming each, the
+/// command's page and how to update them, so that a change of a figure
+/// is committed with the change of the tool that made it.
+fn check_figures(work: &Path, overwrite: bool) {
     let images = root().join("docs/src/images");
+    let mut stale = Vec::new();
     for (image, case, output) in FIGURES {
         let made = work.join(format!("{case}.in")).join(output);
         let fresh = fs::read(&made).unwrap_or_else(|e| {
@@ -77,9 +84,33 @@ fn refresh_figures(work: &Path) {
                 made.display()
             )
         });
-        if fs::read(images.join(image)).ok().as_deref() != Some(&fresh[..]) {
-            fs::write(images.join(image), fresh).unwrap();
+        if fs::read(images.join(image)).ok().as_deref() == Some(&fresh[..]) {
+            continue;
         }
+        if overwrite {
+            fs::write(images.join(image), fresh).unwrap();
+        } else {
+            stale.push(format!(
+                "docs/src/images/{image}: the quoted commands of {} write another {output}",
+                page_of_case(case)
+            ));
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "the book shows figures its quoted commands no longer make:\n{}\n\
+         update them with `TRYCMD=overwrite cargo test --release --test docs` \
+         and commit docs/src/images",
+        stale.join("\n")
+    );
+}
+
+/// The page of a scratch name ([`case_name`]'s inverse): `book-study`
+/// is `docs/src/study.md`.
+fn page_of_case(case: &str) -> String {
+    match case.strip_prefix("book-") {
+        Some(page) => format!("docs/src/{page}.md"),
+        None => format!("{case}.md"),
     }
 }
 
@@ -173,9 +204,10 @@ fn quoted_commands_run_as_written() {
     }
     assert!(copies.len() >= 2, "no page quotes a command");
     cases.run();
-    refresh_figures(work.path());
+    let overwrite = std::env::var_os("TRYCMD").is_some_and(|m| m == "overwrite");
+    check_figures(work.path(), overwrite);
     // `TRYCMD=overwrite` rewrote the copies: carry them back.
-    if std::env::var_os("TRYCMD").is_some_and(|m| m == "overwrite") {
+    if overwrite {
         for (page, copy) in copies {
             let text = fs::read_to_string(copy).unwrap();
             fs::write(page, without_final_newlines(&text)).unwrap();

@@ -3,11 +3,11 @@
 //! degrees, slip ratio in percent), each titled with its own σ =
 //! sqrt(Σe²/ΣF²)·100 % over its points and its levels spelt as the
 //! terminal spells them ([`Variable::display`]); a colour per load within
-//! a panel, the key opening with what is measured (points) and what
+//! a panel (past nine loads the colours again, the lines dashed), the key opening with what is measured (points) and what
 //! fitted (lines), the lines drawn over every load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
 use super::level_names::LevelNames;
-use super::staged_figure::{key_entries, level_colour, MEASURED};
+use super::staged_figure::{key_entries, level_style, MEASURED};
 use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
@@ -162,9 +162,10 @@ fn panel(
         n += measured.len();
         let x: Vec<f64> = measured.iter().map(|p| p.0).collect();
         let y: Vec<f64> = measured.iter().map(|p| p.1).collect();
-        // A colour per load, none twice in a panel (the palette has INK
-        // colours before its black), none the key's grey.
-        let colour = level_colour(k);
+        // A style per load, none twice in a panel, none the key's grey:
+        // past nine loads the colours come again with dashed lines.
+        let style = level_style(k);
+        let colour = style.colour;
         series.push(Series::line("", &x, &y, colour).styled(Style::Points(2)));
         // The fitted curve over the condition's own slip range: the y
         // axis is then the data's, not the model's beyond them.
@@ -184,7 +185,7 @@ fn panel(
             .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        lines.push(Series::line(&names.load(c.fz), &xd, &ys, colour));
+        lines.push(Series::line(&names.load(c.fz), &xd, &ys, colour).styled(style.line));
     }
     series.extend(lines);
     let sigma = if y2 > 0.0 {

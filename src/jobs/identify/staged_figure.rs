@@ -1,7 +1,9 @@
 //! The figure of a staged Magic Formula fit: the measured rows of each
 //! fitted stage as hollow rings, a colour per condition (load, camber,
 //! pressure and, for the combined-slip stages, the level of the other
-//! slip), and the identified tyre as a line in the condition's colour
+//! slip; past nine conditions in a panel the colours again with diamonds
+//! and dashed lines, then discs and dotted lines, [`level_style`]), and
+//! the identified tyre as a line in the condition's colour
 //! drawn over every condition's points: a smooth curve of
 //! [`LINE_POINTS`] slips evenly spaced over the condition's own slip
 //! range, at its mean load, camber, pressure, speed and other slip. A panel per stage, camber level and pressure level (and load
@@ -386,8 +388,9 @@ fn panel(
         if at.is_empty() {
             continue;
         }
-        // One colour per level drawn in the panel, none the key's grey.
-        let colour = level_colour(lines.len());
+        // One style per level drawn in the panel, none the key's grey.
+        let style = level_style(lines.len());
+        let colour = style.colour;
         let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
         let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
         for (r, m) in at.iter().zip(&measured) {
@@ -404,8 +407,11 @@ fn panel(
             ("", label.as_str())
         };
         let points = Series::line(point_label, &xs, &measured, colour).styled(Style::Points(3));
-        series.push(points.marked(RING));
-        lines.push(Series::line(line_label, &lx, &ly, colour));
+        series.push(points.marked(Marker {
+            shape: style.shape,
+            ..RING
+        }));
+        lines.push(Series::line(line_label, &lx, &ly, colour).styled(style.line));
     }
     series.extend(lines);
     let sigma = 100.0 * (e2 / y2).sqrt();
@@ -453,14 +459,36 @@ pub(super) fn key_entries(points: Style, fitted: usize) -> Vec<Series> {
     ]
 }
 
-/// The colour of a panel's `k`-th line: the palette without the grey of
-/// the key's "measured" swatch.
-pub(super) fn level_colour(k: usize) -> usize {
-    let c = k % (INK - 1);
-    if c >= MEASURED {
-        c + 1
-    } else {
-        c
+/// How a panel's `k`-th level is drawn: its colour, its fitted line's
+/// dash and its measured points' marker.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct LevelStyle {
+    /// Palette index: the palette without black and the key's grey.
+    pub colour: usize,
+    /// Solid, dashed or dotted.
+    pub line: Style,
+    /// Ring, diamond or disc.
+    pub shape: Shape,
+}
+
+/// The style of a panel's `k`-th level: the nine colours of the palette
+/// that are neither black nor the key's grey with solid lines and rings,
+/// then the same colours with dashed lines and diamonds, then dotted lines
+/// and discs: 27 levels told apart (a moment stage's grid of slip ratios
+/// has 12; by colour alone the tenth level was drawn as the first).
+pub(super) fn level_style(k: usize) -> LevelStyle {
+    const CYCLES: [(Style, Shape); 3] = [
+        (Style::Line, Shape::Ring),
+        (Style::Dashed, Shape::Diamond),
+        (Style::Dotted, Shape::Disc),
+    ];
+    let colours = INK - 1;
+    let c = k % colours;
+    let (line, shape) = CYCLES[(k / colours) % CYCLES.len()];
+    LevelStyle {
+        colour: if c >= MEASURED { c + 1 } else { c },
+        line,
+        shape,
     }
 }
 

@@ -308,6 +308,48 @@ fn moment_rows(t: &MagicFormula) -> Vec<MfRow> {
     out
 }
 
+/// Whether a series of this style is a line (solid, dashed or dotted).
+fn is_line(style: Style) -> bool {
+    matches!(style, Style::Line | Style::Dashed | Style::Dotted)
+}
+
+#[test]
+fn levels_past_the_palette_are_told_apart_by_dash_and_marker() {
+    // 27 levels, each its own style; none black nor the key's grey.
+    let styles: Vec<LevelStyle> = (0..27).map(level_style).collect();
+    for (k, a) in styles.iter().enumerate() {
+        assert!(a.colour != INK && a.colour != MEASURED, "{k}: {a:?}");
+        if let Some(j) = styles[..k].iter().position(|b| b == a) {
+            panic!("levels {j} and {k} are drawn alike: {a:?}");
+        }
+    }
+    // The overturning moment's grid: 12 levels (11 slip ratios and the
+    // pure sweep's 0), each line and each level's points drawn apart.
+    let t = tyre();
+    let fig = staged_figure(&t, &[Stage::Mx], &moment_rows(&t), &[]);
+    let grid = &fig.panels[0];
+    let drawn = |s: &&Series| !s.x.is_empty();
+    let lines: Vec<(usize, Style)> = grid
+        .series
+        .iter()
+        .filter(drawn)
+        .filter(|s| is_line(s.style))
+        .map(|s| (s.color, s.style))
+        .collect();
+    let points: Vec<(usize, Option<Marker>)> = grid
+        .series
+        .iter()
+        .filter(drawn)
+        .filter(|s| s.style == Style::Points(3))
+        .map(|s| (s.color, s.marker))
+        .collect();
+    assert_eq!((lines.len(), points.len()), (12, 12), "{}", grid.title);
+    for k in 0..12 {
+        assert!(!lines[..k].contains(&lines[k]), "line {k}: {lines:?}");
+        assert!(!points[..k].contains(&points[k]), "points {k}: {points:?}");
+    }
+}
+
 #[test]
 fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_its_row() {
     let t = tyre();
@@ -333,7 +375,7 @@ fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_
         let lines = p
             .series
             .iter()
-            .filter(|s| s.style == Style::Line && !s.x.is_empty())
+            .filter(|s| is_line(s.style) && !s.x.is_empty())
             .count();
         let keyed = p.series.iter().filter(|s| !s.label.is_empty()).count();
         // Every keyed level is a sweep with its line: no entry for a

@@ -99,6 +99,12 @@ pub struct SynthArgs {
     /// Putnam log's car on a road course, its rear steering with roll).
     #[arg(long, default_value = "handling", value_parser = Programme::from_str)]
     programme: Programme,
+    /// The runs' total duration, s, for the analogues (`sedan-winding`,
+    /// 370 s by default; `racing-rear-steer`, 300 s): each run lengthened
+    /// in proportion, to whole seconds, its driver lapping its track more
+    /// often (at least the programme's own).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds)]
+    duration: Option<f64>,
     /// Campaign folder to create.
     #[arg(long)]
     out: PathBuf,
@@ -111,7 +117,7 @@ pub struct SynthArgs {
 
 /// `handling synth`: writes a campaign folder generated with the effects.
 pub fn synth(a: SynthArgs) -> Result<()> {
-    let mut r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
+    let mut r = synth::run(&a.effects, a.seed, a.truth, a.programme, a.duration, &a.out)?;
     r.drive(&a.drive)?;
     r.write()?;
     for n in &r.notes {
@@ -119,4 +125,12 @@ pub fn synth(a: SynthArgs) -> Result<()> {
     }
     say!("{}", r.wrote());
     Ok(())
+}
+
+/// A duration in seconds: a finite number above 0.
+fn seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(d) if d.is_finite() && d > 0.0 => Ok(d),
+        _ => Err("expected a number of seconds above 0".to_string()),
+    }
 }

@@ -184,6 +184,31 @@ pub enum OptionsError {
         /// The effect.
         effect: &'static str,
     },
+    /// `synth --duration` for a programme whose runs cannot be lengthened.
+    #[error(
+        "--duration {given}: the {programme} programme's runs are fixed manoeuvres or laps and cannot be lengthened; --duration lengthens the runs of {}",
+        takes.iter().map(|(p, d)| format!("{p} ({d} s by default)")).collect::<Vec<_>>().join(", ")
+    )]
+    DurationNotTaken {
+        /// The duration given, s.
+        given: f64,
+        /// The programme.
+        programme: &'static str,
+        /// The programmes that take it, with their own durations, s.
+        takes: Vec<(&'static str, f64)>,
+    },
+    /// `synth --duration` shorter than the programme's own runs.
+    #[error(
+        "--duration {given}: the {programme} programme's runs last {own} s together, and --duration only lengthens them: give {own} or more"
+    )]
+    DurationTooShort {
+        /// The duration given, s.
+        given: f64,
+        /// The programme.
+        programme: &'static str,
+        /// Its runs' own total duration, s.
+        own: f64,
+    },
     /// `synth --effects` naming `none` with effects.
     #[error("{0}")]
     NoneWithEffects(super::NoneWithEffects),

@@ -200,7 +200,8 @@ fn a_record_too_short_for_metrics_is_a_metrics_error() {
 fn a_rig_of_one_load_fails_the_diagnosis() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("c");
-    let r = crate::jobs::synth::run(&[], 1, Truth::ALL[0], Programme::default(), &out).unwrap();
+    let r =
+        crate::jobs::synth::run(&[], 1, Truth::ALL[0], Programme::default(), None, &out).unwrap();
     r.write().unwrap();
     let tyre = Tyre::Pac89(Pac89::adams_example());
     let mut rig = String::from("fz,alpha,fy\n");
@@ -228,8 +229,15 @@ fn an_output_over_an_input_and_an_existing_campaign_are_output_errors() {
     let e = crate::report::refuse_overwrite(&p, std::slice::from_ref(&p)).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Output);
     assert!(matches!(&e, Error::Output(OutputError::Overwrite { path }) if *path == p));
-    let e = crate::jobs::synth::run(&[], 1, Truth::ALL[0], Programme::default(), dir.path())
-        .unwrap_err();
+    let e = crate::jobs::synth::run(
+        &[],
+        1,
+        Truth::ALL[0],
+        Programme::default(),
+        None,
+        dir.path(),
+    )
+    .unwrap_err();
     assert!(matches!(
         &e,
         Error::Output(OutputError::CampaignExists { path }) if path == dir.path()

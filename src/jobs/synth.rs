@@ -8,7 +8,8 @@ use crate::diagnose::effects::EffectKind;
 use crate::error::{Error, NameKind, NoneWithEffects, OptionsError, OutputError, WriteStep};
 use crate::measured::MeasuredRun;
 use crate::proving_ground::{
-    drive, generate_with, DrivenRun, Noise, Programme, SynthSpec, Synthetic, Truth,
+    analogue_duration, drive, generate_lasting, DrivenRun, Noise, Programme, SynthSpec, Synthetic,
+    Truth,
 };
 use crate::report::{create_dir, write_bytes, write_columns};
 use serde::Serialize;
@@ -75,14 +76,19 @@ pub struct SynthReport {
 }
 
 /// Generates a campaign of `programme` on `truth` with `effects` on and
-/// noise seed `seed`, for the new folder `out`.
+/// noise seed `seed`, for the new folder `out`; an analogue programme's
+/// runs lengthened to `duration` s together where given.
 pub fn run(
     effects: &[EffectName],
     seed: u64,
     truth: Truth,
     programme: Programme,
+    duration: Option<f64>,
     out: &Path,
 ) -> Result<SynthReport, Error> {
+    if let Some(given) = duration {
+        check_duration(programme, given)?;
+    }
     let kinds = effects.iter().filter_map(|e| e.0);
     if effects.iter().any(|e| e.0.is_none()) && kinds.clone().next().is_some() {
         let with = kinds.map(|k| k.name()).collect();
@@ -116,7 +122,7 @@ pub fn run(
         }
         .into());
     }
-    let s = generate_with(&spec, truth)?;
+    let s = generate_lasting(&spec, truth, duration)?;
     Ok(SynthReport {
         driven: 0,
         notes: Vec::new(),
@@ -128,6 +134,32 @@ pub fn run(
         seed,
         campaign: s,
     })
+}
+
+/// Refuses a `--duration` of `given` s that `programme` cannot drive: a
+/// programme whose runs are fixed, or shorter than its own runs.
+fn check_duration(programme: Programme, given: f64) -> Result<(), Error> {
+    let Some(own) = analogue_duration(programme) else {
+        let takes = Programme::ALL
+            .iter()
+            .filter_map(|&p| analogue_duration(p).map(|d| (p.name(), d)))
+            .collect();
+        return Err(OptionsError::DurationNotTaken {
+            given,
+            programme: programme.name(),
+            takes,
+        }
+        .into());
+    };
+    if given < own {
+        return Err(OptionsError::DurationTooShort {
+            given,
+            programme: programme.name(),
+            own,
+        }
+        .into());
+    }
+    Ok(())
 }
 
 impl SynthReport {

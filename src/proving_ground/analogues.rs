@@ -38,7 +38,9 @@
 //! up to 3 m/s². Three runs, 100 Hz: parked 10 s then a lap (120 s);
 //! parked 5 s, a lap with a stop of 15 s on its longest straight (135 s);
 //! parked 5 s, the lap mirrored, every left a right (115 s). Speeds 0–19
-//! m/s; no bank.
+//! m/s; no bank. `synth --duration` lengthens the runs of both analogues
+//! in proportion (`plan_lasting`): the parked time and the stop stay, the
+//! driver laps the track more often.
 //!
 //! **Logger** ([`Logger`]): `t, speed, steer, yaw_rate, ay, ax, beta` at
 //! 100 Hz. Offsets: the accelerometer's mounting reads −0.6 m/s² at rest
@@ -192,18 +194,70 @@ fn mirrored(pieces: &[Piece]) -> Vec<Piece> {
         .collect()
 }
 
-/// Two laps of `lap`, with a stop of `dwell` s after piece `at` of the
+/// `count` laps of `lap`, with a stop of `dwell` s after piece `at` of the
 /// first when given.
-fn laps(lap: &[Piece], stop: Option<(usize, f64)>) -> Vec<Piece> {
+fn laps(lap: &[Piece], stop: Option<(usize, f64)>, count: usize) -> Vec<Piece> {
     let mut out = lap.to_vec();
     if let Some((at, dwell)) = stop {
         out.insert(at + 1, Piece::Stop { dwell });
     }
-    out.extend_from_slice(lap);
+    for _ in 1..count {
+        out.extend_from_slice(lap);
+    }
     out
 }
 
-fn sedan_plan() -> Plan {
+/// The plan of an analogue programme with `count` laps a run (None for
+/// the other programmes).
+fn plan_with(programme: Programme, count: usize) -> Option<Plan> {
+    match programme {
+        Programme::SedanWinding => Some(sedan_plan(count)),
+        Programme::RacingRearSteer => Some(racing_plan(count)),
+        _ => None,
+    }
+}
+
+/// The runs' total duration, s, of an analogue programme as it is driven
+/// by default; None for the other programmes, whose runs are fixed
+/// manoeuvres or laps and cannot be lengthened.
+pub fn analogue_duration(programme: Programme) -> Option<f64> {
+    plan_with(programme, 2).map(|p| p.runs.iter().map(|r| r.duration).sum())
+}
+
+/// The plan of an analogue programme whose runs last `total` s together
+/// (None: its own durations): each run lengthened in proportion to its
+/// own duration and rounded to whole seconds (the last takes what is
+/// left, so that they add up to `total`), on more laps: two laps cover a
+/// run's own duration, so `2·⌈k⌉ + 1` laps cover `k` times it. `total` is at
+/// least the programme's own total (`synth` checks).
+fn plan_lasting(programme: Programme, total: Option<f64>) -> Option<Plan> {
+    let Some(total) = total else {
+        return plan_with(programme, 2);
+    };
+    let k = total / analogue_duration(programme)?;
+    // One lap more than the ratio says: a run's parked time and stop stay
+    // as they are, so the lengthened run drives more than `k` times its
+    // own driving; the extra lap covers that.
+    let mut plan = plan_with(programme, 2 * k.ceil() as usize + 1)?;
+    let mut left = total;
+    let n = plan.runs.len();
+    for (i, r) in plan.runs.iter_mut().enumerate() {
+        r.duration = if i + 1 == n {
+            left
+        } else {
+            (r.duration * k).round()
+        };
+        left -= r.duration;
+    }
+    Some(plan)
+}
+
+/// The sedan's stop in its second run: 15 s on the 100 m straight after
+/// the right hairpin (after piece 6 of the lap).
+const SEDAN_STOP: (usize, f64) = (6, 15.0);
+
+/// The sedan analogue's plan, `count` laps a run.
+fn sedan_plan(count: usize) -> Plan {
     let lap = sedan_lap();
     Plan {
         driver: Driver {
@@ -232,22 +286,21 @@ fn sedan_plan() -> Plan {
         runs: vec![
             Run {
                 name: "winding_lap",
-                pieces: laps(&lap, None),
+                pieces: laps(&lap, None, count),
                 start: 0.0,
                 parked: 10.0,
                 duration: 120.0,
             },
             Run {
                 name: "winding_stop",
-                // The stop: on the 100 m straight after the right hairpin.
-                pieces: laps(&lap, Some((6, 15.0))),
+                pieces: laps(&lap, Some(SEDAN_STOP), count),
                 start: 0.0,
                 parked: 5.0,
                 duration: 135.0,
             },
             Run {
                 name: "winding_mirrored",
-                pieces: laps(&mirrored(&lap), None),
+                pieces: laps(&mirrored(&lap), None, count),
                 start: 0.0,
                 parked: 5.0,
                 duration: 115.0,
@@ -276,13 +329,16 @@ fn road_course() -> Vec<Piece> {
     ]
 }
 
-fn racing_plan() -> Plan {
+/// The racing analogue's plan, `count` laps a run after its first
+/// partial one.
+fn racing_plan(count: usize) -> Plan {
     let lap = road_course();
     // Each run starts at another point of the lap, rolling at 20 m/s.
     let from = |k: usize| -> Vec<Piece> {
         let mut p: Vec<Piece> = lap[k..].to_vec();
-        p.extend_from_slice(&lap);
-        p.extend_from_slice(&lap);
+        for _ in 0..count {
+            p.extend_from_slice(&lap);
+        }
         p
     };
     let run = |name, k| Run {
@@ -327,12 +383,9 @@ pub(super) fn analogue_runs(
     programme: Programme,
     truth: &Augmented,
     rng: &mut ChaCha8Rng,
+    duration: Option<f64>,
 ) -> Option<Vec<MeasuredRun>> {
-    let plan = match programme {
-        Programme::SedanWinding => sedan_plan(),
-        Programme::RacingRearSteer => racing_plan(),
-        _ => return None,
-    };
+    let plan = plan_lasting(programme, duration)?;
     Some(
         plan.runs
             .iter()
@@ -431,10 +484,8 @@ pub(super) fn campaign_roll(programme: Programme) -> RollModel {
 /// state, as `name = value` lines for its header (withheld from the
 /// diagnosis, which reads none of them); empty for the other programmes.
 pub(super) fn truth_lines(programme: Programme) -> Vec<String> {
-    let plan = match programme {
-        Programme::SedanWinding => sedan_plan(),
-        Programme::RacingRearSteer => racing_plan(),
-        _ => return Vec::new(),
+    let Some(plan) = plan_with(programme, 2) else {
+        return Vec::new();
     };
     let (s, l, d) = (plan.steering, plan.logger, plan.driver);
     let mut out = vec![
@@ -467,63 +518,4 @@ pub(super) fn truth_lines(programme: Programme) -> Vec<String> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::proving_ground::programme::truth_vehicle;
-    use crate::proving_ground::truth::truth_tyre;
-    use crate::vehicle::VehicleModel;
-
-    /// The truth of `programme` without effects, its built-in ones in.
-    fn truth(programme: Programme) -> Augmented {
-        let tyre = truth_tyre();
-        let mut base = VehicleModel::new(truth_vehicle(programme), tyre.clone(), tyre);
-        base.options.effects.aero_load = super::super::programme::truth_downforce(programme);
-        let mut t = Augmented::new(base, 1.0);
-        build_in(programme, &mut t, &[]);
-        t
-    }
-
-    #[test]
-    fn the_drivers_keep_their_cars_on_the_line() {
-        for (programme, plan, largest) in [
-            // Within its lane (half of 3.5 m) by hand; the racing car on a
-            // wider track.
-            (Programme::SedanWinding, sedan_plan(), 1.75),
-            (Programme::RacingRearSteer, racing_plan(), 2.5),
-        ] {
-            let t = truth(programme);
-            for run in &plan.runs {
-                let track = Track::new(&run.pieces);
-                let (d, b) = plan.pedals;
-                let (u, ax) = track.drive(run.start, run.parked, run.duration, STEP, d, b);
-                let cl = drive(&t, &track, &plan.driver, &plan.steering, &u, &ax, STEP);
-                assert!(
-                    cl.largest_offset < largest,
-                    "{}: {:.2} m off the line",
-                    run.name,
-                    cl.largest_offset
-                );
-                // The car went round: its yaw rate both ways.
-                let r = &cl.history.yaw_rate;
-                assert!(r.iter().any(|&x| x > 0.2) && r.iter().any(|&x| x < -0.2));
-            }
-        }
-    }
-
-    #[test]
-    fn the_racing_truth_steers_its_rear_with_roll_and_the_sedan_has_none() {
-        let racing = truth(Programme::RacingRearSteer);
-        assert_eq!(racing.effects().roll_steer, [0.0, REAR_ROLL_STEER]);
-        assert_eq!(racing.effects().roll, RACING_ROLL);
-        let mut asked = truth(Programme::SedanWinding);
-        assert_eq!(asked.effects().roll_steer, [0.0; 2]);
-        // Roll steer asked for replaces the built-in one.
-        asked.effects_mut().roll_steer = [-0.1, 0.0];
-        build_in(
-            Programme::RacingRearSteer,
-            &mut asked,
-            &[EffectKind::RollSteer],
-        );
-        assert_eq!(asked.effects().roll_steer, [-0.1, 0.0]);
-    }
-}
+mod tests;

@@ -140,11 +140,13 @@ impl Synthetic {
         };
         let built_in = self.built_in_comment();
         format!(
-            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n{built_in}\
+            "# Synthetic campaign (handling synth --truth {} --programme {}{}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n{built_in}\
              [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
              {tyres}{roll}{runs}[diagnose]\nseed = {}\n{step}",
             self.truth.name(),
             self.spec.programme.name(),
+            self.duration
+                .map_or_else(String::new, |d| format!(" --duration {d}")),
             self.spec.seed,
             if truth.is_empty() { "#   none".to_string() } else { truth.join("\n") },
             v.mass,

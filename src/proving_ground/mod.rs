@@ -69,6 +69,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 mod analogues;
+pub use analogues::analogue_duration;
 mod campaign;
 mod closed_loop;
 mod drive;
@@ -139,6 +140,9 @@ pub struct Synthetic {
     /// The roll the campaign file states (for the four-wheel truth it
     /// differs from the truth's).
     roll: RollModel,
+    /// The runs' total duration asked for (`synth --duration`), s; None
+    /// for the programme's own.
+    duration: Option<f64>,
 }
 
 impl Synthetic {
@@ -237,7 +241,22 @@ impl TruthModels {
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
 /// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
-    generate_from(spec, truth, TruthModels::new(spec, truth)?)
+    generate_lasting(spec, truth, None)
+}
+
+/// [`generate_with`] with the runs of an analogue programme lengthened to
+/// `duration` s together (None: the programme's own; [`analogue_duration`]
+/// says which programmes and from what length). The other programmes'
+/// runs ignore it: `synth` refuses it for them.
+pub fn generate_lasting(
+    spec: &SynthSpec,
+    truth: Truth,
+    duration: Option<f64>,
+) -> Result<Synthetic, ParamError> {
+    let models = TruthModels::new(spec, truth)?;
+    let mut s = generate_from(spec, truth, models, duration)?;
+    s.duration = duration;
+    Ok(s)
 }
 
 /// Generates a campaign on the four-wheel truth with `car` as its vehicle
@@ -250,19 +269,27 @@ pub fn generate_on_four_wheel(
     car: FourWheelVehicle,
 ) -> Result<Synthetic, ParamError> {
     let truth = Truth::FourWheel;
-    generate_from(spec, truth, TruthModels::with_four_wheel(spec, truth, car)?)
+    generate_from(
+        spec,
+        truth,
+        TruthModels::with_four_wheel(spec, truth, car)?,
+        None,
+    )
 }
 
-/// The campaign of `spec` measured on `models` (of `truth`).
+/// The campaign of `spec` measured on `models` (of `truth`), an analogue's
+/// runs lasting `duration` s together where given.
 fn generate_from(
     spec: &SynthSpec,
     truth: Truth,
     models: TruthModels,
+    duration: Option<f64>,
 ) -> Result<Synthetic, ParamError> {
     let (augmented, base) = (&models.augmented, &models.base);
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
-    let runs = if let Some(runs) = analogues::analogue_runs(spec.programme, augmented, &mut rng) {
+    let analogue = analogues::analogue_runs(spec.programme, augmented, &mut rng, duration);
+    let runs = if let Some(runs) = analogue {
         runs
     } else if let Some(logged) = logged_runs(spec.programme, base) {
         logged
@@ -341,6 +368,7 @@ fn finish(
             Truth::Augmented => analogues::campaign_roll(spec.programme),
             Truth::FourWheel => four_wheel_campaign_roll(),
         },
+        duration: None,
     }
 }
 

@@ -55,7 +55,8 @@ pub struct IdentifyArgs {
     /// layout the written file follows.
     #[arg(long)]
     template: Option<PathBuf>,
-    /// mf61/mf62: Levenberg–Marquardt iterations per step.
+    /// mf61/mf62: Levenberg–Marquardt iterations per step at most
+    /// (`--start paper` runs at least 500, the paper's scheme).
     #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
     max_iterations: usize,
     /// Hold a parameter at a value, NAME=VALUE (repeatable): for mf61/mf62

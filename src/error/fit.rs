@@ -367,6 +367,15 @@ pub enum StageRows {
         /// The channel's column: `fy` or `mz`.
         column: &'static str,
     },
+    /// Pure Fy or Mz on rows all at α = 0 (a braking or driving sweep
+    /// with `fy` and `mz` logged).
+    #[error("`alpha` is 0 throughout its {rows} rows at κ = 0 (|α| ≤ 1e-3 rad): no lateral slip to fit `{column}` to")]
+    NoSlipAngle {
+        /// The channel's column: `fy` or `mz`.
+        column: &'static str,
+        /// The stage's rows.
+        rows: usize,
+    },
     /// Mx.
     #[error("no rows with a measured `mx`: `mx` is fitted only from a rig file with `mx`, `kappa` and `fx` columns, whose samples are its rows (a file without `kappa` and `fx` is averaged into slip-angle bins of `fy` and `mz`, and its `mx` left out); to fit it, give `mx` in a file with `kappa` and `fx` (on a cornering sweep, `kappa` = 0 and the rig's measured `fx`)")]
     Mx,

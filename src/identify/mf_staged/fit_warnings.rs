@@ -11,6 +11,12 @@ use super::StageReport;
 /// channel's shape wrong, not its detail.
 pub const LARGE_SIGMA_PERCENT: f64 = 50.0;
 
+/// σ, % of the channel's RMS, above which a stage's channel is warned of
+/// as not to be relied on (up to [`LARGE_SIGMA_PERCENT`]): the swarm
+/// fits' threshold (`jobs/identify/notes.rs`), so that one fit's σ of
+/// 49 % is not said where another's 21 % is.
+pub const UNRELIABLE_SIGMA_PERCENT: f64 = 20.0;
+
 /// Points per free parameter below which a fit is warned of as too few
 /// data, a staged fit's stage here and the swarm fits' blocks in
 /// `jobs/identify/notes.rs`: five, so that each parameter rests on more
@@ -26,6 +32,13 @@ pub(super) fn fit_warnings(r: &StageReport) -> Vec<String> {
             "σ {:.0} %, above {LARGE_SIGMA_PERCENT:.0} %: the fit does not reproduce the measured `{}` (its error is over half the channel's RMS); its coefficients are no model of these data",
             r.sigma_percent,
             r.stage.column()
+        ));
+    } else if r.sigma_percent > UNRELIABLE_SIGMA_PERCENT {
+        out.push(format!(
+            "σ {:.1} %, above {UNRELIABLE_SIGMA_PERCENT:.0} %: the fit misses the measured `{}` by more than a fifth of the channel's RMS; do not rely on the file's {}",
+            r.sigma_percent,
+            r.stage.column(),
+            r.stage.quantity()
         ));
     }
     let free = r.parameters.iter().filter(|p| p.free).count();

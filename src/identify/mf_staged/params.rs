@@ -83,6 +83,20 @@ impl Stage {
         }
     }
 
+    /// What this stage's channel is, in words (`pure lateral force`).
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Stage::PureFx => "pure longitudinal force",
+            Stage::PureFy => "pure lateral force",
+            Stage::PureMz => "pure aligning moment",
+            Stage::CombinedFx => "longitudinal force under combined slip",
+            Stage::CombinedFy => "lateral force under combined slip",
+            Stage::CombinedMz => "aligning moment under combined slip",
+            Stage::Mx => "overturning moment",
+            Stage::My => "rolling resistance moment",
+        }
+    }
+
     /// The unit of this stage's channel.
     pub fn unit(self) -> &'static str {
         match self {

@@ -87,6 +87,11 @@ pub struct CurvatureExcess {
     /// `INFLPRES` may lie outside them, where the limit checks clip the
     /// pressure and the force without them differs at every slip.
     pub reverses_at_pressure: Option<f64>,
+    /// The first reversal on the other slip sign, where there is one
+    /// too: slip, then load (N), camber (rad), slip sign. The warning named
+    /// only the earlier side, and mode 221 showed the Hoosier fit's force
+    /// turning on both (5.76° positive, between 6° and 7° negative).
+    pub reverses_also: Option<(f64, (f64, f64, f64))>,
     /// The largest |slip| of that kind the data reach.
     pub data_slip: f64,
 }
@@ -121,8 +126,21 @@ impl CurvatureExcess {
             ),
             None => "with the checks off (mode 221) its force departs from the fit".into(),
         };
+        let also = self
+            .reverses_also
+            .map_or(String::new(), |(x, (fz, camber, sign))| {
+                format!(
+                "; on the {} {} too, beyond {symbol} = {} at fz {} N, camber {}° ({} the data's)",
+                if sign > 0.0 { "positive" } else { "negative" },
+                self.curvature.slip(),
+                self.slip_text(x),
+                readable(fz, 4),
+                readable(camber.to_degrees(), 3),
+                if x <= self.data_slip { "inside" } else { "outside" },
+            )
+            });
         format!(
-            "curvature {} reaches {} above 1 over the fitted data (at fz {} N, camber {}°, {} {}): the file relies on a limit check clipping E at 1 (MFeval's useLimitsCheck; tyre-eval's mode 121, the default); {without}",
+            "curvature {} reaches {} above 1 over the fitted data (at fz {} N, camber {}°, {} {}): the file relies on a limit check clipping E at 1 (MFeval's useLimitsCheck; tyre-eval's mode 121, the default); {without}{also}",
             self.curvature.name(),
             readable(self.largest, 3),
             readable(self.fz, 4),
@@ -234,11 +252,22 @@ fn excess(
     // The earliest reversal may be where the curvature is not largest
     // (the other slip sign, where the force's shifts differ), and at any
     // of the data's pressures.
-    let first = above
+    let reversals: Vec<(f64, Place, Option<f64>)> = above
         .iter()
         .flat_map(|(_, at)| pressures.iter().map(move |p| (*at, *p)))
         .filter_map(|(at, p)| reversal(t, curvature, at, p).map(|x| (x, at, p)))
-        .min_by(|a, b| a.0.total_cmp(&b.0));
+        .collect();
+    let earliest = |side: Option<f64>| {
+        reversals
+            .iter()
+            .filter(|r| side.is_none_or(|s| r.1 .0 == s))
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .copied()
+    };
+    let first = earliest(None);
+    let also = first
+        .and_then(|f| earliest(Some(-f.1 .0)))
+        .map(|(x, (s, fz, camber), _)| (x, (fz, camber, s)));
     Some(CurvatureExcess {
         curvature,
         largest,
@@ -248,6 +277,7 @@ fn excess(
         reverses_beyond: first.map(|f| f.0),
         reverses_at: first.map(|(_, (s, fz, camber), _)| (fz, camber, s)),
         reverses_at_pressure: first.and_then(|f| f.2),
+        reverses_also: also,
         data_slip: slips.map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs())),
     })
 }

@@ -223,10 +223,20 @@ pub(super) fn staged_figure(
         let sel: Vec<&MfRow> = rows.iter().filter(|r| st.takes(r)).collect();
         // A stage fitted on every row (Mx, My) holds the pure sweeps of
         // both slips: a sweep of the other slip at zero of this one is
-        // drawn against the slip it sweeps, not as a column of points.
-        let (along, across): (Vec<&MfRow>, Vec<&MfRow>) = sel
-            .into_iter()
-            .partition(|r| x.of(r).abs() > PURE_TOL || x.other().of(r).abs() <= PURE_TOL);
+        // drawn against the slip it sweeps, not as a column of points. Its
+        // combined rows are drawn against this slip where they sweep it (a
+        // grid of slip angles at each slip ratio), else against the slip
+        // ratio they sweep (a drive/brake test at a few slip-angle levels),
+        // as the combined stages draw them: against the slip angle, Mx's
+        // slip-ratio sweeps at α = 3° and 6° stood as vertical streaks.
+        let ratio_sweeps = x == Slip::Angle && !sweeps_angle(&sel);
+        let (along, across): (Vec<&MfRow>, Vec<&MfRow>) = sel.into_iter().partition(|r| {
+            if ratio_sweeps {
+                r.kappa.abs() <= PURE_TOL
+            } else {
+                x.of(r).abs() > PURE_TOL || x.other().of(r).abs() <= PURE_TOL
+            }
+        });
         // A combined lateral stage's rows at zero slip angle are the
         // longitudinal force's pure sweeps, to slip ratios of ±100 %: drawn
         // apart, so that they do not stretch the combined sweeps' ±10 %
@@ -249,6 +259,22 @@ pub(super) fn staged_figure(
     };
     keyed(panels, columns, ROW_HEIGHT)
 }
+
+/// Whether the combined-slip rows of `sel` (both slips above
+/// [`PURE_TOL`]) sweep the slip angle: at least [`SWEPT_LEVELS`] levels
+/// of it (none: no combined rows, nothing to decide).
+fn sweeps_angle(sel: &[&MfRow]) -> bool {
+    let combined = sel
+        .iter()
+        .filter(|r| r.kappa.abs() > PURE_TOL && r.alpha.abs() > PURE_TOL);
+    let levels = clusters(combined.clone().map(|r| r.alpha), Slip::Angle.gap()).len();
+    combined.count() == 0 || levels >= SWEPT_LEVELS
+}
+
+/// Levels of a slip below which combined rows are taken as held at
+/// levels of it rather than swept through it: a sweep's curve needs more
+/// than a few points to be read as one.
+const SWEPT_LEVELS: usize = 4;
 
 /// A fit figure of `panels` in `columns`: 1000 px wide in one column,
 /// 650 px a column in more, each row `row_height` px high unless a panel's

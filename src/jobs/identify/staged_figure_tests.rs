@@ -549,3 +549,48 @@ fn a_load_condition_is_named_by_its_rounded_nominal_in_every_panel() {
         }
     }
 }
+
+/// Slip-ratio sweeps at α = 3° and 6° (a drive/brake test's combined
+/// rows) beside a pure slip-angle sweep: drawn against the slip angle,
+/// Mx's combined rows stood as two vertical streaks; they are drawn
+/// against the slip ratio they sweep, the slip-angle panel holding the
+/// pure sweep alone.
+#[test]
+fn moment_rows_swept_in_slip_ratio_at_few_slip_angles_are_drawn_against_the_slip_ratio() {
+    let t = tyre();
+    let mut rows: Vec<MfRow> = (-30..=30)
+        .map(|i| row(&t, 4000.0, 0.0, (0.5 * f64::from(i)).to_radians(), 0.0, 0.0))
+        .collect();
+    for a in [3.0f64, 6.0] {
+        for k in (-20..=20).filter(|&k| k != 0) {
+            rows.push(row(
+                &t,
+                4000.0,
+                0.01 * f64::from(k),
+                a.to_radians(),
+                0.0,
+                0.0,
+            ));
+        }
+    }
+    for r in &mut rows {
+        r.mx = Stage::Mx.model(&t, r);
+    }
+    let fig = staged_figure(&t, &[Stage::Mx], &rows, &[]);
+    let points = |p: &Panel| {
+        p.series
+            .iter()
+            .filter(|s| s.style == Style::Points(3))
+            .map(|s| s.x.len())
+            .sum::<usize>()
+    };
+    let by_axis = |axis: &str| -> usize {
+        fig.panels
+            .iter()
+            .filter(|p| p.x_label == axis)
+            .map(points)
+            .sum()
+    };
+    assert_eq!(by_axis("slip angle α [deg]"), 61);
+    assert_eq!(by_axis("slip ratio κ [%]"), 80);
+}

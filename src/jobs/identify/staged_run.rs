@@ -69,7 +69,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // same numbers.
     let pure_curve_warning: Vec<String> = template_warning
         .into_iter()
-        .chain(pure_curve_warning(&written, &o.hold))
+        .chain(pure_curve_warning(&written, &o.hold, &id.report))
         .collect();
     let head = file_head(o, &spans, &unfitted, &held)
         + &stage_comments(&id.report, named, &sigma_pooled)
@@ -315,7 +315,14 @@ fn read_back_difference(tir: &str, tyre: &MagicFormula, prepared: &Prepared) -> 
 
 /// The warning of a fitted tyre whose pure curves (of the forces it has:
 /// `PDY1`, `PDX1` not 0) go beyond any tyre's, with the numbers, or `None`.
-fn pure_curve_warning(t: &MagicFormula, hold: &[(String, f64)]) -> Option<String> {
+/// The coefficient named is said as what it is (`report`): fitted, held
+/// by its stage, given with `--hold`, or kept from the template or the
+/// defaults where no stage fitted its block.
+fn pure_curve_warning(
+    t: &MagicFormula,
+    hold: &[(String, f64)],
+    report: &StagedReport,
+) -> Option<String> {
     let c = &t.coefficients;
     // The cornering stiffness per unit load at FNOMIN is judged after the
     // curves, as the readers judge it: a fit outside 1.5–100 1/rad is
@@ -327,14 +334,35 @@ fn pure_curve_warning(t: &MagicFormula, hold: &[(String, f64)]) -> Option<String
         .check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0)
         .err()
         .or_else(|| crate::io::tir::cornering_per_load(t))?;
-    let held = hold.iter().any(|(k, _)| *k == e.key);
+    let given = hold.iter().any(|(k, _)| *k == e.key);
+    let parameter = report
+        .stages
+        .iter()
+        .filter(|s| s.skipped.is_none())
+        .flat_map(|s| &s.parameters)
+        .find(|p| p.name == e.key);
+    let (what, remedy) = match parameter {
+        _ if given => ("held", "hold it at a tyre's value, or fit it"),
+        Some(p) if p.free => ("fitted", "refit with --hold, or check the data"),
+        Some(_) => (
+            "held",
+            "hold it at a tyre's value with --hold, or check the data",
+        ),
+        None if report.template => (
+            "template's (no stage fitted it)",
+            "give a template whose block is a tyre's, or data that fit it",
+        ),
+        None => (
+            "default (no stage fitted it)",
+            "give --template with a tyre's coefficients, or data that fit it",
+        ),
+    };
     Some(format!(
-        "the {} `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: {}",
-        if held { "held" } else { "fitted" },
+        "the {what} `{}` = {}: {}; the file is written as {}, but tyre-eval and simulate refuse it: {remedy}",
         e.key,
         exact(c.get(&e.key).unwrap_or(f64::NAN)),
         e.reason,
-        if held { "hold it at a tyre's value, or fit it" } else { "refit with --hold, or check the data" }
+        if given || parameter.is_some() { "fitted" } else { "it stands" },
     ))
 }
 

@@ -108,13 +108,27 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
 }
 
 /// Whether every point of `inputs` at a camber other than 0 leaves the
-/// file's camber range and each, read in degrees, lies inside it: a column
-/// of small cambers in degrees (0.3, 0.5, 2) evaluated at `CAMMAX` without
-/// a word on its unit otherwise.
+/// file's camber range far (at least twice the size of the end it
+/// passes) and each, read in degrees, lies inside it: a column of small
+/// cambers in degrees (0.3, 0.5, 2) evaluated at `CAMMAX` without a word
+/// on its unit otherwise. A camber just past an end (3.22° given as
+/// 0.0561996 rad against `CAMMAX` = 0.05619) is no unit slip: degrees
+/// read as radians are 57 times their size, so a column in degrees whose
+/// values lie inside the range in degrees lies up to 57 times past it.
 fn camber_reads_as_degrees(tyre: &MagicFormula, inputs: &[MfInput]) -> bool {
     let leaves = |q: &MfInput| {
         let camber = |(r, _): &(InputRange, f64)| r.column == "camber";
         tyre.file_ranges_left(q).iter().any(camber)
+    };
+    let leaves_far = |q: &MfInput| {
+        tyre.file_ranges_left(q).iter().any(|(r, v)| {
+            let end = if r.hi.is_some_and(|hi| *v > hi) {
+                r.hi
+            } else {
+                r.lo
+            };
+            r.column == "camber" && end.is_some_and(|e| v.abs() >= 2.0 * e.abs())
+        })
     };
     let mut tilted = inputs.iter().filter(|q| q.camber != 0.0).peekable();
     tilted.peek().is_some()
@@ -123,7 +137,7 @@ fn camber_reads_as_degrees(tyre: &MagicFormula, inputs: &[MfInput]) -> bool {
                 camber: q.camber.to_radians(),
                 ..*q
             };
-            leaves(q) && !leaves(&degrees)
+            leaves_far(q) && !leaves(&degrees)
         })
 }
 

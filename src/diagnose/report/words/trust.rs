@@ -206,7 +206,7 @@ fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
     let mut kinds: Vec<EffectKind> = f.effects.clone();
     for k in f.also.iter().flat_map(|a| &a.effects) {
         if !kinds.contains(k) {
-            kinds.push(k.clone());
+            kinds.push(*k);
         }
     }
     let signatures: Vec<String> = kinds

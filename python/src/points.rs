@@ -7,6 +7,7 @@
 //! beyond ±1 are warned of through Python's `warnings`, as the CLI warns.
 //! Units: SI, rad, Pa.
 
+use handling::error::{InputProblem, PressureMeant, UnitSlip};
 use handling::jobs::tyre_eval::{refused_points, slip_past_lock, PointRefused};
 use handling::tyre::Tyre;
 use pyo3::exceptions::PyUserWarning;
@@ -62,10 +63,10 @@ fn point_error<'py>(
     refused: &[PointRefused],
     new_err: fn(String) -> PyErr,
 ) -> PyErr {
-    let shown: Vec<String> = refused.iter().take(10).map(|r| r.to_string()).collect();
+    let shown: Vec<String> = refused.iter().take(10).map(said).collect();
     let more = refused.len().saturating_sub(shown.len());
     let mut message = format!(
-        "{} refused (tyre-eval refuses them in a points file): {}",
+        "{} refused (as tyre-eval refuses them in a points file): {}",
         match refused.len() {
             1 => "1 point".to_string(),
             n => format!("{n} points"),
@@ -82,7 +83,7 @@ fn point_error<'py>(
         .map(|r| (r.argument, r.index, r.value))
         .collect();
     let reason = match &first.problem {
-        Some(p) => p.to_string(),
+        Some(p) => reason(p, first.argument),
         None => format!("{} is not a finite value", first.value),
     };
     let problem = first.problem.as_ref().map(|p| p.name());
@@ -102,4 +103,114 @@ fn point_error<'py>(
         let _ = v.setattr(k, x);
     }
     err
+}
+
+/// A refused point in the words of arrays given to a function:
+/// `fz[3] = -4000: …`.
+fn said(r: &PointRefused) -> String {
+    match &r.problem {
+        Some(p) => format!("{}[{}]: {}", r.argument, r.index, reason(p, r.argument)),
+        None => format!(
+            "{}[{}]: {} is not a finite value",
+            r.argument, r.index, r.value
+        ),
+    }
+}
+
+/// Why `argument`'s value is refused, said of the array given (its median,
+/// every value of it), not of a file's column as the CLI says it; the
+/// numbers and the advice are the problem's own.
+fn reason(p: &InputProblem, argument: &str) -> String {
+    let n = handling::format::exact;
+    match p {
+        InputProblem::NegativeLoad { value, every } => format!(
+            "{} N is negative (loads are positive){}",
+            n(*value),
+            if *every {
+                "; every load given is: a rig whose z axis points down (SAE's axes) logs them so; negate `fz`"
+            } else {
+                ""
+            }
+        ),
+        InputProblem::NegativeSpeed { value } => format!(
+            "{} m/s is negative: `speed` is the wheel's forward speed, 0 or more: a slip angle within ±90° already has the wheel rolling forwards (ISO 8855 measures it from the wheel's heading to its travel), and the models differ on a negative speed (a Magic Formula flips fy and my, the others ignore it); give the speed's size",
+            n(*value)
+        ),
+        InputProblem::AngleInDegrees { value, limit, .. } => format!(
+            "{} rad is beyond ±{:.0}°: angles are in radians; is `{argument}` in degrees? convert it with numpy.radians",
+            n(*value),
+            limit.to_degrees()
+        ),
+        InputProblem::NotPhysical {
+            value,
+            lo,
+            hi,
+            unit,
+            why,
+            ..
+        } => {
+            let u = |x: f64| match *unit {
+                "" => n(x),
+                _ => format!("{} {unit}", n(x)),
+            };
+            format!(
+                "{} lies outside {} to {}, where a tyre is evaluated ({why})",
+                u(*value),
+                n(*lo),
+                u(*hi)
+            )
+        }
+        InputProblem::NonPositivePressure { value } => {
+            format!("{} Pa is not a positive pressure", n(*value))
+        }
+        InputProblem::UnitSlip(UnitSlip::LoadInKn { value, median, limit }) => format!(
+            "{} N, among loads whose median is {} N: no tyre is tested at a median load below {} N (a car tyre carries 2,000–8,000 N): `fz` is in N; is it in kN? multiply it by 1000",
+            n(*value),
+            n(*median),
+            n(*limit)
+        ),
+        InputProblem::UnitSlip(UnitSlip::PressureNotInPa {
+            value,
+            median,
+            limit,
+            meant,
+        }) => format!(
+            "{} Pa, among pressures whose median is {} Pa: no inflated tyre runs below {} Pa (0.1 bar): `pressure` is in Pa; {}",
+            n(*value),
+            n(*median),
+            n(*limit),
+            pressure_unit(meant, *median)
+        ),
+        InputProblem::UnitSlip(UnitSlip::PressureRowNotInPa {
+            value,
+            median,
+            limit,
+            meant,
+        }) => format!(
+            "{} Pa among pressures whose median is {} Pa: no inflated tyre runs below {} Pa (0.1 bar): `pressure` is in Pa; {}",
+            n(*value),
+            n(*median),
+            n(*limit),
+            pressure_unit(meant, *value)
+        ),
+        other => other.to_string(),
+    }
+}
+
+/// The unit a pressure `read` of a few Pa is in, where one lands it among
+/// the tyre's pressures; else every unit it may be in.
+fn pressure_unit(meant: &Option<PressureMeant>, read: f64) -> String {
+    match meant {
+        Some(m) => format!(
+            "is it in {unit}? {} {unit} is {} Pa, within {} ({} to {} Pa): multiply by {}",
+            handling::format::exact(read),
+            handling::format::significant(m.pa, 4),
+            m.what,
+            handling::format::exact(m.among[0]),
+            handling::format::exact(m.among[1]),
+            handling::format::significant(m.pa / read, 4),
+            unit = m.unit,
+        ),
+        None => "is it in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?".into(),
+    }
 }

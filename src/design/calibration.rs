@@ -77,6 +77,15 @@ impl ReferenceGap {
         self.heldout_error > self.noise_level
     }
 
+    /// Whether the diagnosis calls that gap significant
+    /// ([`crate::diagnose::rules::significant`]: J above 1.3 J_n).
+    /// Below, the summary says the gap is within noise, as the diagnosis
+    /// does, though the bound ([`ReferenceGap::along`]) still counts what
+    /// J exceeds J_n by: it is smooth in the gap, no switch.
+    pub fn significant(&self) -> bool {
+        crate::diagnose::rules::significant(self.heldout_error, self.noise_level)
+    }
+
     /// The model-form error's mean square per residual sample beyond the
     /// noise's, in the noise's units: `(J² − J_n²)/J_n²` where positive (J
     /// is the RMS residual per sample in the channels' scales, J_n the

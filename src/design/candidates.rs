@@ -157,6 +157,10 @@ pub struct Fitted {
     /// The candidates screened out before cross-validation: no held-out
     /// fit to design with.
     pub screened: Vec<ScreenedOut>,
+    /// The candidates a verdict of no significant gap notes fitted far
+    /// from off, best held-out first (`verdict.far_from_off`): none is
+    /// confounded, and the refusal to design names them to ask for.
+    pub noted: Vec<Vec<EffectKind>>,
 }
 
 /// A candidate the diagnosis screened out before cross-validating it.
@@ -210,6 +214,7 @@ impl Fitted {
                     screen_percent: s.threshold_percent - s.margin_percent,
                 })
                 .collect(),
+            noted: noted(&d.verdict),
         }
     }
 
@@ -237,5 +242,19 @@ impl Fitted {
         self.candidates
             .iter()
             .find(|x| same_effects(&x.effects, effects))
+    }
+}
+
+/// The candidates `verdict` notes fitted far from off on a gap within
+/// noise ([`Fitted::noted`]).
+fn noted(verdict: &crate::diagnose::Verdict) -> Vec<Vec<EffectKind>> {
+    match verdict {
+        crate::diagnose::Verdict::NoSignificantGap(n) => {
+            n.far_from_off.as_ref().map_or_else(Vec::new, |f| {
+                let also = f.also.iter().map(|a| a.effects.clone());
+                std::iter::once(f.effects.clone()).chain(also).collect()
+            })
+        }
+        _ => Vec::new(),
     }
 }

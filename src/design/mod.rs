@@ -217,7 +217,11 @@ fn sets(
         ),
     };
     if wanted.is_empty() {
-        return Err(DesignError::NothingConfounded.into());
+        let noted = fitted.noted.iter().map(|e| joined(e, "+"));
+        return Err(DesignError::NothingConfounded {
+            noted: noted.collect(),
+        }
+        .into());
     }
     wanted
         .iter()

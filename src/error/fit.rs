@@ -256,8 +256,12 @@ pub enum DiagnosisError {
         source: super::BetaAgainstModel,
     },
     /// A design asked of a diagnosis that names no confounded set.
-    #[error("the diagnosis names no confounded effects: ask for the candidates to separate (`--effects a,b`)")]
-    NothingConfounded,
+    #[error("the diagnosis names no confounded effects{}: ask for the candidates to separate (`--effects a,b`)", noted_words(noted))]
+    NothingConfounded {
+        /// The candidates a verdict of no significant gap notes fitted
+        /// far from off, best held-out first (`a+b` a combination).
+        noted: Vec<String>,
+    },
     /// A design asked for a candidate the diagnosis did not fit.
     #[error("the diagnosis did not fit `{candidate}`; it fitted: {}", fitted.join(", "))]
     NotFitted {
@@ -457,5 +461,19 @@ impl std::fmt::Display for SampleAccount {
             write!(f, "; {} levels: {n}", v.column())?;
         }
         Ok(())
+    }
+}
+
+/// The candidates a diagnosis of no significant gap notes fitted far from
+/// off, and how to ask for a design to separate them.
+fn noted_words(noted: &[String]) -> String {
+    match noted {
+        [] => String::new(),
+        [one] => format!(" (it finds no significant gap, and notes that {one} fits far from off: alone, there is nothing to separate it from)"),
+        _ => format!(
+            " (it finds no significant gap, and notes that {} fit far from off and the held-out runs do not tell them apart: `--effects {}` designs runs to separate them)",
+            noted.join(", "),
+            noted.join(",")
+        ),
     }
 }

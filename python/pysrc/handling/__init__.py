@@ -39,6 +39,7 @@ from __future__ import annotations
 import copy
 import json
 import os
+import re
 import tempfile
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -124,6 +125,30 @@ def _path(p: PathLike) -> str:
 
 def _opt_path(p: Optional[PathLike]) -> Optional[str]:
     return None if p is None else os.fspath(p)
+
+
+def _paths(p: Union[PathLike, Iterable[PathLike]]) -> List[str]:
+    """Paths given as one path or as a sequence of them: a string is one
+    path, not a sequence of one-letter names."""
+    if isinstance(p, (str, bytes, os.PathLike)):
+        return [_path(p)]  # type: ignore[arg-type]
+    return [_path(x) for x in p]
+
+
+def _names(given: Union[str, Iterable[str]], what: str) -> List[str]:
+    """Names given as a sequence, or as one string read as the command
+    line's comma list (``"a,b"`` as ``--effects a,b``): a string is not a
+    sequence of one-letter names."""
+    if isinstance(given, str):
+        names = [n.strip() for n in given.split(",")]
+        if given.strip() and "" in names:
+            raise ValueError(f"{what}: {given!r} has an empty name between its commas")
+        return [n for n in names if n]
+    names = list(given)
+    for n in names:
+        if not isinstance(n, str):
+            raise TypeError(f"{what}: each name is a string, not {type(n).__name__} ({n!r})")
+    return names
 
 
 class Tyre:
@@ -254,6 +279,9 @@ def _keyword_error(e: InputError, doc: Document, what: str, strip: str = "") -> 
     # The reader's reason without its key and value (for a wrong value, the
     # parameter error's own reason), which the message below names.
     reason = getattr(e, "reason", None) or str(e)
+    comma = _decimal_comma(value)
+    if comma is not None:
+        reason = f"{value!r} is a string with a decimal comma, not a number: write {comma} (a float, not a string)"
     if key is not None and strip and key.startswith(strip):
         key = key[len(strip):]
     if key is None:
@@ -270,6 +298,16 @@ def _keyword_error(e: InputError, doc: Document, what: str, strip: str = "") -> 
     err.reason = reason
     err.problem = getattr(e, "problem", None)
     return err
+
+
+def _decimal_comma(value: Any) -> Optional[str]:
+    """``"1530,0"``'s number with a decimal point (``1530.0``); None where
+    ``value`` is no string of a number written with a decimal comma."""
+    if isinstance(value, str):
+        m = re.fullmatch(r"\s*([+-]?\d+),(\d+)\s*", value)
+        if m:
+            return f"{m.group(1)}.{m.group(2)}"
+    return None
 
 
 class Vehicle:
@@ -1003,11 +1041,11 @@ def diagnose(campaign: PathLike, out: Optional[PathLike] = None) -> Diagnosis:
 
 def synth(
     out: PathLike,
-    effects: Sequence[str] = (),
+    effects: Union[str, Sequence[str]] = (),
     seed: int = 1,
     truth: str = "augmented",
     programme: str = "handling",
-    drive: Sequence[PathLike] = (),
+    drive: Union[PathLike, Sequence[PathLike]] = (),
 ) -> Dict[str, Any]:
     """The virtual proving ground, as ``handling synth``: writes a campaign
     folder ``out`` measured on a truth model (``augmented`` or
@@ -1017,20 +1055,22 @@ def synth(
     on the banking, 25 Hz, ``ax`` and ``bank`` channels) or ``road-course``
     (trail braking and cambered corners, 25 Hz). ``drive`` names scenario
     files (``design`` writes them) whose manoeuvres the truth drives as
-    further runs."""
+    further runs. ``effects`` is a sequence of names or one string, read
+    as the command line's comma list (``"sensor_delay"``,
+    ``"road_bank,sensor_bias"``); ``drive`` one path or a sequence."""
     return json.loads(
-        _handling.synth(_path(out), list(effects), seed, truth, programme, [_path(d) for d in drive])
+        _handling.synth(_path(out), _names(effects, "synth: effects"), seed, truth, programme, _paths(drive))
     )
 
 
 def design(
     diagnosis: PathLike,
     campaign: Optional[PathLike] = None,
-    effects: Sequence[str] = (),
+    effects: Union[str, Sequence[str]] = (),
     ay_share: float = 0.8,
     max_ax: float = 3.0,
     top: int = 3,
-    measured: Sequence[PathLike] = (),
+    measured: Union[PathLike, Sequence[PathLike]] = (),
     out: Optional[PathLike] = None,
 ) -> Dict[str, Any]:
     """The next test to drive, as ``handling design``: for the candidates a
@@ -1040,16 +1080,18 @@ def design(
     driven run is expected to measure; runs ``measured`` driven afterwards
     are measured against it. Writes design.json, scenarios/*.toml and
     separation.png to ``out`` (default ``<diagnosis>/design``); returns
-    design.json's content."""
+    design.json's content. ``effects`` is a sequence or one string read as
+    the command line's ``--effects`` (``"a,b"``, ``a+b`` a combination);
+    ``measured`` one path or a sequence."""
     return json.loads(
         _handling.design(
             _path(diagnosis),
             _opt_path(campaign),
-            list(effects),
+            _names(effects, "design: effects"),
             ay_share,
             max_ax,
             top,
-            [_path(m) for m in measured],
+            _paths(measured),
             _opt_path(out),
         )
     )

@@ -266,19 +266,19 @@ def identify(
 def diagnose(campaign: PathLike, out: Optional[PathLike] = ...) -> Diagnosis: ...
 def synth(
     out: PathLike,
-    effects: Sequence[str] = ...,
+    effects: Union[str, Sequence[str]] = ...,
     seed: int = ...,
     truth: str = ...,
     programme: str = ...,
-    drive: Sequence[PathLike] = ...,
+    drive: Union[PathLike, Sequence[PathLike]] = ...,
 ) -> Dict[str, Any]: ...
 def design(
     diagnosis: PathLike,
     campaign: Optional[PathLike] = ...,
-    effects: Sequence[str] = ...,
+    effects: Union[str, Sequence[str]] = ...,
     ay_share: float = ...,
     max_ax: float = ...,
     top: int = ...,
-    measured: Sequence[PathLike] = ...,
+    measured: Union[PathLike, Sequence[PathLike]] = ...,
     out: Optional[PathLike] = ...,
 ) -> Dict[str, Any]: ...

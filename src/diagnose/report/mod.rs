@@ -32,11 +32,11 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, AssumedFloor, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened,
-    ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet, Lookalike,
-    Lookalikes, MassAlike, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, PairsFallback,
-    Parsimony, RankWarning, Refusal, Refused, Searched, SetAside, StandstillBank, ThroughBank,
-    Unseen, Verdict, VerdictKind, VerdictWarning, Window,
+    above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelChange, ChannelLeft,
+    ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet,
+    Lookalike, Lookalikes, MassAlike, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary,
+    PairsFallback, Parsimony, RankWarning, Refusal, Refused, Searched, SetAside, StandstillBank,
+    ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

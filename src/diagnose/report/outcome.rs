@@ -182,10 +182,11 @@ pub struct NoSignificantGap {
     /// stated) and whose held-out RMS would be a gap against their own
     /// scatter: the verdict rests on that assumption.
     pub assumed: Vec<AssumedFloor>,
-    /// The candidate that fits farthest from its off value, in standard
-    /// errors, of those that lower the held-out error: the rule weighs no
-    /// candidate on a gap within noise, and the words say what it found
-    /// and what would decide it (None: none fits [`FAR_FROM_OFF`] from off).
+    /// The best candidate on held-out runs of those that lower the
+    /// held-out error and fit a parameter [`FAR_FROM_OFF`] from off, with
+    /// the others that do too: the rule weighs no candidate on a gap
+    /// within noise, and the words say what it found and what would
+    /// decide it (None: none fits that far from off).
     pub far_from_off: Option<FarFromOff>,
 }
 
@@ -222,6 +223,21 @@ pub struct FarFromOff {
     /// That parameter's off value, in its unit.
     pub off: f64,
     /// `|value − off| / std_error`.
+    pub standard_errors: f64,
+    /// Held-out J with it.
+    pub heldout_error_after: f64,
+    /// The other candidates that lower the held-out error and fit a
+    /// parameter [`FAR_FROM_OFF`] from off, best held-out first: on a gap
+    /// within noise the runs tell none of them from it.
+    pub also: Vec<AlsoFar>,
+}
+
+/// Another candidate fitted far from off where the gap is within noise.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AlsoFar {
+    /// Its effects.
+    pub effects: Vec<EffectKind>,
+    /// Its parameter farthest from off, in standard errors.
     pub standard_errors: f64,
     /// Held-out J with it.
     pub heldout_error_after: f64,

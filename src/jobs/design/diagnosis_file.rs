@@ -26,6 +26,22 @@ struct DiagnosisFile {
     confounded: Vec<ConfoundedFile>,
     #[serde(default)]
     screened: Vec<ScreenedFile>,
+    #[serde(default)]
+    verdict: Option<VerdictFile>,
+}
+
+/// The verdict's candidates fitted far from off on a gap within noise.
+#[derive(Deserialize)]
+struct VerdictFile {
+    #[serde(default)]
+    far_from_off: Option<FarFile>,
+}
+
+#[derive(Deserialize)]
+struct FarFile {
+    effects: Vec<String>,
+    #[serde(default)]
+    also: Vec<ConfoundedFile>,
 }
 
 #[derive(Deserialize)]
@@ -205,6 +221,13 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, Diagnosed), Error> {
                 })
             })
             .collect::<Result<_, Error>>()?,
+        noted: match f.verdict.and_then(|v| v.far_from_off) {
+            Some(far) => std::iter::once(&far.effects)
+                .chain(far.also.iter().map(|a| &a.effects))
+                .map(|e| kinds(&path, e))
+                .collect::<Result<_, _>>()?,
+            None => Vec::new(),
+        },
     };
     Ok((
         fitted,

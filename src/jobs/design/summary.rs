@@ -97,13 +97,27 @@ fn calibration_words(set: &SetDesign) -> String {
     };
     // The scatter holds a model-form error only along the differences the
     // campaign's runs show (`Calibration`).
-    if cal.reference.model_form() {
+    // A gap is said as the diagnosis reads it: above the noise only beyond
+    // its threshold; below, what J exceeds J_n by is still bounded.
+    let gap = &cal.reference;
+    if gap.model_form() {
+        let said = if gap.significant() {
+            format!(
+                "{} leaves a gap above the noise (held-out error {:.3} against a noise level of {:.3}), a model-form error",
+                set.members[0], gap.heldout_error, gap.noise_level
+            )
+        } else {
+            format!(
+                "{} leaves no significant gap (held-out error {:.3}, within {} × the noise level {:.3}, as the diagnosis reads it), but what it leaves above the noise level may be model-form error, which",
+                set.members[0],
+                gap.heldout_error,
+                crate::diagnose::rules::SIGNIFICANT,
+                gap.noise_level
+            )
+        };
         measured += &format!(
-            "; {} leaves a gap above the noise (held-out error {:.3} against a noise level of {:.3}), a model-form error this scatter holds only along the differences these runs show, so each uncertainty below adds the most it can move a driven run ({} of the noise's variance a sample, over the run's samples)",
-            set.members[0],
-            cal.reference.heldout_error,
-            cal.reference.noise_level,
-            crate::format::readable(cal.reference.excess(), 2)
+            "; {said} this scatter holds only along the differences these runs show, so each uncertainty below adds the most it can move a driven run ({} of the noise's variance a sample, over the run's samples)",
+            crate::format::readable(gap.excess(), 2)
         );
     }
     measured

@@ -195,22 +195,49 @@ pub fn no_gap(n: &NoSignificantGap) -> String {
     v
 }
 
-/// What a candidate fitted far from off on a gap within noise found, why
-/// the rule does not take it, and what would decide it.
+/// What a candidate fitted far from off on a gap within noise found (the
+/// best on held-out runs of those that do, and the others that do too),
+/// why the rule does not take it, and what would decide it.
 fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
     let p = &f.parameter;
     let unit = if p.unit == "-" { "" } else { p.unit };
     let sp = if unit.is_empty() { "" } else { " " };
-    let name = |e: &EffectKind| e.name();
-    let effects: Vec<&str> = f.effects.iter().map(name).collect();
-    let signatures: Vec<String> = f
-        .effects
+    let names = |e: &[EffectKind]| e.iter().map(|k| k.name()).collect::<Vec<_>>().join("+");
+    let mut kinds: Vec<EffectKind> = f.effects.clone();
+    for k in f.also.iter().flat_map(|a| &a.effects) {
+        if !kinds.contains(k) {
+            kinds.push(*k);
+        }
+    }
+    let signatures: Vec<String> = kinds
         .iter()
         .map(|e| format!("{}: {}", e.name(), e.signature()))
         .collect();
+    let also = if f.also.is_empty() {
+        String::new()
+    } else {
+        let others: Vec<String> = f
+            .also
+            .iter()
+            .map(|a| {
+                format!(
+                    "{} ({:.0} standard errors from off, held-out error {:.3})",
+                    names(&a.effects),
+                    a.standard_errors,
+                    a.heldout_error_after
+                )
+            })
+            .collect();
+        format!(
+            "; {} fit{} that far from off too and the held-out runs do not tell {} from it",
+            others.join(", "),
+            if f.also.len() == 1 { "s" } else { "" },
+            if f.also.len() == 1 { "it" } else { "them" }
+        )
+    };
     format!(
-        "; but {} fits {} = {} ± {}{sp}{unit}, {:.0} standard errors from its off value {}{sp}{unit}, and lowers the held-out error to {:.3}: the rule weighs a candidate only where the gap exceeds {threshold} × the noise level, so it is not accepted; what it fits lies in too little of the runs to lift the gap above that, and more or longer runs that show it ({}) would decide it",
-        effects.join("+"),
+        "; but {} fits {} = {} ± {}{sp}{unit}, {:.0} standard errors from its off value {}{sp}{unit}, and lowers the held-out error to {:.3}, the most of the candidates that fit that far from off{also}: the rule weighs a candidate only where the gap exceeds {threshold} × the noise level, so it is not accepted; what it fits lies in too little of the runs to lift the gap above that, and more or longer runs that show it ({}) would decide it",
+        names(&f.effects),
         p.name,
         value(p.value),
         std_error(p.std_error),

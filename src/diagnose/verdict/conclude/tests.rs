@@ -137,9 +137,40 @@ fn the_farthest_from_off_is_measured_from_the_registrys_off_value_and_not_from_a
         "{}",
         f.standard_errors
     );
+    // The delay, 20 standard errors from off, is named beside it.
+    assert_eq!(f.also.len(), 1);
+    assert_eq!(f.also[0].effects, vec![SensorDelay]);
+    assert_eq!(f.also[0].heldout_error_after, 3.5);
     // Below FAR_FROM_OFF standard errors: none named.
     delayed.parameters[0].value = 0.0099;
     assert!(far_from_off([delayed].into_iter(), 4.0).is_none());
+}
+
+/// The banked oval's case: the bank ranks first on held-out runs while
+/// the bias's beta offset lies more standard errors from off. The best
+/// on held-out runs is named, the other beside it, whatever order the
+/// rows come in.
+#[test]
+fn the_candidate_named_far_from_off_is_the_best_on_held_out_runs_not_the_most_standard_errors() {
+    use EffectKind::{RoadBank, SensorBias};
+    let bank = &RoadBank.parameters()[0];
+    let beta = SensorBias
+        .parameters()
+        .iter()
+        .find(|q| q.name == "beta")
+        .expect("a beta offset");
+    let mut banked = row(&[RoadBank], 1.0015, true);
+    banked.parameters = vec![fitted(Group::Effect(RoadBank), bank, 0.0319, 0.000493)];
+    let mut biased = row(&[SensorBias], 1.0025, true);
+    biased.parameters = vec![fitted(Group::Effect(SensorBias), beta, -0.00229, 2.96e-5)];
+    for rows in [[biased.clone(), banked.clone()], [banked, biased]] {
+        let f = far_from_off(rows.into_iter(), 1.23).expect("one far from off");
+        assert_eq!(f.effects, vec![RoadBank]);
+        assert!((f.standard_errors - 0.0319 / 0.000493).abs() < 1e-9);
+        assert_eq!(f.also.len(), 1);
+        assert_eq!(f.also[0].effects, vec![SensorBias]);
+        assert!(f.also[0].standard_errors > f.standard_errors);
+    }
 }
 
 #[test]

@@ -64,7 +64,7 @@ fn a_gap_within_noise_names_the_best_candidate_fitted_far_from_off_and_the_other
     assert!(
         statement.contains("but road_bank fits road_bank.bank = ")
             && statement.contains("; sensor_bias (")
-            && statement.contains("the held-out runs do not tell it from it"),
+            && statement.contains("the held-out runs do not tell it from road_bank"),
         "{statement}"
     );
     assert!(said.contains(statement), "{said}");

@@ -229,10 +229,11 @@ fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
             })
             .collect();
         format!(
-            "; {} fit{} that far from off too and the held-out runs do not tell {} from it",
+            "; {} fit{} that far from off too and the held-out runs do not tell {} from {}",
             others.join(", "),
             if f.also.len() == 1 { "s" } else { "" },
-            if f.also.len() == 1 { "it" } else { "them" }
+            if f.also.len() == 1 { "it" } else { "them" },
+            names(&f.effects)
         )
     };
     format!(

@@ -84,7 +84,7 @@ pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, Shar
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use path_found::PathFound;
-pub use piece::{PieceRefusal, RefusedPiece};
+pub use piece::{GapAt, PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{

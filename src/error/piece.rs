@@ -5,7 +5,9 @@
 //!
 //! [`InputProblem::NoSteerStep`]: super::InputProblem::NoSteerStep
 
+use super::reason::angle;
 use super::MetricsError;
+use crate::format::rounded;
 use thiserror::Error;
 
 /// A moving piece of a run that was not used, and why.
@@ -53,6 +55,61 @@ pub enum PieceRefusal {
     /// The piece gives no step-steer metrics.
     #[error("no step-steer metrics ({0})")]
     NoStepMetrics(MetricsError),
+    /// Too short because a time gap ends it after its steer moved: what the
+    /// piece after the hole lacks (`measured::clean::cut_by_gap`).
+    #[error("too short ({} s, under the {} s a piece needs), because a time gap ends it ({gap}): it holds {} s of running before the steer moves at {} s (by {}) and the first {} s of the response, which the piece after the hole starts without; to keep them, {FILL}", rounded(*length, 3), rounded(*least, 3), rounded(*before, 3), rounded(*moves_at, 3), angle(*change), rounded(gap.from - moves_at, 3))]
+    CutByGap {
+        /// The piece's length and the least a piece needs, s.
+        length: f64,
+        /// The least length a piece needs, s.
+        least: f64,
+        /// Running before the steer moves, s.
+        before: f64,
+        /// When the steer moves, s.
+        moves_at: f64,
+        /// How far it moves within the piece, rad.
+        change: f64,
+        /// The gap that ends the piece.
+        gap: GapAt,
+    },
+    /// A piece that starts where a time gap ends with the wheels already
+    /// turned: the step lies before the hole and the hole cuts its
+    /// response (`metrics`), rad.
+    #[error("it starts where a time gap ends ({gap}) with the wheels already turned by {}: its steer step lies before the hole, which cuts the step's response; to measure the step across the hole, {FILL}", angle(*turned))]
+    StartsTurnedAtGap {
+        /// The steer held at the piece's start, rad.
+        turned: f64,
+        /// The gap before it.
+        gap: GapAt,
+    },
+}
+
+/// What to do with a hole that cuts a step: the advice of [`PieceRefusal::CutByGap`] and
+/// [`PieceRefusal::StartsTurnedAtGap`].
+const FILL: &str = "fill the hole in the file (interpolate the missing samples) and say so where the results are used";
+
+/// A time gap that split a run: from the last sample before it to the
+/// first after, s, and the samples missing at the run's interval.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GapAt {
+    /// The last sample before the gap, s.
+    pub from: f64,
+    /// The first sample after it, s.
+    pub to: f64,
+    /// Samples missing in it.
+    pub missing: usize,
+}
+
+impl std::fmt::Display for GapAt {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "no rows {:.3}–{:.3} s, {}",
+            self.from,
+            self.to,
+            crate::format::plural(self.missing, "sample missing", "samples missing")
+        )
+    }
 }
 
 /// The message of a run none of whose `pieces` holds a steer step: each
@@ -73,6 +130,9 @@ pub(super) fn no_steer_step(pieces: &[RefusedPiece], gaps: &[(f64, f64)]) -> Str
                 format!("no step-steer metrics (the run, {t_start:.2}–{t_end:.2} s, is too short)")
             }
             PieceRefusal::NoStepMetrics(_) => reason.to_string(),
+            PieceRefusal::CutByGap { .. } | PieceRefusal::StartsTurnedAtGap { .. } => {
+                format!("no step-steer metrics: {reason}")
+            }
             PieceRefusal::AnotherPieceUsed
             | PieceRefusal::SteerHeld { .. }
             | PieceRefusal::LaterSteps { .. } => {

@@ -201,7 +201,7 @@ pub enum InputProblem {
     #[error("a run needs at least two samples")]
     TooFewSamples,
     /// A road-wheel steer beyond ±90° over more than 1 % of the run.
-    #[error("column `steer`: {} rad is beyond ±90° (the run's 99th percentile of |steer| is {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?", Num(*value))]
+    #[error("column `steer`: {} rad is beyond ±90° (the run's 99th percentile of |steer| is {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)? A steer in degrees is converted in the file, or {}", Num(*value), super::units::declare("steer"))]
     SteerBeyondQuarterTurn {
         /// The first steer beyond ±90°, rad.
         value: f64,

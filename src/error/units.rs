@@ -10,13 +10,23 @@ use super::number::Num;
 use crate::format::{fixed, plural, significant};
 use thiserror::Error;
 
+/// How a `column` in degrees (deg/s) is declared, in each place a run is
+/// read: a campaign folder has no `[runs]`, so a campaign file naming it
+/// is where its degrees are declared (a user of a folder was told only
+/// "is the column in degrees?").
+pub(super) fn declare(column: &str) -> String {
+    format!(
+        "declare it so: `--degrees {column}` to `metrics`, `degrees = [\"{column}\"]` under [runs] in a campaign file (a campaign folder is read so by a campaign file whose [runs] has `dir` = its runs folder) or under a replay's [manoeuvre]"
+    )
+}
+
 /// A column whose values are in another unit than `FORMATS.md`'s.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[non_exhaustive]
 pub enum UnitSlip {
     /// A yaw rate beyond what any car reaches, over more than 1 % of the
     /// run (a spike alone is repaired later).
-    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3))]
+    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3, or {}", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3), declare("yaw_rate"))]
     YawRate {
         /// The first yaw rate beyond the limit, as read.
         value: f64,

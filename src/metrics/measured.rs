@@ -359,6 +359,7 @@ pub struct MeasuredMetrics {
 
 mod ay_check;
 mod coarse_grid;
+mod hole_bound;
 mod no_step;
 mod piece;
 mod steady_advice;
@@ -477,6 +478,7 @@ pub fn measured_step_metrics(
     check_steer_units(&run, min_speed)?;
     let path = run.path.clone();
     let mut cleaning = CleaningReport::new(min_speed);
+    cleaning.read_across = crate::measured::clean::ReadAcross::Metrics;
     let found = clean_single_reported(
         run,
         &CleanSettings::single(min_speed),

@@ -131,6 +131,7 @@ pub(crate) fn missing_rows(run: &str, t: &[f64], parts: &[(usize, usize)]) -> Op
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::measured::clean::ReadAcross;
 
     #[test]
     fn every_third_row_missing_is_counted_as_a_pattern() {
@@ -157,10 +158,16 @@ mod tests {
                 every: 3
             })
         );
+        let line = m.line(ReadAcross::Replay);
         assert!(
-            m.line().starts_with("missing rows: r.csv misses 267 samples in 267 holes in time, 1 of every 3 rows throughout"),
-            "{}",
-            m.line()
+            line.starts_with("missing rows: r.csv misses 267 samples in 267 holes in time, 1 of every 3 rows throughout"),
+            "{line}"
+        );
+        // The metrics run no replay: their line says what they do.
+        let line = m.line(ReadAcross::Metrics);
+        assert!(
+            !line.contains("replay") && line.contains("interpolate"),
+            "{line}"
         );
     }
 

@@ -32,12 +32,31 @@ pub struct RowPattern {
     pub every: usize,
 }
 
+/// What reads a run across its holes: the cleaning's line says what that
+/// reader does there (`metrics` runs no replay).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum ReadAcross {
+    /// A replay (`simulate`, `diagnose`): it integrates across a hole and
+    /// scores the rows present.
+    #[default]
+    Replay,
+    /// The step's metrics: the piece is interpolated linearly onto one
+    /// grid (`metrics::measured::uniform`).
+    Metrics,
+}
+
 impl MissingRows {
     /// The cleaning's line: how many rows, in how many holes, the pattern,
-    /// and what the replay does across them.
-    pub fn line(&self) -> String {
+    /// and what `reader` does across them.
+    pub fn line(&self, reader: ReadAcross) -> String {
+        let across = match reader {
+            ReadAcross::Replay => "the replay runs across them and scores the rows present",
+            ReadAcross::Metrics => {
+                "the metrics interpolate the piece linearly across them onto one grid"
+            }
+        };
         format!(
-            "missing rows: {} misses {} in {} in time{} (the longest {} s after t = {} s), each shorter than a time gap, so not split: the replay runs across them and scores the rows present",
+            "missing rows: {} misses {} in {} in time{} (the longest {} s after t = {} s), each shorter than a time gap, so not split: {across}",
             self.run,
             plural(self.samples, "sample", "samples"),
             plural(self.holes, "hole", "holes"),

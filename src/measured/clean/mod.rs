@@ -73,6 +73,7 @@
 //! (rows dropped), `missing.rs` how they are reported; `pieces.rs` the slow spans and pieces, and the
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
+mod cut_by_gap;
 mod gaps;
 mod glitches;
 mod held;
@@ -94,6 +95,7 @@ pub use glitches::treat_glitches;
 pub(crate) use glitches::{median, median_interval, midpoint_median, quantile};
 pub use held::treat_held;
 pub use inject::inject_glitches;
+pub use missing::ReadAcross;
 pub use pieces::{
     clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_reported,
     clean_single_with, fill_masked, fill_masked_by_channel, segments, slice, source_file,

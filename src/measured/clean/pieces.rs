@@ -4,6 +4,7 @@
 //! entry points for a diagnosis, a single replay and the metrics. Times in
 //! s, speeds in m/s.
 
+use super::cut_by_gap::{gap_after, too_short};
 use super::glitches::treat_glitches;
 use super::held::treat_held;
 use super::repair::repair;
@@ -182,6 +183,9 @@ pub fn clean_run(
     report
         .missing_rows
         .extend(super::holes::missing_rows(&name, &run.t, &parts));
+    // The gap after each moving piece that ends where its part does.
+    let mut gaps = Vec::new();
+    let dt = super::median_interval(&run.t);
     for (lo, hi) in parts {
         let mut part = slice(&run, lo, hi, "");
         treat_held(&mut part, settings.min_speed, report);
@@ -216,13 +220,14 @@ pub fn clean_run(
                 });
             } else {
                 moving.push(slice(&part, i, j, ""));
+                gaps.push((j == n).then(|| gap_after(&run.t, hi, dt)).flatten());
             }
             i = j;
         }
     }
     let whole = moving.len() == 1 && moving[0].t.len() == run.t.len();
     let mut out = Vec::new();
-    for (k, mut piece) in moving.into_iter().enumerate() {
+    for (k, (mut piece, gap)) in moving.into_iter().zip(gaps).enumerate() {
         if !whole {
             piece.path = PathBuf::from(format!("{name}#{}", k + 1));
         }
@@ -232,7 +237,8 @@ pub fn clean_run(
             report.pieces.push(piece_of(&piece, None));
             out.push(piece);
         } else {
-            report.drop_piece(&name, piece_of(&piece, Some(PieceRefusal::TooShort)));
+            let why = too_short(&piece, settings.min_piece_seconds, gap);
+            report.drop_piece(&name, piece_of(&piece, Some(why)));
         }
     }
     out

@@ -374,6 +374,9 @@ pub struct CleaningReport {
     pub counts: GlitchCounts,
     /// Rows missing in holes shorter than a time gap, per run that has any.
     pub missing_rows: Vec<super::missing::MissingRows>,
+    /// What reads the runs across those holes (said in their line).
+    #[serde(skip)]
+    pub read_across: super::missing::ReadAcross,
     /// Every glitch, in run and time order.
     pub glitches: Vec<Glitch>,
     /// Spans excluded for low speed.
@@ -492,7 +495,7 @@ impl CleaningReport {
     /// first few glitches, the slow spans and the pieces.
     pub fn summary(&self, first: usize) -> Vec<String> {
         let mut out = vec![self.counts_line()];
-        out.extend(self.missing_rows.iter().map(|m| m.line()));
+        out.extend(self.missing_rows.iter().map(|m| m.line(self.read_across)));
         for h in &self.held {
             if h.log_rate_changes {
                 out.push(format!(

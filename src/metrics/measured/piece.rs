@@ -18,7 +18,7 @@
 
 use super::super::step_shape::{check_steer_is_a_step, check_step_shape};
 use super::super::{step_metrics_held, HeldEvery, MetricSettings, StepMetrics};
-use super::{coarse_grid, steady_advice, uniform};
+use super::{coarse_grid, hole_bound, steady_advice, uniform};
 use crate::error::PieceRefusal;
 use crate::measured::clean::{fill_masked_by_channel, CleaningReport, RunChannel};
 use crate::measured::MeasuredRun;
@@ -39,20 +39,30 @@ pub(super) fn measure(
     settings: &MetricSettings,
 ) -> Result<(StepMetrics, MeasuredRun, Vec<String>), PieceRefusal> {
     let filled = fill_masked_by_channel(piece, &found.glitches);
+    // The low-pass's reach: one period of its cut-off, at least 2 samples.
+    let dt = crate::measured::clean::median_interval(&piece.t);
+    let reach = settings.filter_hz.map_or(0.0, |f| 1.0 / f).max(2.0 * dt);
     let mut spans = unmeasured(piece, &filled);
     spans.extend(
         crate::measured::clean::holes::holes(&filled.t)
             .into_iter()
-            .map(|(from, length, missing)| Span {
-                from,
-                to: from + length,
-                samples: missing,
-                why: "the log holds no sample (a hole in time, interpolated across)".into(),
+            .map(|(from, length, missing)| {
+                let window = reach.max(length).max(5.0 * dt);
+                Span {
+                    from,
+                    to: from + length,
+                    samples: missing,
+                    why: "the log holds no sample (a hole in time, interpolated across)".into(),
+                    bound: Some(hole_bound::interpolation_bound(
+                        &filled.t,
+                        &filled.yaw_rate,
+                        from,
+                        from + length,
+                        window,
+                    )),
+                }
             }),
     );
-    // The low-pass's reach: one period of its cut-off, at least 2 samples.
-    let dt = crate::measured::clean::median_interval(&piece.t);
-    let reach = settings.filter_hz.map_or(0.0, |f| 1.0 / f).max(2.0 * dt);
     let (p, holes) = uniform::uniform(filled);
     let every = |c: RunChannel| {
         found
@@ -86,12 +96,15 @@ pub(super) fn measure(
 }
 
 /// A span of yaw-rate samples the log does not measure: from, to (s), its
-/// samples and why.
+/// samples and why; for a hole in time, the bound of the straight line's
+/// error across it (rad/s, `hole_bound.rs`; `Some(None)` where too few
+/// samples read its curvature), which decides whether it hides the peak.
 struct Span {
     from: f64,
     to: f64,
     samples: usize,
     why: String,
+    bound: Option<Option<f64>>,
 }
 
 /// The spans of at least [`SPAN_SAMPLES`] yaw-rate samples cleaning
@@ -112,6 +125,7 @@ fn unmeasured(piece: &MeasuredRun, filled: &MeasuredRun) -> Vec<Span> {
             to: t[j - 1],
             samples: j - i,
             why: "cleaning masked them and filled them with a straight line".into(),
+            bound: None,
         })
         .collect::<Vec<_>>();
     let (lo, hi) = extremes(raw);
@@ -135,6 +149,7 @@ fn unmeasured(piece: &MeasuredRun, filled: &MeasuredRun) -> Vec<Span> {
                         "the yaw rate is flat at its largest value, {} rad/s, as a sensor clipped or saturated reads",
                         crate::format::readable(top, 4)
                     ),
+                    bound: None,
                 }),
         );
     }
@@ -181,15 +196,21 @@ fn on_grid(x: &[f64]) -> bool {
 }
 
 /// Withholds `m`'s peak (time, overshoot, TB and their spreads) where it
-/// lies within `reach` (s) of an unmeasured span; the warning.
+/// lies within `reach` (s) of an unmeasured span; the warning. A hole in
+/// time whose straight line is within the noise of the yaw rate (or,
+/// without noise, within half the overshoot's last printed digit,
+/// [`HOLE_FLOOR`]) hides nothing the noise does not (`hole_bound.rs`).
 fn withhold_unmeasured_peak(m: &mut StepMetrics, spans: &[Span], reach: f64) -> Option<String> {
     let at = m.time_zero + m.yaw_rate_peak_time?;
+    let step = m.yaw_rate_steady.abs();
+    let tolerance = step * m.yaw_rate_noise.max(HOLE_FLOOR);
+    let hides = |s: &Span| s.bound.is_none_or(|b| b.is_none_or(|b| b > tolerance));
     // The span nearest the peak is named: of a log's many holes, the first
     // within reach lay 0.08 s before a peak beside another.
     let off = |s: &Span| (s.from - at).max(at - s.to).max(0.0);
     let span = spans
         .iter()
-        .filter(|s| off(s) <= reach)
+        .filter(|s| off(s) <= reach && hides(s))
         .min_by(|a, b| off(a).total_cmp(&off(b)))?;
     m.yaw_rate_peak_time = None;
     m.yaw_rate_overshoot = None;
@@ -198,8 +219,23 @@ fn withhold_unmeasured_peak(m: &mut StepMetrics, spans: &[Span], reach: f64) -> 
     m.yaw_rate_peak_found_share = None;
     m.yaw_rate_overshoot_spread = None;
     m.yaw_rate_peak_unmeasured = true;
+    let bound = match span.bound {
+        None => String::new(),
+        Some(None) => " (too few samples around it to bound the straight line's error)".into(),
+        Some(Some(b)) => format!(
+            " (the straight line across it may miss the yaw rate by up to {} % of the step, |r''|·L²/8 with its curvature there over the {} s without a sample, more than the noise's {} %)",
+            crate::format::readable(100.0 * b / step, 2),
+            crate::format::readable(span.to - span.from, 3),
+            crate::format::readable(100.0 * tolerance / step, 2),
+        ),
+    };
+    let d = off(span);
+    let near = match d > 0.0 {
+        false => "in".to_string(),
+        true => format!("{} s beside", crate::format::readable(d, 2)),
+    };
     Some(format!(
-        "the yaw rate's largest value lies at {} s, in or beside {} from {} to {} s where {}: the log does not measure the peak there, so the peak time, the overshoot and TB are withheld",
+        "the yaw rate's largest value lies at {} s, {near} {} from {} to {} s where {}{bound}: the log does not measure the peak there, so the peak time, the overshoot and TB are withheld",
         crate::format::readable(at, 3),
         crate::format::plural(span.samples, "sample", "samples"),
         crate::format::readable(span.from, 3),
@@ -207,6 +243,11 @@ fn withhold_unmeasured_peak(m: &mut StepMetrics, spans: &[Span], reach: f64) -> 
         span.why
     ))
 }
+
+/// The least error, as a share of the step, a hole's straight line must
+/// be able to make to hide the peak of a log without noise: half the last
+/// digit of the overshoot printed to 0.01 %.
+const HOLE_FLOOR: f64 = 5e-5;
 
 /// Noise deviations (after the filter) above the threshold an overshoot
 /// must stand to be read as the car's: below, the noise could have made

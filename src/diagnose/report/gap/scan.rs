@@ -15,12 +15,15 @@
 //!   a record of pure noise shows a local gap in at most about one run in a
 //!   hundred, however long.
 //! - The bias against its standard error `max(floor, sd(e))·√(τ/n)`, τ the
-//!   noise's integrated autocorrelation time ([`noise_time`]: the residual
-//!   less its moving mean, Sokal's window as the calibration's means use),
-//!   not the whole residual's: a persistent error is slow, and counted as
-//!   noise it made itself its own excuse (a sideslip twice the model's read
-//!   "1.8 standard errors over 3 effective samples" of 800); significant
-//!   beyond [`BIAS_STANDARD_ERRORS`].
+//!   noise's integrated autocorrelation time (the residual less a moving
+//!   mean that spans the noise's own correlation time,
+//!   [`super::drift::bias_noise_time`]; Sokal's window as the calibration's
+//!   means use), not the whole residual's: a persistent error is slow, and
+//!   counted as noise it made itself its own excuse (a sideslip twice the
+//!   model's read "1.8 standard errors over 3 effective samples" of 800),
+//!   while a noise slower than a fixed quarter second, counted by it, read
+//!   as a bias (a state estimator's sideslip); significant beyond
+//!   [`BIAS_STANDARD_ERRORS`].
 //! - The time shift: the lag of the largest correlation of the measured
 //!   channel with the simulated one over ±[`MAX_SHIFT`] s, refined between
 //!   samples by a parabola through the peak and its neighbours; only where
@@ -156,23 +159,35 @@ pub(super) fn correlation_time(x: &[f64]) -> f64 {
 /// a quarter-second is under-counted: the window test is then less strict
 /// than stated.
 pub(super) fn noise_time(t: &[f64], e: &[f64]) -> f64 {
-    let n = e.len();
-    if n < 4 {
+    if e.len() < 4 {
         return 1.0;
     }
-    let dt = (t[n - 1] - t[0]) / (n - 1) as f64;
-    let half = ((0.25 * WINDOW / dt).round() as usize).max(1);
+    correlation_time(&less_moving_mean(e, quarter_window_samples(t))).max(1.0)
+}
+
+/// Samples in a quarter [`WINDOW`] at the mean step of the times `t`
+/// (at least one): the half width of the moving mean the noise is read
+/// about.
+pub(super) fn quarter_window_samples(t: &[f64]) -> usize {
+    let n = t.len();
+    let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
+    ((0.25 * WINDOW / dt).round() as usize).max(1)
+}
+
+/// `e` less its centred moving mean over `half` samples on either side
+/// (fewer at the ends).
+pub(super) fn less_moving_mean(e: &[f64], half: usize) -> Vec<f64> {
+    let n = e.len();
     let mut sum = vec![0.0; n + 1];
     for i in 0..n {
         sum[i + 1] = sum[i] + e[i];
     }
-    let fast: Vec<f64> = (0..n)
+    (0..n)
         .map(|i| {
             let (a, b) = (i.saturating_sub(half), (i + half + 1).min(n));
             e[i] - (sum[b] - sum[a]) / (b - a) as f64
         })
-        .collect();
-    correlation_time(&fast).max(1.0)
+        .collect()
 }
 
 /// The sliding window of the residual `e` at times `t` whose RMS is the
@@ -246,13 +261,15 @@ pub(super) fn worst_window(
 
 /// The residual `e` at times `t`: its mean against its standard error, the
 /// noise floor `floor` the least scatter it is judged with, the effective
-/// samples counted by the noise's correlation time ([`noise_time`]), not
-/// by the residual's own: the error tested is not its noise.
+/// samples counted by the noise's correlation time about a mean that
+/// follows it ([`super::drift::bias_noise_time`]), not by the residual's
+/// own: the error tested is not its noise, and a noise slower than a
+/// quarter second is not an error.
 pub(super) fn bias_test(t: &[f64], e: &[f64], floor: f64, resolved: bool) -> BiasTest {
     let n = e.len().max(1) as f64;
     let m = mean(e);
     let var = e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n;
-    let tau = noise_time(t, e);
+    let tau = super::drift::bias_noise_time(t, e);
     let standard_error = (var.max(floor * floor) * tau / n).sqrt();
     let standard_errors = m.abs() / standard_error;
     BiasTest {

@@ -23,7 +23,7 @@
 //!
 //! Units: samples.
 
-use super::scan::{correlation_time, less_moving_mean, quarter_window_samples};
+use crate::measured::calibration::stats::integrated_time;
 
 /// Correlation times of the noise the moving mean spans on either side
 /// once it follows them: about 10 % of a first-order noise's variance is
@@ -62,6 +62,31 @@ fn first_order_time(rho: f64, len: f64) -> f64 {
     (2.0 - x) / x
 }
 
+/// Samples in a quarter [`super::scan::WINDOW`] at the mean step of the times `t`
+/// (at least one): the half width of the moving mean the noise is read
+/// about.
+pub(super) fn quarter_window_samples(t: &[f64]) -> usize {
+    let n = t.len();
+    let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
+    ((0.25 * super::scan::WINDOW / dt).round() as usize).max(1)
+}
+
+/// `e` less its centred moving mean over `half` samples on either side
+/// (fewer at the ends).
+pub(super) fn less_moving_mean(e: &[f64], half: usize) -> Vec<f64> {
+    let n = e.len();
+    let mut sum = vec![0.0; n + 1];
+    for i in 0..n {
+        sum[i + 1] = sum[i] + e[i];
+    }
+    (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(half), (i + half + 1).min(n));
+            e[i] - (sum[b] - sum[a]) / (b - a) as f64
+        })
+        .collect()
+}
+
 /// The noise's integrated autocorrelation time in the residual `e` at
 /// times `t`, samples, about a moving mean [`SPANS`] of the noise's
 /// correlation times wide on either side (at least a quarter
@@ -79,7 +104,7 @@ pub(super) fn bias_noise_time(t: &[f64], e: &[f64]) -> f64 {
         let rho = robust_lag_one(&fast);
         let time = if rho > 0.0 { -1.0 / rho.ln() } else { 0.0 };
         let wanted = (SPANS * time).ceil() as usize;
-        let sokal = correlation_time(&fast).max(1.0);
+        let sokal = integrated_time(&fast, fast.iter().sum::<f64>() / fast.len() as f64).max(1.0);
         if wanted <= first_half {
             // Resolved within the quarter second: the fast part's count
             // alone, as the window test's ([`super::scan::noise_time`]).
@@ -96,66 +121,7 @@ pub(super) fn bias_noise_time(t: &[f64], e: &[f64]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::scan::{bias_test, BIAS_STANDARD_ERRORS};
     use super::*;
-    use rand::SeedableRng;
-
-    /// First-order noise `x_i = ρ x_{i−1} + √(1 − ρ²) w_i` of unit
-    /// variance, `n` samples, its correlation time `time` samples.
-    fn first_order(rng: &mut rand_chacha::ChaCha8Rng, n: usize, time: f64) -> Vec<f64> {
-        let rho = (-1.0 / time).exp();
-        let k = (1.0 - rho * rho).sqrt();
-        let mut x = crate::optim::stats::gauss(rng);
-        (0..n)
-            .map(|_| {
-                x = rho * x + k * crate::optim::stats::gauss(rng);
-                x
-            })
-            .collect()
-    }
-
-    /// First-order noise of correlation time 0.5, 1 and 3 s sampled at
-    /// 100 Hz for 300 s: its effective sample count is `n(1 − ρ)/(1 + ρ)`
-    /// (50 to 300 of 30,000), read within 15 % on average, and it is no
-    /// bias (none of 20 runs each). The quarter-second mean alone counted
-    /// thousands of samples and called most of them a bias.
-    #[test]
-    fn a_first_order_noise_counts_its_closed_form_samples_and_is_no_bias() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
-        let n = 30_000;
-        let t: Vec<f64> = (0..n).map(|i| 0.01 * i as f64).collect();
-        let mut alarms = 0;
-        let mut old_alarms = 0;
-        for seconds in [0.5_f64, 1.0, 3.0] {
-            let rho = (-0.01 / seconds).exp();
-            let closed = n as f64 * (1.0 - rho) / (1.0 + rho);
-            let mut ratios = Vec::new();
-            for _ in 0..20 {
-                let e = first_order(&mut rng, n, seconds / 0.01);
-                let b = bias_test(&t, &e, 0.0, true);
-                ratios.push(b.effective_samples / closed);
-                alarms += usize::from(b.significant);
-                let old = super::super::scan::noise_time(&t, &e);
-                let m = e.iter().sum::<f64>() / n as f64;
-                let sd = (e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n as f64).sqrt();
-                let z = m.abs() / (sd * (old / n as f64).sqrt());
-                old_alarms += usize::from(z > BIAS_STANDARD_ERRORS);
-            }
-            // Each within the scatter of a count read from 100 to 600
-            // correlation times; their mean within 15 % of the closed form.
-            let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
-            assert!((0.85..1.15).contains(&mean), "{seconds} s: {ratios:?}");
-            assert!(
-                ratios.iter().all(|r| (0.6..1.6).contains(r)),
-                "{seconds} s: {ratios:?}"
-            );
-        }
-        assert!(alarms == 0, "{alarms} of 60");
-        assert!(
-            old_alarms > 30,
-            "the quarter-second count: {old_alarms} of 60"
-        );
-    }
 
     /// The closed form of the correction: a mean of `L` samples takes
     /// `τ/L` of the variance, so a noise of `1 − ρ = x` reads

@@ -2,7 +2,7 @@
 //! the moving mean it is measured about following the noise's own
 //! correlation time.
 //!
-//! The residual less its moving mean is the noise ([`super::scan::noise_time`]):
+//! The residual less its moving mean is the noise (the scan's `noise_time`):
 //! its slow parts (a persistent error, a step, a replay's start) are not
 //! noise, or an error makes itself its own excuse. But a fixed quarter
 //! second mean counts only what the noise does faster than that: a smooth
@@ -24,6 +24,10 @@
 //! Units: samples.
 
 use crate::measured::calibration::stats::integrated_time;
+
+/// The least half width of the moving mean, s: a quarter of the scan's
+/// 0.5 s window, within which a lag or a transient error lives.
+pub const MEAN_HALF: f64 = 0.125;
 
 /// Correlation times of the noise the moving mean spans on either side
 /// once it follows them: about 10 % of a first-order noise's variance is
@@ -62,13 +66,13 @@ fn first_order_time(rho: f64, len: f64) -> f64 {
     (2.0 - x) / x
 }
 
-/// Samples in a quarter [`super::scan::WINDOW`] at the mean step of the times `t`
+/// Samples in [`MEAN_HALF`] at the mean step of the times `t`
 /// (at least one): the half width of the moving mean the noise is read
 /// about.
 pub(super) fn quarter_window_samples(t: &[f64]) -> usize {
     let n = t.len();
     let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
-    ((0.25 * super::scan::WINDOW / dt).round() as usize).max(1)
+    ((MEAN_HALF / dt).round() as usize).max(1)
 }
 
 /// `e` less its centred moving mean over `half` samples on either side
@@ -90,7 +94,7 @@ pub(super) fn less_moving_mean(e: &[f64], half: usize) -> Vec<f64> {
 /// The noise's integrated autocorrelation time in the residual `e` at
 /// times `t`, samples, about a moving mean [`SPANS`] of the noise's
 /// correlation times wide on either side (at least a quarter
-/// [`super::scan::WINDOW`], at most a quarter of the run).
+/// [`MEAN_HALF`] on either side, at most a quarter of the run).
 pub(super) fn bias_noise_time(t: &[f64], e: &[f64]) -> f64 {
     let n = e.len();
     if n < 8 {
@@ -107,7 +111,7 @@ pub(super) fn bias_noise_time(t: &[f64], e: &[f64]) -> f64 {
         let sokal = integrated_time(&fast, fast.iter().sum::<f64>() / fast.len() as f64).max(1.0);
         if wanted <= first_half {
             // Resolved within the quarter second: the fast part's count
-            // alone, as the window test's ([`super::scan::noise_time`]).
+            // alone, as the window test's (the scan's `noise_time`).
             return sokal;
         }
         if wanted <= half || half >= most {

@@ -10,9 +10,11 @@ use crate::metrics::measured::{
     measured_step_metrics, AyCheck, MeasuredMetrics, AY_METRICS, NO_AY,
 };
 use crate::metrics::{MetricSettings, StepMetrics};
+pub use body_ay::AyColumn;
 use serde::Serialize;
 use std::path::Path;
 
+mod body_ay;
 mod coarse;
 mod declared;
 mod exchanged;
@@ -54,6 +56,9 @@ pub struct MeasuredMetricsReport {
     /// The run's optional columns that the metrics do not use (roll, bank,
     /// ax), left unread and unchecked.
     pub unread_columns: Vec<&'static str>,
+    /// The column the lateral acceleration was read from: `ay_body` where
+    /// a history of `simulate` with roll carries it.
+    pub ay_column: AyColumn,
     /// The piece's first sample, s.
     #[serde(skip)]
     pub t_start: f64,
@@ -84,6 +89,7 @@ pub fn run_with_degrees(
     ParamError::finite("min_speed", min_speed)?;
     let (mut run, header) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
+    let ay_column = body_ay::body_frame_ay(path, &mut run)?;
     // Before a dead `ay` is left out: it is said as dead, not as absent.
     let unchecked = crate::io::unchecked_speed_unit(&run);
     let mut dead = leave_out_dead_channels(&mut run)?;
@@ -132,6 +138,7 @@ pub fn run_with_degrees(
         warnings: m.warnings,
         cleaning: m.cleaning,
         unread_columns: header.unread,
+        ay_column,
         t_start: m.t_start,
         t_end: m.t_end,
     })
@@ -429,6 +436,7 @@ impl MeasuredMetricsReport {
                 METRIC_CHANNELS.join(", ")
             ));
         }
+        out.extend(self.ay_column.note());
         out.extend(self.warnings.iter().map(|w| format!("warning: {w}")));
         out
     }

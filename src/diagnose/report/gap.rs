@@ -38,6 +38,7 @@ use crate::diagnose::report::parts::{
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
+mod drift;
 mod said;
 mod scan;
 use said::{verdict, Found, Said};

@@ -130,7 +130,7 @@ fn the_farthest_from_off_is_measured_from_the_registrys_off_value_and_not_from_a
     let mut worse = row(&[SensorDelay], 4.5, true);
     worse.parameters = vec![fitted(Group::Effect(SensorDelay), delay, 0.2, 0.001)];
     let rows = [rolled, delayed.clone(), inertia, worse];
-    let f = far_from_off(rows.into_iter(), 4.0).expect("one far from off");
+    let f = far_from_off(rows.into_iter(), 4.0, 1.0).expect("one far from off");
     assert_eq!((f.effects, f.off), (vec![YawInertia], 1.0));
     assert!(
         (f.standard_errors - 30.0).abs() < 1e-9,
@@ -143,7 +143,28 @@ fn the_farthest_from_off_is_measured_from_the_registrys_off_value_and_not_from_a
     assert_eq!(f.also[0].heldout_error_after, 3.5);
     // Below FAR_FROM_OFF standard errors: none named.
     delayed.parameters[0].value = 0.0099;
-    assert!(far_from_off([delayed].into_iter(), 4.0).is_none());
+    assert!(far_from_off([delayed].into_iter(), 4.0, 1.0).is_none());
+}
+
+/// A candidate that lowers the held-out error by less than a quarter of
+/// the noise level (1.014 → 0.966 of 1.000: a sensor delay fitted to pure
+/// noise) removes nothing the confounding test tells from the base: not
+/// named, however many standard errors its parameter lies from off.
+#[test]
+fn a_candidate_that_removes_less_than_the_noise_allowance_is_not_named_far_from_off() {
+    let delay = &EffectKind::SensorDelay.parameters()[0];
+    let mut noise_fit = row(&[EffectKind::SensorDelay], 0.966, true);
+    noise_fit.parameters = vec![fitted(
+        Group::Effect(EffectKind::SensorDelay),
+        delay,
+        0.0849,
+        0.000213,
+    )];
+    assert!(far_from_off([noise_fit.clone()].into_iter(), 1.014, 1.0).is_none());
+    // The same fit where it removes half a noise level is named; a
+    // tenth is the line.
+    let f = far_from_off([noise_fit].into_iter(), 1.466, 1.0).expect("named");
+    assert!((f.standard_errors - 0.0849 / 0.000213).abs() < 1e-6);
 }
 
 /// The banked oval's case: the bank ranks first on held-out runs while
@@ -164,7 +185,7 @@ fn the_candidate_named_far_from_off_is_the_best_on_held_out_runs_not_the_most_st
     let mut biased = row(&[SensorBias], 1.0025, true);
     biased.parameters = vec![fitted(Group::Effect(SensorBias), beta, -0.00229, 2.96e-5)];
     for rows in [[biased.clone(), banked.clone()], [banked, biased]] {
-        let f = far_from_off(rows.into_iter(), 1.23).expect("one far from off");
+        let f = far_from_off(rows.into_iter(), 1.23, 1.0).expect("one far from off");
         assert_eq!(f.effects, vec![RoadBank]);
         assert!((f.standard_errors - 0.0319 / 0.000493).abs() < 1e-9);
         assert_eq!(f.also.len(), 1);

@@ -418,6 +418,7 @@ mod trips_outputs;
 mod trips_ranges;
 mod trips_release;
 mod trips_run_units;
+mod trips_s100_fix30b;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

@@ -70,8 +70,16 @@ fn local_none_says_the_two_stage_result_has_its_own_polish() {
         .lines()
         .find(|l| l.starts_with("  aligning moment: σ"))
         .unwrap();
-    let sigma: Vec<&str> = aligning.split(['σ', '%']).collect();
-    assert_eq!(sigma[1].trim(), sigma[3].trim(), "{aligning}");
+    let after = |key: &str| {
+        aligning
+            .split(key)
+            .nth(1)
+            .unwrap()
+            .split(" %")
+            .next()
+            .unwrap()
+    };
+    assert_eq!(after("σ "), after("PSO alone "), "{aligning}");
 }
 
 /// A rig file of a lateral sweep at kappa 0 and a longitudinal one at

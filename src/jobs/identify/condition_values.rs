@@ -9,14 +9,13 @@
 //! Units: N, rad (said in degrees), Pa (said in kPa).
 
 use super::level_names::LevelNames;
-use super::notes::Note;
 use super::SwarmReport;
 use crate::identify::grouping::Variable;
 use crate::identify::CurveReport;
 
 /// The note of the conditions whose own load, camber or pressure is not
 /// the name of its level as the terminal spells both (`None`: each is).
-pub(crate) fn own_values_note(r: &SwarmReport) -> Option<Note> {
+pub(crate) fn own_values_note(r: &SwarmReport) -> Option<String> {
     let names = r.level_names();
     let curves = [Some(&r.fit), r.longitudinal.as_ref()]
         .into_iter()
@@ -31,10 +30,10 @@ pub(crate) fn own_values_note(r: &SwarmReport) -> Option<Note> {
         }
     }
     (!said.is_empty()).then(|| {
-        Note::said(format!(
+        format!(
             "a condition's load, camber and pressure are the medians of its samples fitted (the report's `curves`, the figure's fitted lines and the tyre's reference load where its model has one), inside the level the lines above name by every sample of it in the file: {}",
             said.join(", ")
-        ))
+        )
     })
 }
 

@@ -10,7 +10,6 @@
 //! the lateral force, the two-stage result, without a word of why.
 
 use super::choices::Polish;
-use super::notes::Note;
 use super::two_stage::Written;
 use super::SwarmReport;
 use crate::format::readable;
@@ -18,7 +17,7 @@ use crate::identify::{Fit, HeldFor};
 
 /// The note saying which of the fits written `--local` did not polish
 /// (`None`: `--local lm`, or it polished every one).
-pub(crate) fn local_note(r: &SwarmReport) -> Option<Note> {
+pub(crate) fn local_note(r: &SwarmReport) -> Option<String> {
     let local = r.options.local;
     if local == Polish::Lm {
         return None;
@@ -45,8 +44,7 @@ pub(crate) fn local_note(r: &SwarmReport) -> Option<Note> {
             refitted.join(" and the ")
         ));
     }
-    (!said.is_empty())
-        .then(|| Note::said(format!("--local {}: {}", local.as_str(), said.join("; "))))
+    (!said.is_empty()).then(|| format!("--local {}: {}", local.as_str(), said.join("; ")))
 }
 
 /// Whether `f` holds a parameter because the data do not determine it.

@@ -441,19 +441,35 @@ pub struct SampleAccount {
     pub used: usize,
     /// Samples between levels of some variable (transitions).
     pub between_levels: usize,
+    /// Samples in groups of values too few to be a level.
+    pub too_few: usize,
     /// Samples at levels other than the one selected.
     pub not_selected: usize,
     /// The levels found of each variable: (variable, count).
     pub levels: Vec<(Variable, usize)>,
 }
 
+/// The words of `n` samples in groups too few to be a level, ending in
+/// ", " (none: empty): two rows at one load were said to be "between
+/// levels (transitions)", where there is no level for them to lie between.
+pub fn too_few_words(n: usize) -> String {
+    match n {
+        0 => String::new(),
+        n => format!(
+            "{} in groups too few to be a level (fewer than 3 samples at one load, camber or pressure), ",
+            plural(n, "sample", "samples")
+        ),
+    }
+}
+
 impl std::fmt::Display for SampleAccount {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "{}: {} used in conditions, {} between levels (transitions), {} at levels not selected",
+            "{}: {} used in conditions, {}{} between levels (transitions), {} at levels not selected",
             plural(self.samples, "sample", "samples"),
             self.used,
+            too_few_words(self.too_few),
             self.between_levels,
             self.not_selected
         )?;

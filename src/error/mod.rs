@@ -64,6 +64,7 @@ pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
 pub use effect_limit::EffectLimit;
 pub use file_kind::{FileKind, KindProblem, Wanted};
+pub(crate) use fit::too_few_words;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };

@@ -419,6 +419,7 @@ mod trips_ranges;
 mod trips_release;
 mod trips_run_units;
 mod trips_s100_fix30a;
+mod trips_s100_fix30b;
 mod trips_s100_fix30c;
 mod trips_s100_fix30d;
 mod trips_s100_perf40;

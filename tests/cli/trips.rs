@@ -292,7 +292,8 @@ fn rig_data_without_a_test_condition_say_where_their_samples_went() {
     assert!(
         e.contains(
             "rig.csv: no test condition found in the data (2 samples: 0 used in conditions, \
-             2 between levels (transitions), 0 at levels not selected; fz levels: 0"
+             2 samples in groups too few to be a level (fewer than 3 samples at one load, camber or pressure), \
+             0 between levels (transitions), 0 at levels not selected; fz levels: 0"
         ),
         "{e}"
     );

@@ -103,6 +103,7 @@ mod tests {
                 levels(Variable::Pressure, p),
             ],
             dropped_in_transitions: 0,
+            dropped_too_few: 0,
             not_selected: 0,
             selected: Vec::new(),
         }

@@ -138,9 +138,31 @@ pub(super) fn median(sorted: &[f64]) -> f64 {
     }
 }
 
+/// The fewest samples at one value that make a level.
+pub const LEVEL_SAMPLES: usize = 3;
+
+/// The groups of values of one variable too few to be a level (fewer than
+/// [`LEVEL_SAMPLES`] apart from the rest), each as its range (lo, hi):
+/// their samples are among [`Levels::transition_samples`], and two rows
+/// at one load are no ramp between levels but too few for one.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct TooFew(Vec<(f64, f64)>);
+
+impl TooFew {
+    /// Whether `v` lies in one of the groups.
+    pub fn holds(&self, v: f64) -> bool {
+        self.0.iter().any(|&(lo, hi)| v >= lo && v <= hi)
+    }
+}
+
 /// The levels of `values` (in recording order) of `variable`; `resolution`
 /// is the smallest separation that counts as a different level.
 pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
+    levels_and_too_few(variable, values, resolution).0
+}
+
+/// [`levels`], with the groups of values too few to be a level.
+pub fn levels_and_too_few(variable: Variable, values: &[f64], resolution: f64) -> (Levels, TooFew) {
     let mut diffs: Vec<f64> = values.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
     diffs.sort_by(f64::total_cmp);
     // For Gaussian noise, |x_{i+1} − x_i| has median 0.6745·√2·σ.
@@ -163,14 +185,25 @@ pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
         levels: Vec::new(),
         transition_samples: 0,
     };
+    let mut too_few = TooFew::default();
     let mut start = 0;
     for i in 1..=sorted.len() {
         if i == sorted.len() || sorted[i] - sorted[i - 1] > separation {
-            split_valleys(&sorted[start..i], separation, resolution, &mut out);
+            let mut into = Found {
+                levels: &mut out,
+                too_few: &mut too_few,
+            };
+            split_valleys(&sorted[start..i], separation, resolution, &mut into);
             start = i;
         }
     }
-    out
+    (out, too_few)
+}
+
+/// Where [`split_valleys`] records what it finds.
+struct Found<'a> {
+    levels: &'a mut Levels,
+    too_few: &'a mut TooFew,
 }
 
 /// Robust deviation (1.4826·MAD) of the values about the median of their
@@ -194,7 +227,7 @@ fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
 }
 
 /// Splits one gap-separated group at density valleys and records its levels.
-fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Levels) {
+fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Found) {
     let (lo, hi) = (group[0], group[group.len() - 1]);
     if hi - lo <= 8.0 * separation {
         push_own_scale(group, resolution, out);
@@ -210,7 +243,7 @@ fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Leve
     let mut i = 0;
     while i < group.len() {
         if counts[bin(group[i])] < keep {
-            out.transition_samples += 1;
+            out.levels.transition_samples += 1;
             i += 1;
             continue;
         }
@@ -230,16 +263,17 @@ fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Leve
 /// Records the levels of `part` split on its own scale
 /// ([`split_own_scale`]); a part of fewer than three samples is ramp or
 /// isolated samples, counted as transitions.
-fn push_own_scale(part: &[f64], resolution: f64, out: &mut Levels) {
+fn push_own_scale(part: &[f64], resolution: f64, out: &mut Found) {
     let ranges = split_own_scale(part, resolution);
     let kept: usize = ranges.iter().map(|r| r.len()).sum();
-    out.transition_samples += part.len() - kept;
+    out.levels.transition_samples += part.len() - kept;
     for r in ranges {
         let level = &part[r];
-        if level.len() < 3 {
-            out.transition_samples += level.len();
+        if level.len() < LEVEL_SAMPLES {
+            out.levels.transition_samples += level.len();
+            out.too_few.0.push((level[0], level[level.len() - 1]));
         } else {
-            out.levels.push(Level {
+            out.levels.levels.push(Level {
                 lo: level[0],
                 hi: level[level.len() - 1],
                 nominal: median(level),

@@ -23,7 +23,8 @@
 //!   differ by the load's travel with slip, and the noise read from them
 //!   would otherwise join levels 560 N apart. A level is kept whatever
 //!   its share of the file; fewer than three samples apart from the rest are
-//!   not a level but ramp or isolated samples, counted as transitions.
+//!   not a level: counted as too few for one (two rows at one load are no
+//!   ramp between levels).
 //! - **Selection** of one load, pressure or camber level: an error when the
 //!   file has no such column or when the value lies outside every level's
 //!   band (the level's range widened by the separation threshold). The
@@ -47,7 +48,8 @@ pub(crate) mod levels;
 mod thin;
 
 pub use super::data::SlipAxis;
-pub use levels::{levels, Level, Levels, Variable};
+pub use levels::{levels, Level, Levels, Variable, LEVEL_SAMPLES};
+use levels::{levels_and_too_few, TooFew};
 
 use super::data::{Condition, RigData};
 use crate::error::{InputError, InputProblem, SampleAccount};
@@ -115,6 +117,10 @@ pub struct GroupingReport {
     pub levels: Vec<Levels>,
     /// Samples between levels of some variable, dropped.
     pub dropped_in_transitions: usize,
+    /// Samples in a group of values of some variable too few to be a
+    /// level (fewer than [`LEVEL_SAMPLES`]), dropped: not a ramp between
+    /// levels.
+    pub dropped_too_few: usize,
     /// Samples at other load, pressure or camber levels than the one
     /// selected.
     pub not_selected: usize,
@@ -157,6 +163,7 @@ impl GroupingReport {
             samples: self.samples,
             used: self.used,
             between_levels: self.dropped_in_transitions,
+            too_few: self.dropped_too_few,
             not_selected: self.not_selected,
             levels: self
                 .levels
@@ -169,7 +176,7 @@ impl GroupingReport {
     /// The report's lines for a terminal.
     pub fn lines(&self) -> Vec<String> {
         let mut out = vec![format!(
-            "{}: {} used in conditions, thinned to {} ({}); {} between levels (transitions), {} at levels not selected",
+            "{}: {} used in conditions, thinned to {} ({}); {}{} between levels (transitions), {} at levels not selected",
             plural(self.samples, "sample", "samples"),
             self.used,
             plural(self.points, "point", "points"),
@@ -189,6 +196,7 @@ impl GroupingReport {
                     format!("{} slip-ratio bins", self.slip_bin),
                 _ => "no thinning".into(),
             },
+            crate::error::too_few_words(self.dropped_too_few),
             self.dropped_in_transitions,
             self.not_selected
         )];
@@ -314,6 +322,8 @@ struct Sorted {
     groups: Vec<(fitted::Key, Vec<usize>)>,
     /// Samples between the levels of a variable (a ramp).
     transitions: usize,
+    /// Samples in a group of values too few to be a level.
+    too_few: usize,
     /// Samples at levels the selection leaves out.
     not_selected: usize,
 }
@@ -325,9 +335,10 @@ fn sorted(
     [loads, cambers]: [&Levels; 2],
     pressures: Option<&Levels>,
     selection: &Selection,
+    too_few: &[TooFew; 3],
 ) -> Sorted {
     let mut groups: Vec<(fitted::Key, Vec<usize>)> = Vec::new();
-    let (mut transitions, mut not_selected) = (0, 0);
+    let (mut transitions, mut not_selected, mut few) = (0, 0, 0);
     for i in 0..d.len() {
         let p_val = d.pressure.as_ref().map(|p| p[i]);
         let l = loads.find(d.fz[i]);
@@ -337,7 +348,15 @@ fn sorted(
             _ => Some(None),
         };
         let (Some(l), Some(c), Some(p)) = (l, c, p) else {
-            transitions += 1;
+            let [fz, camber, pressure] = too_few;
+            if fz.holds(d.fz[i])
+                || camber.holds(d.camber[i])
+                || p_val.is_some_and(|v| pressure.holds(v))
+            {
+                few += 1;
+            } else {
+                transitions += 1;
+            }
             continue;
         };
         if !selection.keeps(l, c, p) {
@@ -353,6 +372,7 @@ fn sorted(
     Sorted {
         groups,
         transitions,
+        too_few: few,
         not_selected,
     }
 }
@@ -370,18 +390,30 @@ pub fn group(
 ) -> Result<Grouped, InputError> {
     let refuse = |problem| InputError::problem(path, problem);
     let columns = SweepColumns::of(d, axis).ok_or_else(|| refuse(InputProblem::NoLongitudinal))?;
-    let loads = levels(Variable::Load, &d.fz, g.load_resolution);
-    let cambers = levels(Variable::Camber, &d.camber, g.camber_resolution);
-    let pressures = d
-        .pressure
-        .as_ref()
-        .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
+    let (loads, few_loads) = levels_and_too_few(Variable::Load, &d.fz, g.load_resolution);
+    let (cambers, few_cambers) =
+        levels_and_too_few(Variable::Camber, &d.camber, g.camber_resolution);
+    let (pressures, few_pressures) = match d.pressure.as_ref() {
+        Some(p) => {
+            let (l, f) = levels_and_too_few(Variable::Pressure, p, g.pressure_resolution);
+            (Some(l), f)
+        }
+        None => (None, TooFew::default()),
+    };
+    let too_few = [few_loads, few_cambers, few_pressures];
     let selection = selection(&refuse, d, g, &loads, &cambers, pressures.as_ref())?;
     let Sorted {
         groups,
         transitions,
+        too_few,
         not_selected,
-    } = sorted(d, [&loads, &cambers], pressures.as_ref(), &selection);
+    } = sorted(
+        d,
+        [&loads, &cambers],
+        pressures.as_ref(),
+        &selection,
+        &too_few,
+    );
     let asked = match axis {
         SlipAxis::Angle => g.alpha_bin,
         SlipAxis::Ratio => g.kappa_bin,
@@ -413,10 +445,14 @@ pub fn group(
         slip_bin_below_resolution: below_resolution,
         levels: all_levels,
         dropped_in_transitions: transitions,
+        dropped_too_few: too_few,
         not_selected,
         selected,
     };
-    debug_assert_eq!(report.used + transitions + not_selected, report.samples);
+    debug_assert_eq!(
+        report.used + transitions + too_few + not_selected,
+        report.samples
+    );
     Ok(Grouped { conditions, report })
 }
 

@@ -126,18 +126,18 @@ impl LinearWindow {
                 self.points_fitted
             ),
             Beyond::Saturates { departure_percent, conditions: n, judged } => format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates: in {n} of the {} judged they depart from the window's line by up to {} % RMS, beyond its noise{conditions})",
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out, where the force saturates: in {n} of the {} judged they depart from the window's line by up to {} % RMS, beyond its noise{conditions})",
                 self.max_abs_alpha_deg,
-                self.points_fitted,
-                self.points_left_out,
+                crate::format::plural(self.points_fitted, "point", "points"),
+                crate::format::plural(self.points_left_out, "point", "points"),
                 crate::format::plural(judged, "condition", "conditions"),
                 crate::format::readable(departure_percent, 2)
             ),
             Beyond::NotJudged | Beyond::NoPointPast => format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out{}{conditions})",
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out{}{conditions})",
                 self.max_abs_alpha_deg,
-                self.points_fitted,
-                self.points_left_out,
+                crate::format::plural(self.points_fitted, "point", "points"),
+                crate::format::plural(self.points_left_out, "point", "points"),
                 match self.beyond {
                     Beyond::NotJudged => format!(": no condition has {JUDGED_POINTS} points within the window to tell whether the force departs from its line beyond it"),
                     _ => String::new(),

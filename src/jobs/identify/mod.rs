@@ -16,6 +16,8 @@ pub use curvature::{Curvature, CurvatureExcess, Pac89Reversal};
 mod curvature_hold;
 pub use curvature_hold::CurvatureHeld;
 mod command;
+mod condition_values;
+mod local_scope;
 pub use command::{RecordedHold, RecordedOptions};
 mod level_names;
 mod linear_window;

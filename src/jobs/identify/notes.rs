@@ -356,6 +356,8 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
                 .flat_map(|f| later_fit_notes(r, f)),
         )
         .chain(sigma_notes(&r.fit, &r.level_names()))
+        .chain(super::condition_values::own_values_note(r).map(Note::said))
+        .chain(super::local_scope::local_note(r).map(Note::said))
         .chain(r.lifted.map(|l| Note::said(l.line())))
         .chain(r.at_rest.iter().map(|l| Note::said(l.clone())))
         .chain(unfitted_notes(r))

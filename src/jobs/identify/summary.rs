@@ -19,6 +19,7 @@ impl SwarmReport {
         out.extend(self.two_stage_lines());
         out.extend(self.first_fit_lines());
         out.extend(self.written_line());
+        out.extend(super::local_scope::local_note(self).map(|n| format!("  {n}")));
         out.extend(
             super::notes::sigma_notes(&self.fit, &self.level_names())
                 .iter()
@@ -113,6 +114,7 @@ impl SwarmReport {
                 decimals_or_digits(c.rms, 1, 3)
             ));
         }
+        out.extend(super::condition_values::own_values_note(self).map(|n| format!("  {n}")));
         out.extend(parameter_warnings(f, &self.options.hold));
         if let Some(w) = &self.linear_window {
             out.extend(w.lines(" "));

@@ -33,6 +33,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     // longitudinal test: not fitted, and said so.
     let long_view = d
         .long_view
+        .clone()
         .filter(|_| d.set_aside.has_kappa_sweep() || !d.lateral.has_lateral());
     let (first, grouped) = first_channel(o, &d.lateral, long_view.as_ref(), &grouping)?;
     let (conditions, window) = fitted_conditions(o, model, first, &grouped)?;
@@ -41,7 +42,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
             .measured
             .of_rows(whole, &d.moments, &grouped.report.selected),
         None => d.measured,
-    };
+    }
+    .with_pure_fx(d.long_view.as_ref(), &grouped.report.selected);
     let tyre0 = start_tyre_of(model, median_load(&conditions))?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;

@@ -1,0 +1,93 @@
+//! The value each condition of a swarm fit was fitted at, said where it
+//! is not the name of its level. Every line names a level by the median
+//! of every sample of it in the file (`level_names.rs`: the Hoosier
+//! file's 1656 N), while a condition's own load, camber and pressure are
+//! the medians of its samples fitted (`identify/grouping/fitted.rs`:
+//! 1639.7 N at 0° and 83.4 kPa), which the report's `curves`, the figure's
+//! fitted lines and the tyre's reference load are. Unsaid, the terminal's
+//! `Fz 1656 N` and the report's `1639.7` read as two loads of one fit.
+//! Units: N, rad (said in degrees), Pa (said in kPa).
+
+use super::level_names::LevelNames;
+use super::SwarmReport;
+use crate::identify::grouping::Variable;
+use crate::identify::CurveReport;
+
+/// The note of the conditions whose own load, camber or pressure is not
+/// the name of its level as the terminal spells both (`None`: each is).
+pub(crate) fn own_values_note(r: &SwarmReport) -> Option<String> {
+    let names = r.level_names();
+    let curves = [Some(&r.fit), r.longitudinal.as_ref()]
+        .into_iter()
+        .flatten()
+        .flat_map(|f| f.curves.iter());
+    let mut said: Vec<String> = Vec::new();
+    for c in curves {
+        for entry in differing(c, &names) {
+            if !said.contains(&entry) {
+                said.push(entry);
+            }
+        }
+    }
+    (!said.is_empty()).then(|| {
+        format!(
+            "a condition's load, camber and pressure are the medians of its samples fitted (the report's `curves`, the figure's fitted lines and the tyre's reference load where its model has one), inside the level the lines above name by every sample of it in the file: {}",
+            said.join(", ")
+        )
+    })
+}
+
+/// The words of `c`'s values that its level is named otherwise: the load
+/// as the report writes it (`1639.7 N in the 1656 N level`), a camber or
+/// pressure as the terminal spells it.
+fn differing(c: &CurveReport, names: &LevelNames) -> Vec<String> {
+    let mut out = Vec::new();
+    if Variable::Load.display(c.fz) != names.load(c.fz) {
+        out.push(format!("{} N in the {} level", c.fz, names.load(c.fz)));
+    }
+    let mut other = |variable: Variable, v: f64| {
+        let (own, level) = (variable.display(v), names.name(variable, v));
+        if own != level {
+            out.push(format!("{} {own} in the {level} level", variable.column()));
+        }
+    };
+    other(Variable::Camber, c.camber);
+    if let Some(p) = c.pressure {
+        other(Variable::Pressure, p);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::identify::grouping::levels;
+
+    fn curve(fz: f64) -> CurveReport {
+        CurveReport {
+            fz,
+            camber: 0.0,
+            pressure: None,
+            points: 10,
+            samples: 10,
+            sigma_percent: 1.0,
+            rms: 1.0,
+        }
+    }
+
+    #[test]
+    fn a_condition_inside_its_level_is_said_with_its_own_load() {
+        // A level whose samples' median is 1656 N, fitted at 1639.7 N.
+        let fz: Vec<f64> = (0..41).map(|i| 1506.0 + 7.5 * f64::from(i)).collect();
+        let loads = [levels(Variable::Load, &fz, 10.0)];
+        let names = LevelNames::of(&loads, &[]);
+        assert_eq!(names.load(1639.7), "1656 N");
+        assert_eq!(
+            differing(&curve(1639.7), &names),
+            vec!["1639.7 N in the 1656 N level".to_string()]
+        );
+        // At its level's name, or outside every level, nothing to say.
+        assert!(differing(&curve(1656.0), &names).is_empty());
+        assert!(differing(&curve(4000.0), &names).is_empty());
+    }
+}

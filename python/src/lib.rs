@@ -882,7 +882,8 @@ fn verdict_kinds() -> Vec<&'static str> {
 /// a truth model with the named effects on, driving `programme`
 /// (`handling`, `oval` or `road-course`); report JSON.
 #[pyfunction]
-#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented", programme="handling", drive=Vec::new()))]
+#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented", programme="handling", drive=Vec::new(), duration=None))]
+#[allow(clippy::too_many_arguments)]
 fn synth(
     py: Python<'_>,
     out: PathBuf,
@@ -891,6 +892,7 @@ fn synth(
     truth: &str,
     programme: &str,
     drive: Vec<PathBuf>,
+    duration: Option<f64>,
 ) -> PyResult<String> {
     let programme = programme.parse().map_err(py_err)?;
     let effects = effects
@@ -900,7 +902,7 @@ fn synth(
         .map_err(py_err)?;
     let truth = truth_named(truth).map_err(py_err)?;
     let r = detached(py, || {
-        let mut r = jobs::synth::run(&effects, seed, truth, programme, &out)?;
+        let mut r = jobs::synth::run(&effects, seed, truth, programme, duration, &out)?;
         r.drive(&drive)?;
         r.write()?;
         Ok(r)

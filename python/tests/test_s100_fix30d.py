@@ -81,3 +81,19 @@ def test_a_refused_point_is_said_of_the_arrays_given_not_of_a_file(root, kw, sai
     # The tyre-eval words name a column, a file and FORMATS.md.
     for cli in ("column", "a file whose", "FORMATS.md"):
         assert cli not in e.value.reason, words
+
+
+def test_synth_takes_the_command_lines_duration(tmp_path):
+    # `handling synth --duration` lengthens an analogue programme's runs
+    # to the total asked (racing-rear-steer: 300 s by default); a
+    # programme of fixed runs refuses it, naming those that take one.
+    handling.synth(tmp_path / "s", programme="racing-rear-steer", seed=1, duration=320)
+    header = (tmp_path / "s" / "vehicle.toml").read_text().splitlines()[0]
+    assert "--duration 320" in header, header
+    total = 0.0
+    for run in sorted((tmp_path / "s" / "runs").glob("*.csv")):
+        times = [float(line.split(",")[0]) for line in run.read_text().splitlines()[1:] if line]
+        total += times[-1] - times[0]
+    assert abs(total - 320.0) < 1e-9, total
+    with pytest.raises(handling.OptionsError, match="sedan-winding"):
+        handling.synth(tmp_path / "h", programme="handling", duration=600)

@@ -56,13 +56,12 @@ fn effective_samples(line: &str) -> f64 {
 }
 
 /// A replay whose sideslip is right but smooth, its error a first-order
-/// noise of 1 s (3,900 samples, about 20 of them independent): the bias is
-/// counted over the noise's own correlation time (8 to 60 effective
-/// samples) and the slow wander is no bias. The quarter-second mean
-/// counted about 1,800 ("bias -0.0001 rad (0.8 standard errors …, over
-/// 1818 effective samples)" on seed 3; there the assumed 0.005 rad floor of
-/// an estimated output kept the bias insignificant, where a floor near the
-/// wander's own size made it one: Putnam's runs and channels, 36 of 46).
+/// noise of 1 s (3,900 samples, about 20 of them independent), judged
+/// against the assumed 0.005 rad floor of an estimated output: the slow
+/// wander is no bias (the floor, ten times the wander, is counted white
+/// over every sample; the wander's own share over its correlation time,
+/// the unit tests' closed form), and the white-noise channels keep their
+/// count of a few thousand.
 #[test]
 fn a_smooth_sideslip_s_slow_noise_is_counted_by_its_own_correlation_time() {
     for seed in [3, 4] {
@@ -74,8 +73,7 @@ fn a_smooth_sideslip_s_slow_noise_is_counted_by_its_own_correlation_time() {
             .find(|l| l.trim_start().starts_with("beta:"))
             .unwrap_or_else(|| panic!("{stdout}"));
         assert!(!beta.contains("a bias of"), "seed {seed}: {beta}");
-        let n = effective_samples(beta);
-        assert!((8.0..60.0).contains(&n), "seed {seed}: {beta}");
+        assert!(effective_samples(beta) > 100.0, "seed {seed}: {beta}");
         // The white-noise channels keep their count: a few thousand.
         let yaw = stdout
             .lines()

@@ -1046,6 +1046,7 @@ def synth(
     truth: str = "augmented",
     programme: str = "handling",
     drive: Union[PathLike, Sequence[PathLike]] = (),
+    duration: Optional[float] = None,
 ) -> Dict[str, Any]:
     """The virtual proving ground, as ``handling synth``: writes a campaign
     folder ``out`` measured on a truth model (``augmented`` or
@@ -1057,9 +1058,13 @@ def synth(
     files (``design`` writes them) whose manoeuvres the truth drives as
     further runs. ``effects`` is a sequence of names or one string, read
     as the command line's comma list (``"sensor_delay"``,
-    ``"road_bank,sensor_bias"``); ``drive`` one path or a sequence."""
+    ``"road_bank,sensor_bias"``); ``drive`` one path or a sequence.
+    ``duration`` (s) lengthens an analogue programme's runs, as
+    ``--duration``."""
     return json.loads(
-        _handling.synth(_path(out), _names(effects, "synth: effects"), seed, truth, programme, _paths(drive))
+        _handling.synth(
+            _path(out), _names(effects, "synth: effects"), seed, truth, programme, _paths(drive), duration
+        )
     )
 
 

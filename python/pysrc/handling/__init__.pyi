@@ -271,6 +271,7 @@ def synth(
     truth: str = ...,
     programme: str = ...,
     drive: Union[PathLike, Sequence[PathLike]] = ...,
+    duration: Optional[float] = ...,
 ) -> Dict[str, Any]: ...
 def design(
     diagnosis: PathLike,

@@ -164,6 +164,19 @@ pub(crate) fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// Writes the log `csv` to `dir/run.csv` and a scenario replaying it on
+/// [`VEHICLE`] with `dir/tyre.toml` on both axles, `dir/replay.toml`.
+pub(crate) fn replay_of(dir: &Path, csv: &str) -> PathBuf {
+    fs::write(dir.join("run.csv"), csv).unwrap();
+    let scenario = dir.join("replay.toml");
+    fs::write(
+        &scenario,
+        format!("name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n"),
+    )
+    .unwrap();
+    scenario
+}
+
 /// `said` with every temporary directory's random name (`.tmpXXXXXX`,
 /// tempfile's six letters) replaced by `.tmp`: a test that says a word
 /// is absent must not fail because the random name spells it (CI once

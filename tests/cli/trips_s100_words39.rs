@@ -36,14 +36,7 @@ fn smooth_sideslip_replay(dir: &Path, seed: u64) -> PathBuf {
             c[3] + wander
         );
     }
-    fs::write(dir.join("run.csv"), csv).unwrap();
-    let scenario = dir.join("replay.toml");
-    fs::write(
-        &scenario,
-        format!("name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n"),
-    )
-    .unwrap();
-    scenario
+    replay_of(dir, &csv)
 }
 
 /// The effective samples a gap line counts its bias over.

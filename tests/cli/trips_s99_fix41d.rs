@@ -44,14 +44,7 @@ fn stepped_log(rows: &[Vec<f64>], seed: u64, beta: f64) -> String {
 /// scenario replaying it, `dir/replay.toml`.
 fn beta_doubled(dir: &Path) -> PathBuf {
     let log = stepped_log(&step_rows(dir), 41, 2.0);
-    fs::write(dir.join("run.csv"), log).unwrap();
-    let scenario = dir.join("replay.toml");
-    fs::write(
-        &scenario,
-        format!("name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n"),
-    )
-    .unwrap();
-    scenario
+    replay_of(dir, &log)
 }
 
 /// The sideslip's residual is the model's sideslip (−0.006 rad) from the

@@ -435,10 +435,24 @@ fn the_checker_sees_a_cycle_and_a_reexport() {
     assert_eq!(cycle_from(&a, &edges), None);
 }
 
+/// The Python extension's sources (`python/src`, the `handling-py` crate):
+/// held to the library's sizes, outside its import graph and layers.
+fn python_src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("python/src")
+}
+
 #[test]
 fn source_files_stay_readable() {
-    let long: Vec<String> = modules(&src())
-        .values()
+    let files: Vec<PathBuf> = modules(&src())
+        .into_values()
+        .chain(modules(&python_src()).into_values())
+        .collect();
+    assert!(
+        files.iter().any(|p| p.ends_with("python/src/lib.rs")),
+        "the Python extension's sources were not read"
+    );
+    let long: Vec<String> = files
+        .iter()
         .filter_map(|p| {
             let n = fs::read_to_string(p).unwrap().lines().count();
             (n > 600).then(|| format!("{} ({n} lines)", p.display()))
@@ -449,6 +463,65 @@ fn source_files_stay_readable() {
         "files over 600 lines:\n{}",
         long.join("\n")
     );
+}
+
+/// The functions of `code` longer than `limit` lines, as `name (N
+/// lines)`: from a line opening a `fn` to the line that closes it at the
+/// same indentation (rustfmt's layout).
+fn long_functions(code: &str, limit: usize) -> Vec<String> {
+    let lines: Vec<&str> = code.lines().collect();
+    let mut out = Vec::new();
+    for (i, l) in lines.iter().enumerate() {
+        let body = l.trim_start();
+        let indent = &l[..l.len() - body.len()];
+        let head = ["pub(crate) fn ", "pub fn ", "fn "]
+            .iter()
+            .find_map(|k| body.strip_prefix(k));
+        let Some(head) = head else { continue };
+        // A signature without a body (a trait's), or a body on its one
+        // line, has nothing to count.
+        if body.ends_with(';') || body.ends_with('}') {
+            continue;
+        }
+        let close = format!("{indent}}}");
+        let Some(end) = lines[i..].iter().position(|m| *m == close) else {
+            continue;
+        };
+        let n = end + 1;
+        if n > limit {
+            let name: String = head
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            out.push(format!("{name} ({n} lines)"));
+        }
+    }
+    out
+}
+
+/// The Python extension's functions stay under the guide's 80 lines
+/// (`python/src/errors.rs`'s conversion of every error kind was 122).
+#[test]
+fn python_extension_functions_stay_readable() {
+    let mut long = Vec::new();
+    for p in modules(&python_src()).values() {
+        for f in long_functions(&fs::read_to_string(p).unwrap(), 80) {
+            long.push(format!("{}: {f}", p.display()));
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "functions over 80 lines:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn the_length_check_counts_a_function_to_its_closing_brace() {
+    let body = "    x();\n".repeat(79);
+    let code = format!("fn short() {{\n}}\n\nimpl A {{\n    fn long() {{\n{body}    }}\n}}\n");
+    assert_eq!(long_functions(&code, 80), ["long (81 lines)"]);
+    assert!(long_functions(&code, 81).is_empty());
 }
 
 /// The modules a file declares under `#[cfg(test)]` (`mod tests;`).

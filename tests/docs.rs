@@ -58,7 +58,16 @@ const FIGURES: &[(&str, &str, &str)] = &[
         "book-equilibria",
         "out/speed_lt/branches_speed.png",
     ),
-    ("identify_mf61_fit.png", "book-magic-formula", "out/fit.png"),
+    (
+        "identify_mf61_pure_fy.png",
+        "book-magic-formula",
+        "out/fit.pure-fy.png",
+    ),
+    (
+        "identify_mf61_combined_fy.png",
+        "book-magic-formula",
+        "out/fit.combined-fy.png",
+    ),
     (
         "design_separation.png",
         "book-design",

@@ -37,7 +37,8 @@ fn each_loads_fitted_curve_is_drawn_in_its_points_colour_not_black() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let (rgb, w, h) = png_pixels(&dir.path().join("o.png"));
+    // The pure lateral force's figure (a figure per stage).
+    let (rgb, w, h) = png_pixels(&dir.path().join("o.pure-fy.png"));
     let black = count(&rgb, [0, 0, 0]);
     // The five loads' colours, the palette's first five (none the key's grey).
     let loads: Vec<usize> = (0..5)

@@ -223,8 +223,9 @@ class Tyre:
           ``tyre-eval --mode`` takes it: hundreds 1 = limit checks on, 2 =
           off; tens 1 = α* off, 2 = on; units 1 = no turn slip (turn slip is
           not modelled). None: the tyre's own (121 for a ``.tir`` file, as
-          ``tyre-eval`` without ``--mode``). A code it refuses,
-          or a mode for another model, raises :class:`OptionsError` in its
+          ``tyre-eval`` without ``--mode``). A code it refuses (any
+          integer but its three-digit codes, a negative one included), or a
+          mode for another model, raises :class:`OptionsError` in its
           words.
 
         Returns ``fx`` (N), ``fy`` (N), ``mz`` (N·m) and, for the Magic

@@ -37,6 +37,18 @@ pub(crate) fn own_values_note(r: &SwarmReport) -> Option<String> {
     })
 }
 
+/// A condition's own load `fz` as the report's `curves[].fz` writes it,
+/// with its level's name where that differs (`1639.7 N (1656 N level)`),
+/// else the level's name alone: the figure's key of the line drawn at it.
+pub(crate) fn own_load(fz: f64, names: &LevelNames) -> String {
+    let level = names.load(fz);
+    if Variable::Load.display(fz) == level {
+        level
+    } else {
+        format!("{fz} N ({level} level)")
+    }
+}
+
 /// The words of `c`'s values that its level is named otherwise: the load
 /// as the report writes it (`1639.7 N in the 1656 N level`), a camber or
 /// pressure as the terminal spells it.
@@ -89,5 +101,8 @@ mod tests {
         // At its level's name, or outside every level, nothing to say.
         assert!(differing(&curve(1656.0), &names).is_empty());
         assert!(differing(&curve(4000.0), &names).is_empty());
+        // The figure's key: the report's number beside the level's name.
+        assert_eq!(own_load(1639.7, &names), "1639.7 N (1656 N level)");
+        assert_eq!(own_load(1656.0, &names), "1656 N");
     }
 }

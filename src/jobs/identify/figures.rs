@@ -3,8 +3,11 @@
 //! degrees, slip ratio in percent), each titled with its own σ =
 //! sqrt(Σe²/ΣF²)·100 % over its points and its levels spelt as the
 //! terminal spells them ([`Variable::display`]); a colour per load within
-//! a panel (past nine loads the colours again, the lines dashed), the key opening with what is measured (points) and what
-//! fitted (lines), the lines drawn over every load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
+//! a panel (past nine loads the colours again, the lines dashed), keyed
+//! by the load its line is drawn at (the report's `curves[].fz`, with its
+//! level's name where that differs), the key opening with what is
+//! measured (points) and what fitted (lines), the lines drawn over every
+//! load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
 use super::level_names::LevelNames;
 use super::staged_figure::{key_entries, level_style, MEASURED};
@@ -185,7 +188,12 @@ fn panel(
             .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        lines.push(Series::line(&names.load(c.fz), &xd, &ys, colour).styled(style.line));
+        // The line is drawn at the condition's own load, the report's
+        // `curves[].fz`: the key says that number, and its level's name
+        // where the terminal names the level otherwise (1639.7 N in the
+        // 1656 N level).
+        let label = super::condition_values::own_load(c.fz, names);
+        lines.push(Series::line(&label, &xd, &ys, colour).styled(style.line));
     }
     series.extend(lines);
     let sigma = if y2 > 0.0 {

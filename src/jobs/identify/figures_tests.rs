@@ -146,3 +146,40 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_loads_points() {
         }
     }
 }
+
+/// The key names the load each line is drawn at, the report's
+/// `curves[].fz` (a condition's own median load), beside its level's name
+/// where the levels are named by other samples: on the Hoosier file the
+/// key said `1656 N` where the report said 1639.7.
+#[test]
+fn the_key_names_the_load_its_line_is_drawn_at_as_the_report_writes_it() {
+    use crate::identify::grouping::{levels, Variable};
+    let (tyre, conds) = conditions();
+    // Each level's samples run 30 N above its conditions' load: the
+    // level's name (their median) is 15 N above the load fitted.
+    let samples: Vec<f64> = conds
+        .iter()
+        .flat_map(|c| (0..=30).map(move |i| c.fz + f64::from(i)))
+        .collect();
+    let loads = [levels(Variable::Load, &samples, 10.0)];
+    let names = LevelNames::of(&loads, &[]);
+    let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)], &names);
+    let p = &fig.panels[0];
+    let keys: Vec<&str> = p
+        .series
+        .iter()
+        .skip(2)
+        .filter(|s| !s.label.is_empty())
+        .map(|s| s.label.as_str())
+        .collect();
+    let want: Vec<String> = conds[..3]
+        .iter()
+        .map(|c| format!("{} N ({} level)", c.fz, Variable::Load.display(c.fz + 15.0)))
+        .collect();
+    assert_eq!(keys, want);
+    // The number keyed is the line's own load, not its level's.
+    for (k, c) in keys.iter().zip(&conds) {
+        let n: f64 = k.split(' ').next().unwrap().parse().unwrap();
+        assert_eq!(n, c.fz);
+    }
+}

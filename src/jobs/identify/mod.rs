@@ -58,7 +58,7 @@ pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged_run::run_staged;
 mod swarm;
-pub use staged::StagedJob;
+pub use staged::{StageFigure, StagedJob};
 use std::path::PathBuf;
 use swarm::run_swarm;
 
@@ -328,11 +328,16 @@ impl SwarmReport {
 }
 
 impl IdentifyReport {
-    /// The tyre file, the report and (swarm fits) the figure.
+    /// The tyre file, the report and the figures: a swarm fit's one, a
+    /// staged fit's one per stage fitted.
     pub fn outputs(&self) -> Vec<PathBuf> {
         match self {
             IdentifyReport::Swarm(r) => outputs(&r.options, true),
-            IdentifyReport::Staged(r) => outputs(&r.options, true),
+            IdentifyReport::Staged(r) => {
+                let mut files = outputs(&r.options, false);
+                files.extend(r.figures.iter().map(|f| f.path.clone()));
+                files
+            }
         }
     }
 
@@ -357,29 +362,33 @@ impl IdentifyReport {
         }
     }
 
-    /// The figure written beside the tyre file: measured against fitted.
-    pub fn figure(&self) -> Figure {
+    /// The figures written beside the tyre file, in the order
+    /// [`IdentifyReport::outputs`] names their files: measured against
+    /// fitted.
+    pub fn figures(&self) -> Vec<Figure> {
         match self {
-            IdentifyReport::Swarm(r) => figures::fit_figure(r),
-            IdentifyReport::Staged(r) => r.figure.clone(),
+            IdentifyReport::Swarm(r) => vec![figures::fit_figure(r)],
+            IdentifyReport::Staged(r) => r.figures.iter().map(|f| f.figure.clone()).collect(),
         }
     }
 
-    /// Writes the tyre file, the report and the figure.
+    /// Writes the tyre file, the report and the figures.
     pub fn write(&self) -> Result<(), Error> {
         let files = self.outputs();
         match self {
             IdentifyReport::Swarm(r) => {
                 write_bytes(&files[0], r.file.as_bytes())?;
                 write_json_sorted(&files[1], r)?;
-                self.figure().save(&files[2])
             }
             IdentifyReport::Staged(r) => {
                 write_bytes(&files[0], r.tir.as_bytes())?;
                 write_json_sorted(&files[1], r)?;
-                r.figure.save(&files[2])
             }
         }
+        for (figure, path) in self.figures().iter().zip(&files[2..]) {
+            figure.save(path)?;
+        }
+        Ok(())
     }
 
     /// The closing line: what was written.
@@ -391,9 +400,16 @@ impl IdentifyReport {
             .collect();
         match self {
             IdentifyReport::Swarm(_) => format!("wrote {}, {} and {}", f[0], f[1], f[2]),
+            IdentifyReport::Staged(r) if f.len() == 2 => format!(
+                "identified in {:.2} s; wrote {} and {} (no stage fitted, no figure)",
+                r.report.seconds, f[0], f[1]
+            ),
             IdentifyReport::Staged(r) => format!(
-                "identified in {:.2} s; wrote {}, {} and {}",
-                r.report.seconds, f[0], f[1], f[2]
+                "identified in {:.2} s; wrote {}, {} and a figure per stage fitted: {}",
+                r.report.seconds,
+                f[0],
+                f[1],
+                f[2..].join(", ")
             ),
         }
     }

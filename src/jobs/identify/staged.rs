@@ -18,6 +18,18 @@ use crate::report::OutputLock;
 use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
 
+/// One fitted stage's figure and the file it is written to.
+#[derive(Debug, Clone, Serialize)]
+pub struct StageFigure {
+    /// The stage drawn.
+    pub stage: mf_staged::Stage,
+    /// `<out>.<stage>.png` beside the tyre file.
+    pub path: std::path::PathBuf,
+    /// Its panels.
+    #[serde(skip)]
+    pub figure: Figure,
+}
+
 /// The report of the staged Magic Formula fit.
 #[derive(Debug, Clone, Serialize)]
 pub struct StagedJob {
@@ -64,9 +76,9 @@ pub struct StagedJob {
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
-    /// Measured against fitted, per stage and camber, each with its σ.
-    #[serde(skip)]
-    pub figure: Figure,
+    /// Measured against fitted, a figure per stage fitted (a panel per
+    /// camber, pressure and, where needed, load, each with its σ).
+    pub figures: Vec<StageFigure>,
     /// The outputs, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,

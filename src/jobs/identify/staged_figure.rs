@@ -22,6 +22,7 @@ use crate::identify::grouping::{Levels as Named, Variable};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
 use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style, INK};
 use crate::tyre::mf::MagicFormula;
+use std::path::{Path, PathBuf};
 
 /// A slip variable: the x of a panel, or the level its lines are drawn at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -258,6 +259,35 @@ pub(super) fn staged_figure(
         1
     };
     keyed(panels, columns, ROW_HEIGHT)
+}
+
+/// The figure of each fitted stage on its own, written to `<out>.<stage>.png`
+/// ([`stage_png`]): the stages in one figure were 1300 × 6600 px on the
+/// book's MF 6.1 grid (40 panels), and 1300 × 19,800 px on a denser one,
+/// past what a viewer shows at a readable scale; a stage's panels are a
+/// page or two.
+pub(super) fn stage_figures(
+    tyre: &MagicFormula,
+    stages: &[Stage],
+    rows: &[MfRow],
+    named: &[Named],
+    out: &Path,
+) -> Vec<super::staged::StageFigure> {
+    stages
+        .iter()
+        .map(|&st| super::staged::StageFigure {
+            stage: st,
+            path: stage_png(out, st),
+            figure: staged_figure(tyre, &[st], rows, named),
+        })
+        .collect()
+}
+
+/// The figure file of stage `st` beside the tyre file `out`: `fit.tir` →
+/// `fit.pure-fy.png`, the stage spelt as the report's `stage` is.
+pub(super) fn stage_png(out: &Path, st: Stage) -> PathBuf {
+    let name = st.label().to_lowercase().replace(' ', "-");
+    out.with_extension(format!("{name}.png"))
 }
 
 /// Whether the combined-slip rows of `sel` (both slips above

@@ -78,7 +78,8 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let body = crate::io::tir::tir_text(&written, template.as_ref())?;
     let (tir, file_warnings) = super::written_checks::with_file_checks(&out, &head, &body);
     let back = read_back_difference(&tir, &id.tyre, &prepared)?;
-    let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows, named);
+    let figures =
+        super::staged_figure::stage_figures(&id.tyre, &fitted, &prepared.rows, named, &out);
     Ok(StagedJob {
         held,
         report: id.report,
@@ -91,7 +92,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         pure_curve_warning,
         file_warnings,
         input_warnings,
-        figure,
+        figures,
         tir,
         unfitted,
         options: o.clone(),
@@ -99,20 +100,19 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     })
 }
 
-/// The outputs of the fit (the .tir `out`, its report and figure) refused
+/// The outputs of the fit (the .tir `out`, its report and figures) refused
 /// where they would overwrite an input (the data, the template), then
 /// held for this run.
 fn claimed_outputs(o: &Options, out: &std::path::Path) -> Result<OutputLock, Error> {
     let mut inputs = vec![o.data.clone()];
     inputs.extend(o.template.clone());
-    refuse_overwrites(
-        &[
-            out.to_path_buf(),
-            out.with_extension("report.json"),
-            out.with_extension("png"),
-        ],
-        &inputs,
-    )?;
+    let mut outputs = vec![out.to_path_buf(), out.with_extension("report.json")];
+    outputs.extend(
+        crate::identify::mf_staged::Stage::ALL
+            .iter()
+            .map(|&st| super::staged_figure::stage_png(out, st)),
+    );
+    refuse_overwrites(&outputs, &inputs)?;
     super::output_lock(o)
 }
 

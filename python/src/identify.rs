@@ -1,0 +1,74 @@
+//! `identify`: a tyre model fitted to rig data (the swarm models, the
+//! staged Magic Formula fit), with the command line's options as
+//! keywords; the report as JSON and the fitted tyre as a `Tyre`.
+
+use crate::errors::py_err;
+use crate::tyre::PyTyre;
+use crate::{detached, json};
+use handling::error::Error;
+use handling::io::tir::read_tir_text;
+use handling::jobs;
+use handling::jobs::identify::{IdentifyModel, IdentifyReport, Options, Polish, StartArg};
+use handling::tyre::Tyre;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// Fits a tyre model to rig data; `(report JSON, fitted tyre)`.
+#[pyfunction]
+#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS, hold=Vec::new(), load=None))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn identify(
+    py: Python<'_>,
+    data: PathBuf,
+    model: &str,
+    seed: u64,
+    out: Option<PathBuf>,
+    pressure: Option<f64>,
+    camber: Option<f64>,
+    local: &str,
+    bin_deg: f64,
+    bin_kappa: f64,
+    start: &str,
+    template: Option<PathBuf>,
+    max_iterations: usize,
+    hold: Vec<(String, f64)>,
+    load: Option<f64>,
+) -> PyResult<(String, PyTyre)> {
+    let model: IdentifyModel = model.parse().map_err(py_err)?;
+    let local: Polish = local.parse().map_err(py_err)?;
+    let start: StartArg = start
+        .parse()
+        .map_err(|e: Error| PyValueError::new_err(e.to_string()))?;
+    let write = out.is_some();
+    let o = Options {
+        data,
+        model,
+        seed,
+        out,
+        load,
+        pressure,
+        camber,
+        local,
+        alpha_bin_deg: bin_deg,
+        kappa_bin: bin_kappa,
+        start,
+        template,
+        max_iterations,
+        hold,
+    };
+    let (r, tyre) = detached(py, || {
+        let r = jobs::identify::run(&o)?;
+        if write {
+            r.write()?;
+        }
+        let tyre = match &r {
+            IdentifyReport::Swarm(s) => s.tyre.clone(),
+            IdentifyReport::Staged(s) => {
+                Tyre::MagicFormula(Box::new(read_tir_text("identified.tir", &s.tir)?))
+            }
+        };
+        Ok((r, tyre))
+    })?;
+    Ok((json(&r)?, PyTyre { tyre }))
+}

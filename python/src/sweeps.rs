@@ -4,11 +4,12 @@
 //! cornering-stiffness pairs (N/rad per tyre) are simulated one at a time
 //! (Wang & Liang). Reports as JSON.
 
+use crate::errors::py_err;
 use crate::{detached, json, json_value, run_job, HandlingError};
 use handling::error::Error;
 use handling::jobs;
-use handling::jobs::shard::{shard_job, Shard, ShardJob};
-use handling::study::{Sample, Study};
+use handling::jobs::shard::{shard_job, FileJob, Shard, ShardJob};
+use handling::study::{Sample, StiffnessUnit, Study};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -73,12 +74,15 @@ impl PyStudy {
         PyArray1::from_slice(py, &self.rear)
     }
 
-    /// Simulates the pairs (N/rad per tyre); JSON list of samples.
+    /// Simulates the pairs (per tyre, in `unit`: `N/deg` or `N/rad`), each
+    /// value checked as a study file's; JSON list of samples as study.csv
+    /// reports them (response, note, metrics of a handling response).
     fn evaluate_json(
         &self,
         py: Python<'_>,
         k_front: PyReadonlyArray1<'_, f64>,
         k_rear: PyReadonlyArray1<'_, f64>,
+        unit: &str,
     ) -> PyResult<String> {
         let (f, r) = (k_front.as_slice()?, k_rear.as_slice()?);
         if f.len() != r.len() {
@@ -86,10 +90,11 @@ impl PyStudy {
                 "k_front and k_rear must have the same length",
             ));
         }
+        let unit: StiffnessUnit = unit.parse().map_err(|e| py_err(Error::from(e)))?;
+        let pairs: Vec<(f64, f64)> = f.iter().copied().zip(r.iter().copied()).collect();
         let st = &self.study;
-        let samples: Vec<Sample> =
-            py.detach(|| f.iter().zip(r).map(|(&a, &b)| st.evaluate(a, b)).collect());
-        json(&samples)
+        let samples = detached(py, || st.evaluate_in(&pairs, unit).map_err(Error::from))?;
+        json(&samples.iter().map(Sample::reported).collect::<Vec<_>>())
     }
 
     fn __repr__(&self) -> String {
@@ -131,14 +136,11 @@ pub(crate) fn run_shard(
     out: Option<PathBuf>,
 ) -> PyResult<String> {
     let s = shard(index, count)?;
-    let r = match job {
-        "equilibria" => detached(py, || jobs::equilibria::run_shard(&path, s, out.as_deref()))?,
-        "study" => detached(py, || jobs::study::run_shard(&path, s, out.as_deref()))?,
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "unknown job `{job}`: equilibria or study"
-            )))
+    let r = match job.parse::<FileJob>().map_err(py_err)? {
+        FileJob::Equilibria => {
+            detached(py, || jobs::equilibria::run_shard(&path, s, out.as_deref()))?
         }
+        FileJob::Study => detached(py, || jobs::study::run_shard(&path, s, out.as_deref()))?,
     };
     json(&r)
 }
@@ -189,7 +191,8 @@ pub(crate) fn study(py: Python<'_>, study_file: PathBuf, out: Option<PathBuf>) -
     )?;
     let mut v = json_value(&r)?;
     if let Some(o) = v.as_object_mut() {
-        o.insert("samples".into(), json_value(&r.samples)?);
+        let samples: Vec<_> = r.samples.iter().map(Sample::reported).collect();
+        o.insert("samples".into(), json_value(&samples)?);
     }
     json(&v)
 }

@@ -100,9 +100,9 @@ pub struct SynthArgs {
     #[arg(long, default_value = "handling", value_parser = Programme::from_str)]
     programme: Programme,
     /// The runs' total duration, s, for the analogues (`sedan-winding`,
-    /// 370 s by default; `racing-rear-steer`, 300 s): each run lengthened
-    /// in proportion, to whole seconds, its driver lapping its track more
-    /// often (at least the programme's own).
+    /// 370 s by default; `racing-rear-steer`, 300 s): a whole number of
+    /// seconds from the programme's own to 3600, each run lengthened in
+    /// proportion, to whole seconds, its driver lapping its track more often.
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds)]
     duration: Option<f64>,
     /// Campaign folder to create.

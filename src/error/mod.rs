@@ -103,7 +103,10 @@ pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};
 pub use steady::NoSteadyState;
 pub use steer_runs::SteerInDegreesRuns;
-pub use stiffness_unit::{StiffnessSlip, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS};
+pub use stiffness_unit::{
+    argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
+    MOST_LOAD_STIFFNESS,
+};
 pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
 use thiserror::Error;
 pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};

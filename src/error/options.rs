@@ -27,11 +27,13 @@ pub enum NameKind {
     MfCoefficient,
     /// A class of tyres (the prior of axles identified from runs).
     TyreClass,
+    /// A job that shards one input file (`equilibria`, `study`).
+    Job,
 }
 
 impl NameKind {
     /// Every kind.
-    pub const ALL: [NameKind; 9] = [
+    pub const ALL: [NameKind; 10] = [
         NameKind::TyreModel,
         NameKind::Metric,
         NameKind::Unit,
@@ -41,6 +43,7 @@ impl NameKind {
         NameKind::Start,
         NameKind::MfCoefficient,
         NameKind::TyreClass,
+        NameKind::Job,
     ];
 
     /// The kind as the messages name it.
@@ -55,6 +58,7 @@ impl NameKind {
             NameKind::Start => "start",
             NameKind::MfCoefficient => "Magic Formula coefficient",
             NameKind::TyreClass => "tyre class",
+            NameKind::Job => "job",
         }
     }
 }
@@ -208,6 +212,34 @@ pub enum OptionsError {
         programme: &'static str,
         /// Its runs' own total duration, s.
         own: f64,
+    },
+    /// `synth --duration` no number of seconds, or beyond the longest
+    /// campaign the proving ground drives.
+    #[error(
+        "--duration {}: {}the {programme} programme's runs last at most {most} s together (an hour of logging; each run is simulated at the truth's 2 ms step and held in memory): give a whole number of seconds from {own} to {most}",
+        super::Num(*given),
+        if given.is_finite() { "" } else { "no number of seconds: " }
+    )]
+    DurationTooLong {
+        /// The duration given, s.
+        given: f64,
+        /// The programme.
+        programme: &'static str,
+        /// Its runs' own total duration, s.
+        own: f64,
+        /// The longest total, s.
+        most: f64,
+    },
+    /// `synth --duration` that is no whole number of seconds.
+    #[error(
+        "--duration {}: the runs are lengthened to whole seconds (each in proportion and rounded, the last taking what is left, so that they add up to the total): give {} or {}",
+        super::Num(*given),
+        given.floor(),
+        given.ceil()
+    )]
+    DurationNotWhole {
+        /// The duration given, s.
+        given: f64,
     },
     /// `synth --effects` naming `none` with effects.
     #[error("{0}")]

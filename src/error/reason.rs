@@ -347,6 +347,10 @@ pub enum ParamReason {
     /// A cornering stiffness that is not positive.
     #[error("a cornering stiffness must be positive")]
     StiffnessNotPositive,
+    /// A cornering stiffness no tyre has against its axle's static load
+    /// (an argument's; a study file's is located, `ScenarioProblem`).
+    #[error("{}", .0.against_load())]
+    StiffnessAgainstLoad(Box<super::StiffnessSlip>),
     /// A validation index beyond the RBF's pairs.
     #[error("no such pair: an index counts from 0 in the order `[rbf] front` × `rear_offsets` makes the pairs (each offset in turn, rear ≤ `rear_max`), and they are {pairs}: {}", if *pairs == 0 { "no index is valid".to_string() } else { format!("an index lies in 0–{}", pairs - 1) })]
     TooFewPairs {

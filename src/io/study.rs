@@ -10,10 +10,11 @@ use super::scenario::{
 };
 use super::toml_file::{param_error, TomlSource};
 use crate::error::{
-    FileKind, InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessSlip,
-    Wanted, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS,
+    FileKind, InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessGiven,
+    Wanted,
 };
 use crate::metrics::MetricSettings;
+use crate::study::stiffness::{stiffness_problem, AxleLoad};
 use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};
 use serde::Deserialize;
@@ -232,7 +233,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
     let values = Values {
         src: &src,
         to_si: unit.to_si(),
-        unit: unit.as_str(),
+        unit,
         loads: (0.5 * sf, 0.5 * sr),
     };
     let (front, rear) = match &f.stiffness {
@@ -294,10 +295,10 @@ struct Values<'a> {
     src: &'a TomlSource,
     /// N/rad per file unit.
     to_si: f64,
-    /// The file's unit, for messages.
-    unit: &'static str,
+    /// The file's unit.
+    unit: StiffnessUnit,
     /// Each axle's tyre's static load (front, rear), N: what a tyre's
-    /// stiffness is judged against ([`StiffnessSlip`]).
+    /// stiffness is judged against ([`stiffness_problem`]).
     loads: (f64, f64),
 }
 
@@ -313,31 +314,31 @@ impl Values<'_> {
     }
 
     /// Refuses a value of `values` (file unit) at `key` that no tyre on
-    /// `key`'s axle has in the file's unit: one written in the other unit.
+    /// `key`'s axle has in the file's unit ([`stiffness_problem`]: one
+    /// written in the other unit, one no tyre's in either), or one that is
+    /// no positive number, at `key`'s line.
     fn tyre_like(&self, key: &str, values: &[f64]) -> Result<(), InputError> {
-        let rear = key.ends_with("rear");
-        let (axle, load) = match rear {
-            true => ("rear", self.loads.1),
-            false => ("front", self.loads.0),
+        let at = match key.ends_with("rear") {
+            true => AxleLoad {
+                axle: "rear",
+                load: self.loads.1,
+            },
+            false => AxleLoad {
+                axle: "front",
+                load: self.loads.0,
+            },
         };
-        let slip = values
-            .iter()
-            .map(|&value| StiffnessSlip {
-                key: key.into(),
-                value,
-                unit: self.unit,
-                to_si: self.to_si,
-                axle,
-                load,
-            })
-            .find(|s| !(LEAST_LOAD_STIFFNESS..=MOST_LOAD_STIFFNESS).contains(&s.per_load()));
-        match slip {
-            Some(slip) if load > 0.0 => {
+        let refused = values.iter().find_map(|&value| {
+            stiffness_problem(key, value, self.unit, at, StiffnessGiven::File).map(|r| (value, r))
+        });
+        match refused {
+            Some((_, ParamReason::StiffnessAgainstLoad(slip))) => {
                 let problem =
-                    InputProblem::Scenario(Box::new(ScenarioProblem::StiffnessUnit(slip)));
+                    InputProblem::Scenario(Box::new(ScenarioProblem::StiffnessUnit(*slip)));
                 Err(self.src.located(self.src.key_span(key), problem))
             }
-            _ => Ok(()),
+            Some((value, why)) => Err(self.error(ParamError::new(key, value, why))),
+            None => Ok(()),
         }
     }
 
@@ -370,9 +371,6 @@ impl Values<'_> {
                 key,
                 ParamReason::NoValuesFromRange,
             )));
-        }
-        if let Some(&x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
-            return Err(self.error(ParamError::new(key, x, ParamReason::StiffnessNotPositive)));
         }
         self.tyre_like(key, &v)?;
         Ok(v)

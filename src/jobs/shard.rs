@@ -86,6 +86,40 @@ pub enum ShardJob {
     Diagnose,
 }
 
+/// A job that shards the units of one input file, by the name its command
+/// has: what a caller names to run one shard (Python's `run_shard`); a
+/// batch of campaigns shards through `diagnose --batch`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileJob {
+    /// `equilibria`: a sweep's lines.
+    Equilibria,
+    /// `study`: a study's combinations.
+    Study,
+}
+
+impl FileJob {
+    /// Every such job.
+    pub const ALL: [FileJob; 2] = [FileJob::Equilibria, FileJob::Study];
+
+    /// Its command's name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            FileJob::Equilibria => "equilibria",
+            FileJob::Study => "study",
+        }
+    }
+}
+
+impl std::str::FromStr for FileJob {
+    type Err = Error;
+    /// The job named `s`; an unknown name is refused with the known ones
+    /// and the nearest ("did you mean `equilibria`?").
+    fn from_str(s: &str) -> Result<Self, Error> {
+        crate::error::named(&Self::ALL, FileJob::name, crate::error::NameKind::Job, s)
+            .map_err(Error::from)
+    }
+}
+
 /// An input of the run as the shard read it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct InputCopy {
@@ -428,6 +462,16 @@ pub(crate) fn read_shards<T: DeserializeOwned>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_job_name_one_letter_off_is_refused_with_the_nearest() {
+        assert_eq!("study".parse::<FileJob>().unwrap(), FileJob::Study);
+        let e = "equilibrium".parse::<FileJob>().unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "unknown job `equilibrium` (did you mean `equilibria`?): one of equilibria, study"
+        );
+    }
 
     /// FNV-1a's published values (Fowler, Noll & Vo's test vectors).
     #[test]

@@ -8,7 +8,7 @@ use crate::diagnose::effects::EffectKind;
 use crate::error::{Error, NameKind, NoneWithEffects, OptionsError, OutputError, WriteStep};
 use crate::measured::MeasuredRun;
 use crate::proving_ground::{
-    analogue_duration, drive, generate_lasting, DrivenRun, Noise, Programme, SynthSpec, Synthetic,
+    check_duration, drive, generate_lasting, DrivenRun, Noise, Programme, SynthSpec, Synthetic,
     Truth,
 };
 use crate::report::{create_dir, write_bytes, write_columns};
@@ -134,32 +134,6 @@ pub fn run(
         seed,
         campaign: s,
     })
-}
-
-/// Refuses a `--duration` of `given` s that `programme` cannot drive: a
-/// programme whose runs are fixed, or shorter than its own runs.
-fn check_duration(programme: Programme, given: f64) -> Result<(), Error> {
-    let Some(own) = analogue_duration(programme) else {
-        let takes = Programme::ALL
-            .iter()
-            .filter_map(|&p| analogue_duration(p).map(|d| (p.name(), d)))
-            .collect();
-        return Err(OptionsError::DurationNotTaken {
-            given,
-            programme: programme.name(),
-            takes,
-        }
-        .into());
-    };
-    if given < own {
-        return Err(OptionsError::DurationTooShort {
-            given,
-            programme: programme.name(),
-            own,
-        }
-        .into());
-    }
-    Ok(())
 }
 
 impl SynthReport {

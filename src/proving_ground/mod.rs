@@ -71,6 +71,8 @@ use rand_chacha::ChaCha8Rng;
 mod analogues;
 pub use analogues::analogue_duration;
 mod campaign;
+mod duration;
+pub use duration::{check_duration, MAX_DURATION};
 mod closed_loop;
 mod drive;
 mod driver;
@@ -241,18 +243,22 @@ impl TruthModels {
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
 /// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
-    generate_lasting(spec, truth, None)
+    let models = TruthModels::new(spec, truth)?;
+    generate_from(spec, truth, models, None)
 }
 
 /// [`generate_with`] with the runs of an analogue programme lengthened to
-/// `duration` s together (None: the programme's own; [`analogue_duration`]
-/// says which programmes and from what length). The other programmes'
-/// runs ignore it: `synth` refuses it for them.
+/// `duration` s together (None: the programme's own; [`check_duration`]
+/// refuses a duration no programme of fixed runs takes, one shorter than
+/// [`analogue_duration`], beyond [`MAX_DURATION`] or not whole).
 pub fn generate_lasting(
     spec: &SynthSpec,
     truth: Truth,
     duration: Option<f64>,
-) -> Result<Synthetic, ParamError> {
+) -> Result<Synthetic, crate::error::Error> {
+    if let Some(d) = duration {
+        check_duration(spec.programme, d)?;
+    }
     let models = TruthModels::new(spec, truth)?;
     let mut s = generate_from(spec, truth, models, duration)?;
     s.duration = duration;

@@ -16,8 +16,9 @@
 pub(crate) mod inverse;
 pub(crate) mod rbf;
 pub(crate) mod response;
+pub(crate) mod stiffness;
 
-pub use response::{NotHandling, Response, SideslipEnd};
+pub use response::{NotHandling, ReportedSample, Response, SideslipEnd};
 
 use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;
@@ -74,7 +75,9 @@ impl Study {
         m
     }
 
-    /// Simulates one combination.
+    /// Simulates one combination (N/rad per tyre) as given: the study
+    /// file's reader has checked its values; values from elsewhere go
+    /// through [`Study::evaluate_in`], which checks them as the file's.
     pub fn evaluate(&self, k_front: f64, k_rear: f64) -> Sample {
         let m = self.model_for(k_front, k_rear);
         // Measured as `simulate` measures the same car: on the dense

@@ -179,6 +179,38 @@ impl Sample {
     pub fn handling_metrics(&self) -> Option<StepMetrics> {
         self.metrics.filter(|_| self.response().is_handling())
     }
+
+    /// The sample as the study reports it ([`ReportedSample`]).
+    pub fn reported(&self) -> ReportedSample {
+        let response = self.response();
+        ReportedSample {
+            k_front: self.k_front,
+            k_rear: self.k_rear,
+            response: response.word(),
+            note: response.note(),
+            metrics: self.handling_metrics(),
+        }
+    }
+}
+
+/// A combination as `study.csv` reports it, for the library's callers
+/// (Python's samples): its `response` word and `note`, and its metrics
+/// only where they describe handling — a sliding car's Er of 1.98 s is no
+/// handling number, and `study.csv` leaves that row's cells empty.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReportedSample {
+    /// Front cornering stiffness per tyre, N/rad.
+    pub k_front: f64,
+    /// Rear cornering stiffness per tyre, N/rad.
+    pub k_rear: f64,
+    /// `study.csv`'s `response`: `handling`, `sliding`, `unstable`,
+    /// `large_sideslip`, `not_settled` or `no_steady_state`.
+    pub response: &'static str,
+    /// Why the metrics are empty, or how far a response still settling has
+    /// to go ([`Response::note`]); `None` for a settled handling response.
+    pub note: Option<String>,
+    /// The metrics of a handling response; `None` otherwise.
+    pub metrics: Option<StepMetrics>,
 }
 
 /// How many of a set of samples are no handling response, by kind.

@@ -128,3 +128,69 @@ fn metric_names_are_the_table_columns_and_unknown_names_are_refused() {
     );
     assert!("N/mm".parse::<StiffnessUnit>().is_err());
 }
+
+/// `Study::evaluate_in` checks each value as a study file's values are
+/// checked, before simulating any: the compact sedan's front tyre carries
+/// about 4.5 kN, so 20,000 N/deg (a value in N/rad) is 254 times its load
+/// per rad, and the refusal names the argument and says the N/deg value.
+#[test]
+fn evaluate_in_refuses_what_the_study_file_refuses_naming_the_argument() {
+    let st = study();
+    let refused = |pairs: &[(f64, f64)]| {
+        st.evaluate_in(pairs, StiffnessUnit::NPerDeg)
+            .expect_err("refused")
+    };
+    for (x, why) in [
+        (f64::NAN, crate::error::ParamReason::NotFinite),
+        (f64::INFINITY, crate::error::ParamReason::NotFinite),
+        (-500.0, crate::error::ParamReason::StiffnessNotPositive),
+        (0.0, crate::error::ParamReason::StiffnessNotPositive),
+    ] {
+        let e = refused(&[(x, 540.0)]);
+        assert_eq!(e.key, "front_n_per_deg", "{e}");
+        assert_eq!(e.reason, why, "{e}");
+    }
+    let e = refused(&[(500.0, 540.0), (20000.0, 540.0)]).to_string();
+    assert!(
+        e.starts_with("`front_n_per_deg[1]` = 20000: 20000 N/deg per tyre is 1145916 N/rad, 254 times the front tyre's static load"),
+        "{e}"
+    );
+    assert!(
+        e.ends_with("is the value in N/rad? give it as `front_n_per_rad` = 20000, or as `front_n_per_deg[1]` = 349.1"),
+        "{e}"
+    );
+    // No tyre's in either unit: the range a tyre of that load has.
+    let e = refused(&[(500.0, 1e-300)]).to_string();
+    assert!(e.starts_with("`rear_n_per_deg` = 1e-300"), "{e}");
+    assert!(
+        e.contains("nor is it one in N/rad: the rear tyre's lies within"),
+        "{e}"
+    );
+    // In N/rad, the same values as the file's reader converts them.
+    let s = st
+        .evaluate_in(&[(500.0 * DEG, 540.0 * DEG)], StiffnessUnit::NPerRad)
+        .unwrap();
+    let d = st
+        .evaluate_in(&[(500.0, 540.0)], StiffnessUnit::NPerDeg)
+        .unwrap();
+    assert_eq!(s, d);
+    assert_eq!(s[0], st.evaluate(500.0 * DEG, 540.0 * DEG));
+}
+
+/// A sliding combination is reported as `study.csv` reports it: its
+/// response and note, and no metrics (its Er is no handling number).
+#[test]
+fn a_sliding_combination_is_reported_without_metrics() {
+    let st = study();
+    let mut slides = st.evaluate(500.0 * DEG, 540.0 * DEG);
+    slides.metrics = slides.metrics.map(|mut m| {
+        m.beta_steady = Some(-0.6);
+        m
+    });
+    let r = slides.reported();
+    assert_eq!(r.response, "sliding");
+    assert!(r.metrics.is_none() && r.note.unwrap().contains("slides past its grip"));
+    let fine = st.evaluate(500.0 * DEG, 540.0 * DEG).reported();
+    assert_eq!(fine.response, "handling");
+    assert!(fine.metrics.is_some());
+}

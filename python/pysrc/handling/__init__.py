@@ -727,9 +727,14 @@ class Study:
         cornering stiffness pairs, per tyre, given in N/deg
         (``front_n_per_deg``, ``rear_n_per_deg``: the study file's and the
         CLI's unit) or in N/rad (``front_n_per_rad``, ``rear_n_per_rad``);
-        arrays broadcast. Returns one :class:`StudySample` per pair
-        (``k_front``, ``k_rear`` in N/rad, ``metrics`` None without a
-        steady state)."""
+        arrays broadcast. Each value is checked as the study file's are
+        (:class:`ParamError` naming the keyword, with its index among
+        several, for a NaN, an infinity, a value at or below zero or one no
+        tyre has against its axle's static load, such as N/rad given as
+        N/deg), all before any is simulated. Returns one
+        :class:`StudySample` per pair (``k_front``, ``k_rear`` in N/rad;
+        ``response`` as ``study.csv``'s; ``metrics`` None where it is no
+        handling response)."""
         if args:
             raise TypeError(
                 "Study.evaluate: name the unit of the stiffness values, "
@@ -740,10 +745,15 @@ class Study:
         per_rad = (front_n_per_rad, rear_n_per_rad)
         given_deg = [v is not None for v in per_deg]
         given_rad = [v is not None for v in per_rad]
+        # The values go to the library in their unit: it checks them as the
+        # study file's (finite, positive, a tyre's against its static load),
+        # naming the keyword, and converts them as the file's reader does.
         if all(given_deg) and not any(given_rad):
-            f, r = (np.asarray(v, dtype=np.float64) * _DEG_PER_RAD for v in per_deg)
+            f, r = (np.asarray(v, dtype=np.float64) for v in per_deg)
+            unit = "N/deg"
         elif all(given_rad) and not any(given_deg):
             f, r = (np.asarray(v, dtype=np.float64) for v in per_rad)
+            unit = "N/rad"
         else:
             raise TypeError(
                 "Study.evaluate: give front_n_per_deg and rear_n_per_deg, "
@@ -751,7 +761,7 @@ class Study:
             )
         f, r = np.broadcast_arrays(f, r)
         text = self._s.evaluate_json(
-            np.ascontiguousarray(f.ravel()), np.ascontiguousarray(r.ravel())
+            np.ascontiguousarray(f.ravel()), np.ascontiguousarray(r.ravel()), unit
         )
         return [StudySample.from_dict(d) for d in json.loads(text)]
 
@@ -760,10 +770,6 @@ class Study:
 
     def __reduce__(self):  # type: ignore[override]
         return (Study.load, (self.path,))
-
-
-# N/deg to N/rad, as the study file's reader converts (bit for bit).
-_DEG_PER_RAD = 180.0 / np.pi
 
 
 def _history(columns: Dict[str, np.ndarray], pandas: Optional[bool]) -> Any:
@@ -966,7 +972,9 @@ def run_shard(
     job: str, path: PathLike, index: int, count: int, out: Optional[PathLike] = None
 ) -> Dict[str, Any]:
     """Shard ``index`` of ``count`` (1-based) of an ``equilibria`` sweep or
-    a ``study``, as ``--shard K/N``: writes ``out/shard-K-of-N.json``."""
+    a ``study``, as ``--shard K/N``: writes ``out/shard-K-of-N.json``. Any
+    other ``job`` raises :class:`OptionsError` naming the known ones (and
+    the nearest: "did you mean")."""
     return json.loads(_handling.run_shard(job, _path(path), index, count, _opt_path(out)))
 
 
@@ -1061,7 +1069,8 @@ def synth(
     as the command line's comma list (``"sensor_delay"``,
     ``"road_bank,sensor_bias"``); ``drive`` one path or a sequence.
     ``duration`` (s) lengthens an analogue programme's runs, as
-    ``--duration``."""
+    ``--duration``: a whole number of seconds from the programme's own
+    total to 3600 s (else :class:`OptionsError`)."""
     return json.loads(
         _handling.synth(
             _path(out), _names(effects, "synth: effects"), seed, truth, programme, _paths(drive), duration

@@ -195,11 +195,23 @@ class StudySample:
     k_rear: float
     """Rear cornering stiffness per tyre, N/rad."""
     metrics: Optional[StepMetrics]
-    """The step-steer metrics (None without a steady state)."""
+    """The step-steer metrics of a handling response; None where
+    ``response`` is no handling response (``study.csv`` leaves that row's
+    cells empty: a sliding car's numbers are not its handling)."""
+    response: Optional[str] = None
+    """``study.csv``'s ``response``: ``"handling"``, ``"sliding"``,
+    ``"unstable"``, ``"large_sideslip"``, ``"not_settled"`` or
+    ``"no_steady_state"``."""
+    note: Optional[str] = None
+    """``study.csv``'s ``note`` on the response: why its metrics are empty,
+    or how far a response still settling has to go; None for a settled
+    handling response."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StudySample":
-        return cls(d["k_front"], d["k_rear"], _metrics(d.get("metrics")))
+        return cls(
+            d["k_front"], d["k_rear"], _metrics(d.get("metrics")), d.get("response"), d.get("note")
+        )
 
     @property
     def k_front_n_per_deg(self) -> float:
@@ -214,7 +226,13 @@ class StudySample:
     def to_dict(self) -> Dict[str, Any]:
         """The sample as the CLI's JSON keys."""
         m = None if self.metrics is None else self.metrics.to_dict()
-        return {"k_front": self.k_front, "k_rear": self.k_rear, "metrics": m}
+        return {
+            "k_front": self.k_front,
+            "k_rear": self.k_rear,
+            "response": self.response,
+            "note": self.note,
+            "metrics": m,
+        }
 
 
 _DEG_PER_RAD = 180.0 / 3.141592653589793

@@ -10,7 +10,9 @@
 //! that is the CPU time of the phase and the phases add up to the wall
 //! time; on several, a call waiting on a nested parallel loop also runs
 //! other phases' work, so the seconds overlap and only their ratios and the
-//! evaluation counts stay meaningful. The evaluations of a fit are told
+//! evaluation counts stay meaningful. Each phase's `cpu_seconds` is the
+//! process's CPU time apportioned by those ratios: they sum to it, and are
+//! an apportionment, not a per-phase clock. The evaluations of a fit are told
 //! apart by their order: a polish ends with the optimum's linearisation,
 //! `1 + n` evaluations for the residuals and the Jacobian, then
 //! `n·(n + 3)/2` for the second derivatives (`n` parameters); a candidate's
@@ -102,8 +104,19 @@ impl Phase {
 pub struct PhaseTime {
     /// The phase.
     pub phase: Phase,
-    /// Seconds spent in it (summed over parallel calls).
+    /// Seconds spent in it: the time between each of its calls' start and
+    /// end, summed over the calls. On several threads the calls overlap (a
+    /// call waiting on a nested parallel loop runs other phases' work
+    /// meanwhile), so these sum past both the wall and the CPU time: their
+    /// shares and the evaluations compare, not the seconds.
     pub seconds: f64,
+    /// The process's CPU time ([`Timing::cpu_seconds`]) apportioned to the
+    /// phase by its share of the phases' [`PhaseTime::seconds`]: these sum
+    /// to the process's CPU time. An apportionment, not a measurement: no
+    /// clock tells a phase's CPU apart where its calls run each other's
+    /// work; on one thread it is the phase's own. None where the CPU time is
+    /// not known.
+    pub cpu_seconds: Option<f64>,
     /// Evaluations of the run set (replays of every run the fit sees).
     pub evaluations: usize,
 }
@@ -184,11 +197,16 @@ impl Recorder {
                 phase: p,
                 seconds: self.nanos[p.index()].load(Ordering::Relaxed) as f64 * 1e-9,
                 evaluations: self.evaluations[p.index()].load(Ordering::Relaxed),
+                cpu_seconds: None,
             })
             .collect();
         let others: f64 = phases.iter().map(|p| p.seconds).sum();
         if let Some(rest) = phases.last_mut() {
             rest.seconds += (wall.as_secs_f64() - others).max(0.0);
+        }
+        let all: f64 = phases.iter().map(|p| p.seconds).sum();
+        for p in &mut phases {
+            p.cpu_seconds = cpu.filter(|_| all > 0.0).map(|c| c * p.seconds / all);
         }
         let cross_validated = self.cross_validated.load(Ordering::Relaxed);
         Timing {

@@ -439,6 +439,7 @@ mod trips_s100_perf40;
 mod trips_s100_words39;
 mod trips_s101_fix31a;
 mod trips_s101_fix41f;
+mod trips_s101_reps40;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

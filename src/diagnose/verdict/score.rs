@@ -366,12 +366,18 @@ impl<'a> Context<'a> {
     /// Levenberg–Marquardt within a budget when that does not converge;
     /// non-converged folds are counted and warned about).
     pub(crate) fn cross_validate(&self, fitted: &Fitted) -> Scored {
-        let full = &self.with_curvature(fitted);
         let s = &fitted.setting;
         if let (Some(rec), false) = (self.timing, s.kinds().is_empty()) {
             rec.candidate(true);
         }
-        let known = self.base_folds(fitted, full);
+        // The base's own folds where they serve: no fold refit, so no
+        // second derivatives to take (`n·(n + 3)/2` replays nothing reads).
+        let known = self.base_folds(fitted, &fitted.full);
+        let full = &if known.is_some() {
+            fitted.full.clone()
+        } else {
+            self.with_curvature(fitted)
+        };
         // Folds in parallel too: a candidate whose fit is slow (a steering
         // compliance solves for the wheel's slip at every force) would
         // otherwise leave one core idle at the end of the singles.

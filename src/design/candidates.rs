@@ -13,6 +13,7 @@ use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::axles::shares;
 use crate::diagnose::model::Augmented;
 use crate::diagnose::{Diagnosis, Ranked};
+use crate::error::Error;
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use serde::Serialize;
@@ -161,6 +162,8 @@ pub struct Fitted {
     /// from off, best held-out first (`verdict.far_from_off`): none is
     /// confounded, and the refusal to design names them to ask for.
     pub noted: Vec<Vec<EffectKind>>,
+    /// Whether the verdict found no significant gap.
+    pub no_gap: bool,
 }
 
 /// A candidate the diagnosis screened out before cross-validating it.
@@ -215,6 +218,7 @@ impl Fitted {
                 })
                 .collect(),
             noted: noted(&d.verdict),
+            no_gap: matches!(d.verdict, crate::diagnose::Verdict::NoSignificantGap(_)),
         }
     }
 
@@ -235,6 +239,21 @@ impl Fitted {
         let mut m = Augmented::new(model, c.friction);
         m.effects_mut().roll = c.roll;
         m
+    }
+
+    /// Refuses a design of a diagnosis that cross-validated no candidate
+    /// (all screened out): whatever `--effects` names has no held-out fit,
+    /// and a list of those it cross-validated would be empty.
+    pub(crate) fn cross_validated_any(&self) -> Result<(), Error> {
+        if !self.candidates.is_empty() {
+            return Ok(());
+        }
+        Err(crate::error::DesignError::NothingCrossValidated {
+            screened: self.screened.len(),
+            screen_percent: self.screened.first().map_or(20.0, |s| s.screen_percent),
+            no_gap: self.no_gap,
+        }
+        .into())
     }
 
     /// The candidate whose effects are `effects` (in any order).

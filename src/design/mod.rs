@@ -205,6 +205,7 @@ fn sets(
     fitted: &Fitted,
     req: &DesignRequest,
 ) -> Result<Vec<(Vec<FittedCandidate>, SetSource)>, Error> {
+    fitted.cross_validated_any()?;
     let (wanted, source) = match &req.sets {
         Some(s) => (s.clone(), SetSource::Requested),
         None => (

@@ -118,6 +118,16 @@ pub enum FitError {
         /// The coefficient, its value and the limit.
         source: super::ParamError,
     },
+    /// Rig data with a lateral force and no slip angle (`alpha` 0 in
+    /// every sample) and no longitudinal sweep to fit instead: every model
+    /// refuses it, as a fit there returns its start values.
+    #[error("{}: `alpha` is 0 throughout its {rows} rows (|alpha| ≤ 1e-3 rad): no lateral slip to fit `fy` to, by any model; a lateral force is fitted from a slip-angle sweep (`alpha` swept past the force's peak, 4° and beyond)", data.display())]
+    NoSlipAngleInFile {
+        /// The rig data.
+        data: PathBuf,
+        /// Its rows (after a lifted wheel's and a standstill's).
+        rows: usize,
+    },
     /// Rig data without lateral data, for a model without a longitudinal
     /// force.
     #[error("{}: no lateral data (columns `alpha` and `fy`), and the {model} model has no longitudinal force", data.display())]
@@ -261,6 +271,18 @@ pub enum DiagnosisError {
         /// The candidates a verdict of no significant gap notes fitted
         /// far from off, best held-out first (`a+b` a combination).
         noted: Vec<String>,
+    },
+    /// A design asked of a diagnosis that cross-validated no candidate
+    /// (each screened out: on a gap within noise every one is), whatever
+    /// `--effects` names: the advice is how to get held-out fits.
+    #[error("the diagnosis cross-validated no candidate{}: it screened {} out before cross-validating (removing less than {screen_percent:.1} % of the gap above noise in sample), so none has a held-out fit to design with, whichever `--effects` are named; for a design, add `screening = false` under `[diagnose]` in the campaign and rerun `handling diagnose` (it then cross-validates every single effect), or drive more or longer runs that show a gap", match no_gap { true => " (its verdict: no significant gap)", false => "" }, match screened { 1 => "its one candidate".to_string(), n => format!("all {n} candidates") })]
+    NothingCrossValidated {
+        /// The candidates screened out.
+        screened: usize,
+        /// The share below which they were screened out, %.
+        screen_percent: f64,
+        /// Whether the verdict found no significant gap.
+        no_gap: bool,
     },
     /// A design asked for a candidate the diagnosis did not fit.
     #[error("the diagnosis did not fit `{candidate}`; it fitted: {}", fitted.join(", "))]

@@ -35,6 +35,18 @@ struct DiagnosisFile {
 struct VerdictFile {
     #[serde(default)]
     far_from_off: Option<FarFile>,
+    #[serde(default)]
+    kind: Option<VerdictKind>,
+}
+
+/// The verdict's kind, as far as the design asks: whether it found no
+/// significant gap (said when nothing was cross-validated).
+#[derive(Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+enum VerdictKind {
+    NoSignificantGap,
+    #[serde(other)]
+    Other,
 }
 
 #[derive(Deserialize)]
@@ -221,6 +233,10 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, Diagnosed), Error> {
                 })
             })
             .collect::<Result<_, Error>>()?,
+        no_gap: f
+            .verdict
+            .as_ref()
+            .is_some_and(|v| v.kind == Some(VerdictKind::NoSignificantGap)),
         noted: match f.verdict.and_then(|v| v.far_from_off) {
             Some(far) => std::iter::once(&far.effects)
                 .chain(far.also.iter().map(|a| &a.effects))

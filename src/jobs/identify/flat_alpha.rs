@@ -6,8 +6,15 @@
 //! throughout (within [`FLAT_ALPHA`]) and longitudinal sweeps present,
 //! the lateral columns are set aside, counted in a warning, and the
 //! longitudinal force is fitted as from a file without them.
+//!
+//! Without longitudinal sweeps such a file is refused by every model
+//! ([`refuse_flat_lateral`]): a lateral fit there moves nothing from its
+//! start (`--model linear` wrote its start stiffness, 50000 N/rad, as
+//! fitted; PAC89 wrote a file at σ 100 %).
 
+use crate::error::{Error, FitError};
 use crate::identify::data::RigData;
+use std::path::Path;
 
 /// The largest |alpha| of a file said to have no lateral slip, rad: the
 /// staged fit's bound of a pure longitudinal row (1e-3 rad, 0.057°).
@@ -38,4 +45,19 @@ pub(super) fn without_flat_lateral(data: RigData) -> (RigData, Option<String>) {
         data.len()
     );
     (view, Some(said))
+}
+
+/// Refuses `data` (read from `file`) whose lateral force has no slip angle
+/// to be fitted against: `alpha` within [`FLAT_ALPHA`] in every row, and
+/// no longitudinal sweep for [`without_flat_lateral`] to fit instead.
+pub(super) fn refuse_flat_lateral(data: &RigData, file: &Path) -> Result<(), Error> {
+    let flat = data.alpha.iter().all(|a| a.abs() <= FLAT_ALPHA);
+    if flat && data.has_lateral() && data.longitudinal.is_none() {
+        return Err(FitError::NoSlipAngleInFile {
+            data: file.to_path_buf(),
+            rows: data.len(),
+        }
+        .into());
+    }
+    Ok(())
 }

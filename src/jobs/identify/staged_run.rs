@@ -33,6 +33,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // Nor is a sample at rest (`standstill.rs`); forces far too small for
     // their loads are warned of as for every model (`force_scale.rs`).
     let (data, moments, at_rest) = super::standstill::without_rest(data, moments);
+    super::flat_alpha::refuse_flat_lateral(&data, &o.data)?;
     let input_warnings = super::force_scale::small_forces(&data);
     let default_speed = template_tyre
         .as_ref()

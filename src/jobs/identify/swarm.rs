@@ -159,6 +159,7 @@ impl SwarmData {
         let (data, lifted) = without_lifted(read);
         // Nor is a sample at rest, for any model (`standstill.rs`).
         let (data, _, at_rest) = super::standstill::without_rest(data, [None, None]);
+        flat_alpha::refuse_flat_lateral(&data, &o.data)?;
         let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
         // Each force is fitted to its pure slip (`identify/pure.rs`).
         let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;

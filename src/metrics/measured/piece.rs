@@ -63,7 +63,13 @@ pub(super) fn measure(
                 }
             }),
     );
-    let (p, holes) = uniform::uniform(filled);
+    // The cleaning counts the whole log's missing rows; the warning the
+    // piece's, beside that count.
+    let log = found
+        .missing_rows
+        .iter()
+        .fold((0, 0), |(s, h), m| (s + m.samples, h + m.holes));
+    let (p, holes) = uniform::uniform(filled, Some(log));
     let every = |c: RunChannel| {
         found
             .held

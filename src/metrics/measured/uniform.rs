@@ -27,15 +27,31 @@ use crate::measured::MeasuredRun;
 /// rate is said to change.
 const CHANGE: f64 = 2.0;
 
-/// The warning of the holes of `t`, none without.
-fn holes_said(t: &[f64], dt: f64) -> Option<String> {
+/// The warning of the holes of the measured piece of times `t`, none
+/// without; `log` the cleaning's count for the whole log (samples, holes),
+/// whose excess over the piece's lies in parts not measured and is said,
+/// so that two counts of one file are not read as one contradicting the
+/// other (30 samples in 29 holes and 29 in 28, one hole in a piece
+/// dropped).
+fn holes_said(t: &[f64], dt: f64, log: Option<(usize, usize)>) -> Option<String> {
     let h = holes(t);
     let longest = h.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
     let missing: usize = h.iter().map(|x| x.2).sum();
+    let plural = crate::format::plural;
+    let outside = match log {
+        Some((samples, count)) if samples > missing && count > h.len() => format!(
+            "; the cleaning's count, {} in {}, is the whole log's, {} of them in {} outside this piece (in parts of the log not measured)",
+            plural(samples, "sample", "samples"),
+            plural(count, "hole", "holes"),
+            samples - missing,
+            plural(count - h.len(), "hole", "holes"),
+        ),
+        _ => String::new(),
+    };
     Some(format!(
-        "the log misses {} in {} in time{} (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics",
-        crate::format::plural(missing, "sample", "samples"),
-        crate::format::plural(h.len(), "hole", "holes"),
+        "in the measured piece the log misses {} in {} in time{} (the longest {} s after t = {} s), too short to split the run: its samples are interpolated linearly across them onto one {} Hz grid for the filter, the windows and the metrics{outside}",
+        plural(missing, "sample", "samples"),
+        plural(h.len(), "hole", "holes"),
         pattern(&h, dt).map_or(String::new(), |(m, every)| format!(
             ", {m} of every {every} rows throughout (rows dropped in a regular pattern, by a logger or an export)"
         )),
@@ -70,8 +86,12 @@ pub(super) fn said(t: &[f64]) -> Option<String> {
 
 /// `p` on a uniform grid at its shortest local interval, where its rate
 /// changes, or at its median interval, where it has holes (and the
-/// warning of them); else `p` itself.
-pub(super) fn uniform(p: MeasuredRun) -> (MeasuredRun, Option<String>) {
+/// warning of them, `log` the whole log's count as [`holes_said`] takes
+/// it); else `p` itself.
+pub(super) fn uniform(
+    p: MeasuredRun,
+    log: Option<(usize, usize)>,
+) -> (MeasuredRun, Option<String>) {
     if p.t.len() < 3 {
         return (p, None);
     }
@@ -81,7 +101,7 @@ pub(super) fn uniform(p: MeasuredRun) -> (MeasuredRun, Option<String>) {
             // The holes' own interval: where every third row is missing
             // the run's median interval is the hole's 0.02 s, not 0.01 s.
             let dt = median(&mut local_intervals(&p.t));
-            match holes_said(&p.t, dt) {
+            match holes_said(&p.t, dt, log) {
                 Some(w) => (dt, Some(w)),
                 None => return (p, None),
             }
@@ -153,7 +173,7 @@ mod tests {
         let h = holes(&t);
         assert_eq!(h.iter().map(|x| x.2).sum::<usize>(), 267);
         assert_eq!(pattern(&h, 0.01), Some((1, 3)));
-        let said = holes_said(&t, 0.01).unwrap();
+        let said = holes_said(&t, 0.01, None).unwrap();
         assert!(
             said.contains("267 samples in 267 holes in time, 1 of every 3 rows"),
             "{said}"
@@ -163,13 +183,34 @@ mod tests {
     }
 
     #[test]
+    fn the_logs_count_beside_the_pieces_says_how_many_lie_outside_it() {
+        // 100 Hz for 4 s, rows at 1 s and 2 s missing: 2 in 2 holes.
+        let t: Vec<f64> = (0..401)
+            .filter(|i| *i != 100 && *i != 200)
+            .map(|i| f64::from(i) / 100.0)
+            .collect();
+        let said = holes_said(&t, 0.01, Some((3, 3))).unwrap();
+        assert!(
+            said.starts_with("in the measured piece the log misses 2 samples in 2 holes"),
+            "{said}"
+        );
+        assert!(
+            said.ends_with("; the cleaning's count, 3 samples in 3 holes, is the whole log's, 1 of them in 1 hole outside this piece (in parts of the log not measured)"),
+            "{said}"
+        );
+        // The same count as the cleaning's: one count, said once.
+        let same = holes_said(&t, 0.01, Some((2, 2))).unwrap();
+        assert!(!same.contains("the cleaning's count"), "{same}");
+    }
+
+    #[test]
     fn a_line_is_resampled_onto_the_finest_grid_exactly() {
         let mut t: Vec<f64> = (0..100).map(|i| f64::from(i) * 0.05).collect();
         t.extend((1..=500).map(|i| 4.95 + f64::from(i) * 0.005));
         let line: Vec<f64> = t.iter().map(|t| 2.0 * t + 1.0).collect();
         let speed = vec![20.0; t.len()];
         let run = MeasuredRun::new("x.csv", t.clone(), speed, line.clone(), line.clone());
-        let u = uniform(run).0;
+        let u = uniform(run, None).0;
         assert_eq!(u.t.len(), 1491);
         for (t, r) in u.t.iter().zip(&u.yaw_rate) {
             assert!((r - (2.0 * t + 1.0)).abs() < 1e-9, "{t} {r}");

@@ -55,12 +55,14 @@ pub(super) fn swept_per_neutral(
         .collect();
     // A run that turns on a steer below 0.01 rad (a radian steer declared
     // in degrees, 57× too small) is judged too, as the held steer's check
-    // judges one: its ratio, far above 1, is the slip.
+    // judges one: its ratio, far above 1, is the slip. Turning is its
+    // neutral steer's 95th percentile from 5 mrad, as there (a 0.02 rad
+    // sine at 80 km/h turns by 8 mrad).
     let mut turning: Vec<f64> = at_speed.iter().map(|&i| q[i].abs()).collect();
     turning.sort_by(f64::total_cmp);
     let turns = turning
         .get(((turning.len() as f64 - 1.0) * 0.95) as usize)
-        .is_some_and(|&n| n >= TURN);
+        .is_some_and(|&n| n >= 0.5 * TURN);
     if p95 < TURN && !(turns && p95 > 0.0) {
         return None;
     }

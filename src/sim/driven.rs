@@ -344,6 +344,19 @@ impl<'a> Driven<'a> {
     }
 }
 
+impl Driven<'_> {
+    /// Whether the rows of an `N`-state run carry the body roll: a replay
+    /// of a measured run always (the diagnosis compares it with a logged
+    /// roll); a manoeuvre only where a roll effect (roll steer, roll
+    /// camber) makes the body roll matter. A tyre lag alone integrates the
+    /// roll state too, but needs no body roll: its history's `ay` is then
+    /// the body frame's, as the diagnosis's lag candidate reads it.
+    fn records_roll<const N: usize>(&self) -> bool {
+        N > 4
+            && (matches!(self.source, Source::Sampled(_)) || self.model.options.effects.uses_roll())
+    }
+}
+
 /// Records the row of grid time `t` from the system's last evaluation.
 fn record<const N: usize>(hist: &mut TimeHistory, sys: &Driven, t: f64, x: &[f64; N]) {
     let (inp, o) = &sys.last;
@@ -352,7 +365,7 @@ fn record<const N: usize>(hist: &mut TimeHistory, sys: &Driven, t: f64, x: &[f64
         yaw_rate: x[1],
     };
     hist.push(t, &state, inp, o);
-    if N > 4 {
+    if sys.records_roll::<N>() {
         hist.roll.push(x[4]);
     }
 }
@@ -365,7 +378,7 @@ fn run_rk4<const N: usize>(
     n: usize,
     x0: [f64; N],
 ) -> TimeHistory {
-    let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
+    let mut hist = TimeHistory::with_capacity(n + 1, sys.records_roll::<N>());
     ode::rk4(sys, t0, h, n, x0, |sys, _, t, x| {
         record(&mut hist, sys, t, x);
         true
@@ -535,7 +548,7 @@ impl Integrator {
         // The integration counts the first n, the rows the next n.
         sys.progress = progress.map(|c| Counted::new(c, t0, self.step, 0));
         let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
-        let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
+        let mut hist = TimeHistory::with_capacity(n + 1, sys.records_roll::<N>());
         // A stalled integration's rows end where it stopped: beyond, the
         // dense output would be its last step's polynomial extrapolated.
         let end = if sol.stats.stalled { sol.end() } else { t1 };

@@ -30,6 +30,8 @@ mod driven;
 pub mod ode;
 mod progress;
 pub mod tangent;
+#[cfg(test)]
+mod trim_tests;
 
 use driven::manoeuvre_inputs;
 pub use driven::{Drive, FixedStep};

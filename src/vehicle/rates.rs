@@ -167,7 +167,11 @@ impl VehicleModel {
     }
 
     /// The full state of a (β, r) state with the extra states at their
-    /// quasi-static values: roll at its steady value for ay = u·r, the lag
+    /// quasi-static values: roll at its steady value for the tyres' ay at
+    /// that state's equilibrium, u·r + g·sin θ (on a road banked by θ the
+    /// tyres hold the bank's pull too, and the roll follows their force:
+    /// a roll taken from u·r alone left a banked straight-running trim
+    /// rolling, and steering through roll steer, before its step), the lag
     /// states at the kinematic slip angles that roll gives.
     pub(crate) fn quasi_static_state(&self, x: &State, inp: &Inputs) -> StateVector {
         let sc = self.scalars(inp.friction);
@@ -186,7 +190,8 @@ impl VehicleModel {
     ) -> [T; 6] {
         let e = &sc.effects;
         let u = speed.max(MIN_SPEED);
-        let phi = e.roll.gradient * u * r;
+        let ay = r * u + self.bank_acceleration_of(sc, 0.0);
+        let phi = e.roll.gradient * ay;
         let steer = [steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
         let (af, ar) = self.kinematic_slip(beta, r, u, steer);
         [beta, r, af, ar, phi, T::from(0.0)]

@@ -41,6 +41,7 @@ use serde::Serialize;
 mod drift;
 mod said;
 mod scan;
+mod shift;
 use said::{verdict, Found, Said};
 pub use scan::scored_from;
 pub use scan::WindowGap;
@@ -100,7 +101,8 @@ pub struct ChannelGap {
     pub input_correlation_lag: f64,
     /// How much later the measurement runs than the simulation, s
     /// (`measured(t) ≈ simulated(t − time_shift)`; negative: it leads);
-    /// `null` where the two correlate below 0.9 at every shift within 1 s.
+    /// `null` where the two correlate below 0.9 at every shift within 1 s,
+    /// or the shift is within 4 of its standard errors (`shift.rs`).
     pub time_shift: Option<f64>,
     /// The sliding window of [`scan::WINDOW`] s with the most evidence of a gap
     /// (`null` on a run shorter than one window).
@@ -258,7 +260,8 @@ pub fn trusted_channel_gap(
     let from = scored_from(rec.start);
     let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
     let bias = scan::bias_test(t, &e, noise_floor, resolved);
-    let time_shift = scan::time_shift(dt, measured, simulated);
+    let time_shift = scan::time_shift(dt, measured, simulated)
+        .filter(|&s| shift::resolved(dt, measured, simulated, s, tau));
     let found = Found {
         whole: significant,
         window: window.as_ref().filter(|w| w.significant),

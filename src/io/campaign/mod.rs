@@ -37,7 +37,7 @@ mod kind;
 mod levelled;
 mod run_checks;
 mod runs;
-mod swept;
+pub(crate) mod swept;
 
 use super::paths::beside;
 use super::rig::read_rig;

@@ -169,9 +169,11 @@ pub(super) fn steer_against_yaw(
     declared: bool,
 ) -> Result<Option<String>, InputError> {
     let Some(y) = yaw_per_neutral(run, wheelbase, min_speed) else {
-        // No held steer: a sweep's steer is judged for a unit slip too.
-        return match super::swept::swept_in_degrees(run, wheelbase, min_speed) {
-            Some((problem, _)) => Err(file_error(&run.path, problem)),
+        // No held steer: a sweep's or a sine's steer is judged for a unit
+        // slip too, either way (a steer in degrees, or one in radians
+        // declared in degrees).
+        return match super::swept::swept_unit_slip(run, wheelbase, min_speed) {
+            Some(problem) => Err(file_error(&run.path, problem)),
             None => Ok(None),
         };
     };

@@ -11,10 +11,12 @@
 //! steer's check takes them. A car's aligned sweep gives 0.3–1 (its
 //! understeer, and the gain's fall with frequency: round 19's 80 km/h
 //! sweep 0.54 in radians); a steer in degrees 57× less (0.0095), a
-//! steering-wheel angle 15× less. The median is judged by
-//! [`steer_problem`] as a held steer's is: below
-//! [`crate::metrics::measured::STEER_IN_DEGREES`] (0.1) the run is refused
-//! with its words. ISO 8855 signs; SI, rad, s.
+//! steering-wheel angle 15× less; a steer in radians declared in degrees
+//! 57× more. The median is judged by [`steer_problem`] as a held steer's
+//! is: below [`crate::metrics::measured::STEER_IN_DEGREES`] (0.1) or above
+//! [`crate::metrics::measured::YAW_ABOVE_STEER`] (5) the run is refused
+//! with its words (`diagnose` and a replay alike). ISO 8855 signs; SI,
+//! rad, s.
 
 use crate::error::InputProblem;
 use crate::measured::MeasuredRun;
@@ -32,7 +34,8 @@ const MIN_SAMPLES: usize = 50;
 
 /// The ratio a run whose steer is never held gives (the module's rule), as the held steer's check gives its own: `None`
 /// where the run holds a steer (that check judges it), barely steers
-/// (95th percentile below [`TURN`]) or has too few samples.
+/// (95th percentile below [`TURN`]) while it barely turns (the neutral
+/// steer's likewise) or has too few samples.
 pub(super) fn swept_per_neutral(
     run: &MeasuredRun,
     wheelbase: f64,
@@ -47,12 +50,22 @@ pub(super) fn swept_per_neutral(
     let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
     size.sort_by(f64::total_cmp);
     let p95 = *size.get(((size.len() as f64 - 1.0) * 0.95) as usize)?;
-    if p95 < TURN {
-        return None;
-    }
     let q: Vec<f64> = (0..run.t.len())
         .map(|i| neutral_steer(run.yaw_rate[i], wheelbase, run.speed[i].max(1e-9)))
         .collect();
+    // A run that turns on a steer below 0.01 rad (a radian steer declared
+    // in degrees, 57× too small) is judged too, as the held steer's check
+    // judges one: its ratio, far above 1, is the slip. Turning is its
+    // neutral steer's 95th percentile from 5 mrad, as there (a 0.02 rad
+    // sine at 80 km/h turns by 8 mrad).
+    let mut turning: Vec<f64> = at_speed.iter().map(|&i| q[i].abs()).collect();
+    turning.sort_by(f64::total_cmp);
+    let turns = turning
+        .get(((turning.len() as f64 - 1.0) * 0.95) as usize)
+        .is_some_and(|&n| n >= 0.5 * TURN);
+    if p95 < TURN && !(turns && p95 > 0.0) {
+        return None;
+    }
     let lag = best_lag(&run.t, &run.steer, &q, &at_speed);
     let (mut ratio, mut with, mut against) = (Vec::new(), 0usize, 0usize);
     for &i in at_speed
@@ -106,18 +119,33 @@ fn best_lag(t: &[f64], steer: &[f64], q: &[f64], at: &[usize]) -> usize {
         .map_or(0, |(k, _)| k)
 }
 
+/// A never-held steer's unit slip: far larger than its yaw rate (in
+/// degrees, or a steering-wheel angle: [`InputProblem::SteerAboveYaw`]) or
+/// far smaller (a steer in radians declared in degrees, 57× too small:
+/// [`InputProblem::YawAboveSteer`]), as the held steer's check words them;
+/// else `None` (a sweep's other readings are not judged: its lag-aligned
+/// ratio is checked for the unit slip only).
+pub(crate) fn swept_unit_slip(
+    run: &MeasuredRun,
+    wheelbase: f64,
+    min_speed: f64,
+) -> Option<InputProblem> {
+    let y = swept_per_neutral(run, wheelbase, min_speed)?;
+    match steer_problem(&y, Wheelbase::Known(wheelbase))? {
+        p @ (InputProblem::SteerAboveYaw { .. } | InputProblem::YawAboveSteer { .. }) => Some(p),
+        _ => None,
+    }
+}
+
 /// A never-held steer far larger than its yaw rate (in degrees, or a
 /// steering-wheel angle): the held steer's refusal
-/// ([`InputProblem::SteerAboveYaw`]) and the median, else `None` (a
-/// sweep's other readings are not judged: its lag-aligned ratio is
-/// checked for the unit slip only).
+/// ([`InputProblem::SteerAboveYaw`]) and the median, else `None`.
 pub(super) fn swept_in_degrees(
     run: &MeasuredRun,
     wheelbase: f64,
     min_speed: f64,
 ) -> Option<(InputProblem, f64)> {
-    let y = swept_per_neutral(run, wheelbase, min_speed)?;
-    match steer_problem(&y, Wheelbase::Known(wheelbase))? {
+    match swept_unit_slip(run, wheelbase, min_speed)? {
         p @ InputProblem::SteerAboveYaw { median, .. } => Some((p, median)),
         _ => None,
     }

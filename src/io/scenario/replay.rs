@@ -68,25 +68,22 @@ pub(super) fn resolve(
     if let Some(p) = dead_steer(&read, wheelbase, r.min_speed) {
         return Err(InputError::problem(run_path, p));
     }
-    if let Some(y) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
-        let problem = steer_problem(&y, Wheelbase::Known(wheelbase));
-        if let Some(e) = problem.as_ref().and_then(|p| declared_wrong(src, r, p)) {
+    if let Some(problem) = unit_problem(&read, wheelbase, r.min_speed) {
+        if let Some(e) = declared_wrong(src, r, &problem) {
             return Err(e);
         }
-        match problem {
-            Some(InputProblem::SteerAboveYaw {
-                median, samples, ..
-            }) => {
-                let p = ReplayRunProblem::SteerAboveYaw {
-                    run: r.run.display().to_string().into(),
-                    median,
-                    samples,
-                };
-                return Err(at_key(src, "manoeuvre.run", p));
-            }
-            Some(p) => return Err(InputError::problem(run_path, p)),
-            None => {}
+        if let InputProblem::SteerAboveYaw {
+            median, samples, ..
+        } = problem
+        {
+            let p = ReplayRunProblem::SteerAboveYaw {
+                run: r.run.display().to_string().into(),
+                median,
+                samples,
+            };
+            return Err(at_key(src, "manoeuvre.run", p));
         }
+        return Err(InputError::problem(run_path, problem));
     }
     let top = read.speed.iter().copied().fold(0.0, f64::max);
     let run = replayed_piece(read, &settings, &mut cleaning).ok_or_else(|| {
@@ -127,6 +124,19 @@ pub(super) fn resolve(
         run,
         cleaning,
     })
+}
+
+/// The run's steer judged against its yaw rate: where it holds a steer
+/// ([`yaw_per_neutral`], [`steer_problem`]), else (a sine, a sweep) for a
+/// unit slip either way on the lag-aligned ratio
+/// ([`crate::io::campaign::swept::swept_unit_slip`]), as `diagnose` judges
+/// a campaign's runs: a sine's steer in radians declared in degrees was
+/// replayed 57× too large without a word.
+fn unit_problem(read: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<InputProblem> {
+    match yaw_per_neutral(read, wheelbase, min_speed) {
+        Some(y) => steer_problem(&y, Wheelbase::Known(wheelbase)),
+        None => crate::io::campaign::swept::swept_unit_slip(read, wheelbase, min_speed),
+    }
 }
 
 /// `p` at the scenario's key `key`.

@@ -1,0 +1,134 @@
+//! A trimmed step steer starts from straight running in every state: on a
+//! banked road the tyres hold the bank's pull, the body rolls to that
+//! force, roll steer and roll camber steer by that roll, and a tyre lag's
+//! states sit at the slip angles it gives. With the trim's steer and
+//! sideslip and the quasi-static extra states, every derivative vanishes
+//! and the run holds its initial state until the step (round 31: the roll
+//! was taken from u·r alone, so a banked trim rolled and yawed before it).
+
+use super::{Integrator, Method};
+use crate::manoeuvre::{Manoeuvre, StepSteer};
+use crate::vehicle::{Inputs, LoadTransferSeed, State, VehicleModel};
+
+/// The linear sedan on a road banked 0.05 rad with the effects `f` sets.
+fn banked(f: impl Fn(&mut VehicleModel)) -> VehicleModel {
+    let mut m = crate::vehicle::linear_bicycle();
+    m.options.effects.road_bank = 0.05;
+    f(&mut m);
+    m
+}
+
+/// The effect combinations the round-31 tester ran on a bank, and more.
+fn combinations() -> Vec<(&'static str, VehicleModel)> {
+    vec![
+        (
+            "roll steer",
+            banked(|m| m.options.effects.roll_steer = [0.1, 0.0]),
+        ),
+        (
+            "roll steer, lag, aero",
+            banked(|m| {
+                let e = &mut m.options.effects;
+                (e.roll_steer, e.relaxation_length, e.aero_load) = ([0.1, -0.05], 0.4, [0.5, 0.7]);
+            }),
+        ),
+        (
+            "lag alone",
+            banked(|m| m.options.effects.relaxation_length = 0.5),
+        ),
+        (
+            "roll camber, aero",
+            banked(|m| {
+                let e = &mut m.options.effects;
+                (e.roll_camber, e.aero_load) = ([0.5, 0.5], [0.5, 0.7]);
+            }),
+        ),
+    ]
+}
+
+const SPEED: f64 = 22.2222;
+
+#[test]
+fn a_banked_trim_is_an_equilibrium_of_every_state() {
+    for (name, m) in combinations() {
+        let trim = m.straight_running(SPEED, 1.0).unwrap();
+        let x = State {
+            beta: trim.beta,
+            yaw_rate: trim.yaw_rate,
+        };
+        let inp = Inputs::steady(trim.steer, SPEED, 1.0);
+        let x0 = m.state_vector(&x, &inp);
+        let mut seed = LoadTransferSeed::default();
+        let (dx, _) = m.rates(&x0, &inp, &mut seed, 1e-13);
+        let worst = dx.iter().fold(0.0f64, |w, d| w.max(d.abs()));
+        assert!(worst < 1e-9, "{name}: max |dx/dt| = {worst:e} at {x0:?}");
+        // The body rolls on the bank, as the tyres' force makes it.
+        let k = m.options.effects.roll.gradient;
+        let hold = 9.80665 * 0.05f64.sin();
+        assert!((x0[4] - k * hold).abs() < 1e-12, "{name}: roll {}", x0[4]);
+    }
+}
+
+#[test]
+fn a_banked_trimmed_step_holds_its_state_until_the_step() {
+    for (name, m) in combinations() {
+        let trim = m.straight_running(SPEED, 1.0).unwrap();
+        let step = Manoeuvre::StepSteer(StepSteer {
+            speed: SPEED,
+            amplitude: 0.0174533,
+            trim: trim.steer,
+            start: 1.0,
+            rise_time: 0.1,
+            end: 2.0,
+        });
+        for method in [Method::Rk4, Method::default()] {
+            let integrator = Integrator {
+                method,
+                ..Integrator::default()
+            };
+            let x0 = State {
+                beta: trim.beta,
+                yaw_rate: 0.0,
+            };
+            let h = integrator.simulate(&m, &step, x0).history;
+            let before = h.t.iter().take_while(|&&t| t < 0.99).count();
+            let r = h.yaw_rate[..before]
+                .iter()
+                .fold(0.0f64, |w, r| w.max(r.abs()));
+            assert!(
+                r < 1e-9,
+                "{name}, {method:?}: yaw rate {r:e} before the step"
+            );
+            let beta = h.beta[..before]
+                .iter()
+                .fold(0.0f64, |w, b| w.max((b - trim.beta).abs()));
+            assert!(beta < 1e-9, "{name}, {method:?}: sideslip moved {beta:e}");
+        }
+    }
+}
+
+#[test]
+fn only_a_roll_effect_records_the_roll() {
+    // A tyre lag alone integrates the roll state but needs no body roll:
+    // its rows carry none, so its `ay` is the body frame's.
+    let lag = banked(|m| m.options.effects.relaxation_length = 0.5);
+    let rolls = banked(|m| m.options.effects.roll_steer = [0.1, 0.0]);
+    let step = Manoeuvre::StepSteer(StepSteer {
+        speed: SPEED,
+        amplitude: 0.01,
+        trim: 0.0,
+        start: 0.5,
+        rise_time: 0.1,
+        end: 1.0,
+    });
+    let x0 = State::default();
+    for method in [Method::Rk4, Method::default()] {
+        let integrator = Integrator {
+            method,
+            ..Integrator::default()
+        };
+        assert!(integrator.simulate(&lag, &step, x0).history.roll.is_empty());
+        let h = integrator.simulate(&rolls, &step, x0).history;
+        assert_eq!(h.roll.len(), h.t.len());
+    }
+}

@@ -1,6 +1,8 @@
 //! Sample statistics the crate's checks share: the centred sums of a pair of
 //! series, their Pearson correlation and the least-squares slope of one on
-//! the other. Dimensionless; a series' units cancel in the correlation.
+//! the other; the least-squares parabola through a window of samples (a
+//! smoothed derivative's, a curvature's). Dimensionless; a series' units
+//! cancel in the correlation.
 //!
 //! Sums, not the correlation alone, are what is kept: runs judged one by one
 //! pool by adding their sums (each centred on its own means, so an offset
@@ -74,9 +76,76 @@ pub fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
+/// The least-squares parabola `y ≈ c0 + c1·x + c2·x²` through the pairs
+/// `(x, y)`: its coefficients and how many pairs it went through, from the
+/// normal equations (sums of `x^k` and of `y·x^k`); None where they are
+/// singular (fewer than three distinct `x`). Callers centre `x` on the
+/// point they read and scale it by their window's span, which keeps the
+/// sums of `x⁴` conditioned.
+pub fn least_squares_parabola(
+    points: impl IntoIterator<Item = (f64, f64)>,
+) -> Option<([f64; 3], usize)> {
+    let mut p = [0.0; 5];
+    let mut q = [0.0; 3];
+    let mut n = 0;
+    for (x, y) in points {
+        let mut xk = 1.0;
+        for (j, pj) in p.iter_mut().enumerate() {
+            *pj += xk;
+            if j < 3 {
+                q[j] += xk * y;
+            }
+            xk *= x;
+        }
+        n += 1;
+    }
+    let a = [[p[0], p[1], p[2]], [p[1], p[2], p[3]], [p[2], p[3], p[4]]];
+    solve3(a, q).map(|c| (c, n))
+}
+
+/// The solution of the 3×3 system `a·x = b` by Cramer's rule, None when
+/// `a` is singular against its largest entry.
+fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+    let det = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(a);
+    let scale = a.iter().flatten().fold(0.0_f64, |s, x| s.max(x.abs()));
+    if !d.is_finite() || d.abs() <= 1e-12 * scale.powi(3) {
+        return None;
+    }
+    let mut x = [0.0; 3];
+    for (j, xj) in x.iter_mut().enumerate() {
+        let mut m = a;
+        for i in 0..3 {
+            m[i][j] = b[i];
+        }
+        *xj = det(m) / d;
+    }
+    Some(x)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_parabola_is_recovered_exactly_and_two_distinct_abscissae_fix_none() {
+        // y = 0.3 − 1.2·x + 2.5·x² at uneven x in [−1, 1].
+        let x = [-1.0, -0.55, -0.1, 0.2, 0.65, 1.0];
+        let pts = x.map(|x| (x, 0.3 - 1.2 * x + 2.5 * x * x));
+        let (c, n) = least_squares_parabola(pts).unwrap();
+        assert_eq!(n, 6);
+        for (got, want) in c.iter().zip([0.3, -1.2, 2.5]) {
+            assert!((got - want).abs() < 1e-13, "{c:?}");
+        }
+        assert_eq!(
+            least_squares_parabola([(0.0, 1.0), (1.0, 2.0), (1.0, 3.0)]),
+            None
+        );
+    }
 
     #[test]
     fn a_line_correlates_fully_and_its_mirror_against() {

@@ -38,6 +38,7 @@
 //!   constant acceleration, a linear change of it).
 
 use super::MeasuredRun;
+use crate::stats::least_squares_parabola;
 
 /// Width of the local fit of [`speed_derivative`], s.
 pub(crate) const SPEED_DERIVATIVE_WINDOW: f64 = 0.5;
@@ -128,51 +129,16 @@ fn local_slope(t: &[f64], u: &[f64], t0: f64, u0: f64) -> f64 {
     if m == 2 {
         return (u[1] - u[0]) / span;
     }
-    // Normal equations of y = c0 + c1·s + c2·s², s = (t − t0)/span.
-    let mut p = [0.0; 5];
-    let mut q = [0.0; 3];
-    for (&ti, &ui) in t.iter().zip(u) {
-        let s = (ti - t0) / span;
-        let y = ui - u0;
-        let mut sk = 1.0;
-        for (j, pj) in p.iter_mut().enumerate() {
-            *pj += sk;
-            if j < 3 {
-                q[j] += sk * y;
-            }
-            sk *= s;
-        }
-    }
-    let a = [[p[0], p[1], p[2]], [p[1], p[2], p[3]], [p[2], p[3], p[4]]];
-    match solve3(a, q) {
-        Some(c) => c[1] / span,
+    // y = c0 + c1·s + c2·s², s = (t − t0)/span.
+    let points = t
+        .iter()
+        .zip(u)
+        .map(|(&ti, &ui)| ((ti - t0) / span, ui - u0));
+    match least_squares_parabola(points) {
+        Some((c, _)) => c[1] / span,
         // Degenerate times (all equal): no slope to be had.
         None => 0.0,
     }
-}
-
-/// The solution of the 3×3 system `a·x = b` by Cramer's rule, None when
-/// `a` is singular.
-fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
-    let det = |m: [[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det(a);
-    let scale = a.iter().flatten().fold(0.0_f64, |s, x| s.max(x.abs()));
-    if !d.is_finite() || d.abs() <= 1e-12 * scale.powi(3) {
-        return None;
-    }
-    let mut x = [0.0; 3];
-    for (j, xj) in x.iter_mut().enumerate() {
-        let mut m = a;
-        for i in 0..3 {
-            m[i][j] = b[i];
-        }
-        *xj = det(m) / d;
-    }
-    Some(x)
 }
 
 #[cfg(test)]

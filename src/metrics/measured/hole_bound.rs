@@ -14,6 +14,8 @@
 //! about 0.01 % of the step, where the noise was 1.4 %, and withholding the
 //! peak for it threw a measured overshoot away. Units: s, rad/s, rad/s³.
 
+use crate::stats::least_squares_parabola;
+
 /// Fewest samples a parabola is fitted to: three fix it, two more give
 /// the noise a margin.
 const MIN_SAMPLES: usize = 5;
@@ -35,47 +37,17 @@ pub(super) fn interpolation_bound(
 }
 
 /// The second derivative, rad/s³, of the least-squares parabola through
-/// the finite samples of `r` at times `t` within `[lo, hi]`, about `mid`.
+/// the finite samples of `r` at times `t` within `[lo, hi]`, about `mid`
+/// (time scaled by the window's half-width for the sums' conditioning).
 fn curvature(t: &[f64], r: &[f64], lo: f64, hi: f64, mid: f64) -> Option<f64> {
-    // Normal equations of r ≈ a + b·x + c·x², x = t − mid: sums of x^k and
-    // of r·x^k.
-    let mut s = [0.0_f64; 5];
-    let mut q = [0.0_f64; 3];
-    let mut n = 0;
-    for (ti, ri) in t.iter().zip(r) {
-        if *ti < lo || *ti > hi || !ri.is_finite() {
-            continue;
-        }
-        let x = ti - mid;
-        let mut p = 1.0;
-        for (k, sk) in s.iter_mut().enumerate() {
-            *sk += p;
-            if k < 3 {
-                q[k] += ri * p;
-            }
-            p *= x;
-        }
-        n += 1;
-    }
-    if n < MIN_SAMPLES {
-        return None;
-    }
-    let m = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
-    let det = |m: &[[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det(&m);
-    if d == 0.0 || !d.is_finite() {
-        return None;
-    }
-    // Cramer's rule for c: the third column replaced by q.
-    let mut mc = m;
-    for (row, qk) in mc.iter_mut().zip(q) {
-        row[2] = qk;
-    }
-    Some(2.0 * det(&mc) / d)
+    let w = (0.5 * (hi - lo)).max(f64::MIN_POSITIVE);
+    let points = t
+        .iter()
+        .zip(r)
+        .filter(|(ti, ri)| !(**ti < lo || **ti > hi) && ri.is_finite())
+        .map(|(ti, ri)| ((ti - mid) / w, *ri));
+    let (c, n) = least_squares_parabola(points)?;
+    (n >= MIN_SAMPLES).then(|| 2.0 * c[2] / (w * w))
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! The shape of the source tree, checked: no import cycle between files, no
 //! module importing one of its own or a higher layer (the order is
-//! [`LAYERS`]), no source file over the size a reader can hold, and no
+//! [`LAYERS`]), no source file or function over the size a reader can hold, and no
 //! internal label or path outside the repository in the project's text.
 //!
 //! The import graph is read from the text of `src/`: every `crate::`,
@@ -466,18 +466,18 @@ fn source_files_stay_readable() {
 }
 
 /// The functions of `code` longer than `limit` lines, as `name (N
-/// lines)`: from a line opening a `fn` to the line that closes it at the
-/// same indentation (rustfmt's layout).
+/// lines)`: from a line opening a `fn` (under any visibility and
+/// qualifiers: `pub(super) const unsafe fn`) to the line that closes it at
+/// the same indentation (rustfmt's layout).
 fn long_functions(code: &str, limit: usize) -> Vec<String> {
     let lines: Vec<&str> = code.lines().collect();
     let mut out = Vec::new();
     for (i, l) in lines.iter().enumerate() {
         let body = l.trim_start();
         let indent = &l[..l.len() - body.len()];
-        let head = ["pub(crate) fn ", "pub fn ", "fn "]
-            .iter()
-            .find_map(|k| body.strip_prefix(k));
-        let Some(head) = head else { continue };
+        let Some(head) = fn_name_start(body) else {
+            continue;
+        };
         // A signature without a body (a trait's), or a body on its one
         // line, has nothing to count.
         if body.ends_with(';') || body.ends_with('}') {
@@ -499,19 +499,95 @@ fn long_functions(code: &str, limit: usize) -> Vec<String> {
     out
 }
 
+/// What follows `fn ` on a line that opens a function, past its visibility
+/// (`pub`, `pub(crate)`, `pub(super)`, `pub(in path)`) and qualifiers
+/// (`const`, `async`, `unsafe`, `extern "C"`); `None` on any other line.
+fn fn_name_start(line: &str) -> Option<&str> {
+    let mut rest = line;
+    if let Some(r) = rest.strip_prefix("pub") {
+        rest = match r.strip_prefix('(') {
+            Some(inner) => inner.split_once(')')?.1,
+            None => r,
+        }
+        .strip_prefix(' ')?;
+    }
+    loop {
+        if let Some(r) = rest.strip_prefix("fn ") {
+            return Some(r);
+        }
+        let word = ["const ", "async ", "unsafe ", "extern "]
+            .iter()
+            .find_map(|k| rest.strip_prefix(k))?;
+        rest = match word.strip_prefix('"') {
+            Some(abi) => abi.split_once("\" ")?.1,
+            None => word,
+        };
+    }
+}
+
+/// The long functions of every `.rs` file under `dir`, as `file::name (N
+/// lines)` with `file` relative to `dir`.
+fn long_functions_under(dir: &Path, limit: usize) -> Vec<String> {
+    let mut files = Vec::new();
+    files_under(dir, &[".rs"], &mut files);
+    files.sort();
+    let mut long = Vec::new();
+    for p in &files {
+        let rel = p
+            .strip_prefix(dir)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        for f in long_functions(&fs::read_to_string(p).unwrap(), limit) {
+            long.push(format!("{rel}::{f}"));
+        }
+    }
+    long
+}
+
 /// The Python extension's functions stay under the guide's 80 lines
 /// (`python/src/errors.rs`'s conversion of every error kind was 122).
 #[test]
 fn python_extension_functions_stay_readable() {
-    let mut long = Vec::new();
-    for p in modules(&python_src()).values() {
-        for f in long_functions(&fs::read_to_string(p).unwrap(), 80) {
-            long.push(format!("{}: {f}", p.display()));
-        }
-    }
+    let long = long_functions_under(&python_src(), 80);
     assert!(
         long.is_empty(),
         "functions over 80 lines:\n{}",
+        long.join("\n")
+    );
+}
+
+/// Long functions of `src/` that other branches of this session split:
+/// skipped here until their branches land. TEMPORARY: the lead empties
+/// this list (and deletes it) at merge, when those splits are on main.
+const SPLIT_ON_OTHER_BRANCHES: &[&str] = &[
+    "diagnose/fit/mod.rs::fit_with",
+    "diagnose/fit/refit.rs::descend",
+    "diagnose/pipeline.rs::run",
+    "diagnose/report/gap.rs::band_gaps_above",
+    "diagnose/report/gap.rs::trusted_channel_gap",
+    "diagnose/report/summary.rs::gap_summary",
+    "diagnose/verdict/search.rs::search",
+    "jobs/identify/figures.rs::panel",
+    "jobs/identify/staged_figure.rs::panel",
+    "jobs/identify/staged_figure_tests.rs::the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points",
+    "jobs/identify/swarm.rs::run_swarm",
+];
+
+/// The library's and the binary's functions (tests included) stay under
+/// the guide's 80 lines: a reader holds one on a screen.
+#[test]
+fn source_functions_stay_readable() {
+    let long: Vec<String> = long_functions_under(&src(), 80)
+        .into_iter()
+        .filter(|f| {
+            let key = f.split(" (").next().unwrap();
+            !SPLIT_ON_OTHER_BRANCHES.contains(&key)
+        })
+        .collect();
+    assert!(
+        long.is_empty(),
+        "functions over 80 lines (split them into named steps):\n{}",
         long.join("\n")
     );
 }
@@ -522,6 +598,17 @@ fn the_length_check_counts_a_function_to_its_closing_brace() {
     let code = format!("fn short() {{\n}}\n\nimpl A {{\n    fn long() {{\n{body}    }}\n}}\n");
     assert_eq!(long_functions(&code, 80), ["long (81 lines)"]);
     assert!(long_functions(&code, 81).is_empty());
+    for head in [
+        "pub(super) fn long() {",
+        "pub(in crate::a) const fn long() {",
+        "pub async unsafe fn long() {",
+        "extern \"C\" fn long() {",
+    ] {
+        let code = format!("{head}\n{body}}}\n");
+        assert_eq!(long_functions(&code, 80), ["long (81 lines)"], "{head}");
+    }
+    assert_eq!(fn_name_start("let fn_x = 1;"), None);
+    assert_eq!(fn_name_start("public fn x() {"), None);
 }
 
 /// The modules a file declares under `#[cfg(test)]` (`mod tests;`).

@@ -69,23 +69,7 @@ impl VehicleModel {
         let (a, b) = (v.a, v.b);
         let r = x.yaw_rate;
         let (af, ar) = self.slip_angles(x, inp);
-        // Slip-angle partials [∂/∂β, ∂/∂r].
-        let (daf, dar, sec2, vy) = match self.options.kinematics {
-            Kinematics::Exact => {
-                let tb = x.beta.tan();
-                let vy = u * tb;
-                let sec2 = 1.0 + tb * tb;
-                let (pf, pr) = ((vy + a * r) / u, (vy - b * r) / u);
-                let (wf, wr) = (1.0 / (1.0 + pf * pf), 1.0 / (1.0 + pr * pr));
-                (
-                    [-wf * sec2, -wf * a / u],
-                    [-wr * sec2, wr * b / u],
-                    sec2,
-                    vy,
-                )
-            }
-            Kinematics::SmallAngle => ([-1.0, -a / u], [-1.0, b / u], 1.0, 0.0),
-        };
+        let (daf, dar, sec2, vy) = slip_partials(self.options.kinematics, x.beta, r, u, a, b);
         let split = self.load_split(u);
         let ay_eq = u * r + self.bank_acceleration();
         let fz = split.at(ay_eq);
@@ -135,5 +119,38 @@ impl VehicleModel {
             Kinematics::SmallAngle => (ay_path / u - r, [day[0] / u, day[1] / u - 1.0]),
         };
         ([beta_rate, yaw], [dbeta, dyaw])
+    }
+}
+
+/// The slip angles' partials `[∂/∂β, ∂/∂r]` (front, rear) at sideslip
+/// `beta` (rad), yaw rate `r` (rad/s) and speed `u` (m/s) with the axles at
+/// `a`, `b` (m) from the centre of mass, with sec²β and the lateral
+/// velocity (m/s) the sideslip rate's partials reuse (1 and 0 in small
+/// angles). Apart from [`VehicleModel::equilibrium_residual`] so that it reads on a
+/// screen; inlined, on fixed arrays, so the Newton loop is what it was.
+#[inline]
+fn slip_partials(
+    kinematics: Kinematics,
+    beta: f64,
+    r: f64,
+    u: f64,
+    a: f64,
+    b: f64,
+) -> ([f64; 2], [f64; 2], f64, f64) {
+    match kinematics {
+        Kinematics::Exact => {
+            let tb = beta.tan();
+            let vy = u * tb;
+            let sec2 = 1.0 + tb * tb;
+            let (pf, pr) = ((vy + a * r) / u, (vy - b * r) / u);
+            let (wf, wr) = (1.0 / (1.0 + pf * pf), 1.0 / (1.0 + pr * pr));
+            (
+                [-wf * sec2, -wf * a / u],
+                [-wr * sec2, wr * b / u],
+                sec2,
+                vy,
+            )
+        }
+        Kinematics::SmallAngle => ([-1.0, -a / u], [-1.0, b / u], 1.0, 0.0),
     }
 }

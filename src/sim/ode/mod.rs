@@ -341,14 +341,7 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
         segments: Vec::with_capacity(64),
         stats: Stats::default(),
     };
-    let mut cuts: Vec<f64> = breakpoints
-        .iter()
-        .copied()
-        .filter(|b| *b > t_start && *b < t_end)
-        .collect();
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    cuts.push(t_end);
+    let cuts = stops(breakpoints, t_start, t_end);
     let (mut t, mut x) = (t_start, x0);
     let mut h = 0.0;
     let budget = step_budget(t_end - t_start, tol);
@@ -376,26 +369,14 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
             if last {
                 h = remaining;
             }
-            let mut stage = |j: usize, t: f64, x: &[f64; N]| {
-                sys.dopri5_stage(j);
-                sys.derivatives(t, x)
-            };
-            let k2 = stage(1, t + C[1] * h, &combine(&x, h, &[k1], &A2));
-            let k3 = stage(2, t + C[2] * h, &combine(&x, h, &[k1, k2], &A3));
-            let k4 = stage(3, t + C[3] * h, &combine(&x, h, &[k1, k2, k3], &A4));
-            let k5 = stage(4, t + C[4] * h, &combine(&x, h, &[k1, k2, k3, k4], &A5));
             // A step that ends on a breakpoint sees the input's left limit
             // there (an ideal step steer acts from the next step on).
             let t_new = if last { stop } else { t + h };
             let t_right = if last { stop.next_down() } else { t_new };
-            let k6 = stage(5, t_right, &combine(&x, h, &[k1, k2, k3, k4, k5], &A6));
-            let x_new = combine(&x, h, &[k1, k2, k3, k4, k5, k6], &B);
-            let k7 = stage(6, t_right, &x_new);
+            let (ks, x_new) = dopri5_stages(sys, t, &x, h, k1, t_right);
+            let k7 = ks[6];
             sol.stats.evaluations += 6;
-            let ks = [k1, k2, k3, k4, k5, k6, k7];
-            let e: [f64; N] =
-                std::array::from_fn(|i| h * ks.iter().zip(&E).map(|(k, w)| w * k[i]).sum::<f64>());
-            let err = rms_norm(&e, &x, &x_new, tol);
+            let err = step_error(h, &ks, &x, &x_new, tol);
             if !err.is_finite() {
                 h *= 0.1;
                 sol.stats.rejected += 1;
@@ -411,21 +392,8 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
                     h_new = h_new.min(h);
                 }
                 err_old = err.max(1e-4);
-                let dx: [f64; N] = std::array::from_fn(|i| x_new[i] - x[i]);
-                let bspl: [f64; N] = std::array::from_fn(|i| h * k1[i] - dx[i]);
-                sol.segments.push(Segment {
-                    t0: t,
-                    h: t_new - t,
-                    r: [
-                        x,
-                        dx,
-                        bspl,
-                        std::array::from_fn(|i| dx[i] - h * k7[i] - bspl[i]),
-                        std::array::from_fn(|i| {
-                            h * ks.iter().zip(&D).map(|(k, w)| w * k[i]).sum::<f64>()
-                        }),
-                    ],
-                });
+                sol.segments
+                    .push(dense_segment(t, t_new, h, &x, &x_new, &ks));
                 sol.stats.accepted += 1;
                 (t, x, k1) = (t_new, x_new, k7);
                 if !last {
@@ -440,6 +408,91 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
         }
     }
     sol
+}
+/// The ends of the integration's pieces: the breakpoints strictly inside
+/// `(t_start, t_end)`, sorted and without repeats, then `t_end`. Apart
+/// from [`dopri5`] so that its loop reads on a screen.
+fn stops(breakpoints: &[f64], t_start: f64, t_end: f64) -> Vec<f64> {
+    let mut cuts: Vec<f64> = breakpoints
+        .iter()
+        .copied()
+        .filter(|b| *b > t_start && *b < t_end)
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.push(t_end);
+    cuts
+}
+
+/// One Dormand–Prince step from `(t, x)` with first stage `k1`: the seven
+/// stages and the fifth-order solution at `t + h`, the last two stages
+/// evaluated at `t_right` (the input's left limit at a breakpoint). Apart
+/// from [`dopri5`]'s step-size control so that each reads on a screen;
+/// inlined, on fixed arrays, so the hot loop is what it was.
+#[inline]
+fn dopri5_stages<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t: f64,
+    x: &[f64; N],
+    h: f64,
+    k1: [f64; N],
+    t_right: f64,
+) -> ([[f64; N]; 7], [f64; N]) {
+    let mut stage = |j: usize, t: f64, x: &[f64; N]| {
+        sys.dopri5_stage(j);
+        sys.derivatives(t, x)
+    };
+    let k2 = stage(1, t + C[1] * h, &combine(x, h, &[k1], &A2));
+    let k3 = stage(2, t + C[2] * h, &combine(x, h, &[k1, k2], &A3));
+    let k4 = stage(3, t + C[3] * h, &combine(x, h, &[k1, k2, k3], &A4));
+    let k5 = stage(4, t + C[4] * h, &combine(x, h, &[k1, k2, k3, k4], &A5));
+    let k6 = stage(5, t_right, &combine(x, h, &[k1, k2, k3, k4, k5], &A6));
+    let x_new = combine(x, h, &[k1, k2, k3, k4, k5, k6], &B);
+    let k7 = stage(6, t_right, &x_new);
+    ([k1, k2, k3, k4, k5, k6, k7], x_new)
+}
+
+/// The scaled RMS norm of the step's embedded error estimate (fifth minus
+/// fourth order). Apart from [`dopri5`] so that its loop reads on a screen.
+#[inline]
+fn step_error<const N: usize>(
+    h: f64,
+    ks: &[[f64; N]; 7],
+    x: &[f64; N],
+    x_new: &[f64; N],
+    tol: &Tolerances,
+) -> f64 {
+    let e: [f64; N] =
+        std::array::from_fn(|i| h * ks.iter().zip(&E).map(|(k, w)| w * k[i]).sum::<f64>());
+    rms_norm(&e, x, x_new, tol)
+}
+
+/// The dense-output segment of an accepted step from `(t, x)` to
+/// `(t_new, x_new)` with stages `ks` (Hairer's continuous extension of
+/// order 4). Apart from [`dopri5`] so that its loop reads on a screen.
+#[inline]
+fn dense_segment<const N: usize>(
+    t: f64,
+    t_new: f64,
+    h: f64,
+    x: &[f64; N],
+    x_new: &[f64; N],
+    ks: &[[f64; N]; 7],
+) -> Segment<N> {
+    let (k1, k7) = (&ks[0], &ks[6]);
+    let dx: [f64; N] = std::array::from_fn(|i| x_new[i] - x[i]);
+    let bspl: [f64; N] = std::array::from_fn(|i| h * k1[i] - dx[i]);
+    Segment {
+        t0: t,
+        h: t_new - t,
+        r: [
+            *x,
+            dx,
+            bspl,
+            std::array::from_fn(|i| dx[i] - h * k7[i] - bspl[i]),
+            std::array::from_fn(|i| h * ks.iter().zip(&D).map(|(k, w)| w * k[i]).sum::<f64>()),
+        ],
+    }
 }
 
 /// Hairer's starting step: small enough that an explicit Euler step's

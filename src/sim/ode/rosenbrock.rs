@@ -125,30 +125,7 @@ where
             break;
         }
         if i % refresh.max(1) == 0 {
-            sys.w_stage(i, W_PROBE);
-            // The quotients' base is a probe too: a system whose probes
-            // differ from its stages (the vehicle's freeze the wheel loads
-            // that its stages solve for) differences like with like.
-            let base = SVector::<T, N>::from(sys.derivatives(t, &x.into()));
-            for j in 0..N {
-                if !implicit[j] {
-                    continue;
-                }
-                // The states are angles and rates of order 0.01–1: a fixed
-                // relative step well above the load solve's tolerance.
-                let d = if x[j].re().abs() > 1.0 {
-                    num_traits_abs(x[j]) * 1e-7
-                } else {
-                    c(1e-7)
-                };
-                let mut xp = x;
-                xp[j] += d;
-                let fp = SVector::<T, N>::from(sys.derivatives(t, &xp.into()));
-                w.set_column(j, &((fp - base) / d));
-            }
-            inverse = (SMatrix::<T, N, N>::identity() - w * c(h * W_GAMMA))
-                .try_inverse()
-                .unwrap_or_else(|| SMatrix::<T, N, N>::repeat(c(f64::NAN)));
+            inverse = refresh_w(sys, i, t, h, &x, &implicit, &mut w);
         }
         // ∂f/∂t over the step's first part: without it the stiff modes,
         // which follow their inputs quasi-statically, lag them by a share of
@@ -181,6 +158,52 @@ where
         }
     }
     x.into()
+}
+
+/// Step `i`'s refresh of `W`: forward differences at `(t, x)` in the
+/// implicit states' columns (the others keep what they held), and the
+/// returned (I − hγW)⁻¹ (NaN where singular). Apart from
+/// [`rosenbrock_w_dual`] so that its loop reads on a screen; inlined, on
+/// fixed-size matrices, so the hot loop is what it was.
+#[inline]
+fn refresh_w<T, const N: usize, S>(
+    sys: &mut S,
+    i: usize,
+    t: f64,
+    h: f64,
+    x: &SVector<T, N>,
+    implicit: &[bool; N],
+    w: &mut SMatrix<T, N, N>,
+) -> SMatrix<T, N, N>
+where
+    T: DualNum<f64> + Copy + ComplexField,
+    S: DualSystem<T, N>,
+{
+    let c = |v: f64| T::from(v);
+    sys.w_stage(i, W_PROBE);
+    // The quotients' base is a probe too: a system whose probes
+    // differ from its stages (the vehicle's freeze the wheel loads
+    // that its stages solve for) differences like with like.
+    let base = SVector::<T, N>::from(sys.derivatives(t, &(*x).into()));
+    for j in 0..N {
+        if !implicit[j] {
+            continue;
+        }
+        // The states are angles and rates of order 0.01–1: a fixed
+        // relative step well above the load solve's tolerance.
+        let d = if x[j].re().abs() > 1.0 {
+            num_traits_abs(x[j]) * 1e-7
+        } else {
+            c(1e-7)
+        };
+        let mut xp = *x;
+        xp[j] += d;
+        let fp = SVector::<T, N>::from(sys.derivatives(t, &xp.into()));
+        w.set_column(j, &((fp - base) / d));
+    }
+    (SMatrix::<T, N, N>::identity() - *w * c(h * W_GAMMA))
+        .try_inverse()
+        .unwrap_or_else(|| SMatrix::<T, N, N>::repeat(c(f64::NAN)))
 }
 
 /// |x| of a scalar (the `Signed` absolute value every `num-dual` scalar has;

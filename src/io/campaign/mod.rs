@@ -35,6 +35,7 @@ mod degrees;
 mod glob;
 mod kind;
 mod levelled;
+mod rig_model;
 mod run_checks;
 mod runs;
 pub(crate) mod swept;
@@ -55,11 +56,10 @@ use crate::diagnose::model::scale::{
     beyond_signal, signal_rms, stated_of, ESTIMATED, ESTIMATED_REACH, SENSOR_FLOOR,
 };
 use crate::error::{
-    named, BeyondSignal, CampaignFileProblem, CampaignReason, GivenTyres, InputError, InputProblem,
-    Limit, NameKind, OptionsError, ParamError, ParamReason, StagedMagicFormula, TyreSourceError,
+    named, BeyondSignal, CampaignReason, GivenTyres, InputError, InputProblem, Limit, NameKind,
+    OptionsError, ParamError, ParamReason, TyreSourceError,
 };
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
-use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
 use run_checks::file_error;
 pub use runs::RunSpec;
@@ -137,16 +137,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let mut inputs = vec![file.clone()];
     let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
     let prior = axle_prior(&src, f.tyres.as_ref(), &tyres)?;
-    // A `[tyres]` with `front` only runs it on both axles, as a scenario's.
-    let mut folder_notes: Vec<String> = f
-        .tyres
-        .as_ref()
-        .filter(|t| t.file.is_none() && t.front.is_some() && t.rear.is_none() && t.rig.is_none())
-        .map(|_| {
-            "[tyres] gives `front` only: the rear axle runs on the front file too, at its own static load, as a scenario's `rear` defaults to its `front`".to_string()
-        })
-        .into_iter()
-        .collect();
+    let mut folder_notes = front_only_note(f.tyres.as_ref());
     let files = run_files(
         &src,
         f.runs.as_ref(),
@@ -174,32 +165,11 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));
     notes.extend(f.sensors.note());
     if runs.len() < 2 {
-        let stated = src.key_span("diagnose.min_speed");
         let min_speed = f.diagnose.min_speed;
-        if let Some(p) = runs::min_speed_removed(min_speed, stated.is_some(), &top_speeds) {
-            let p = CampaignFileProblem::MinSpeedRemoved(p);
-            return Err(src.located(stated, InputProblem::Campaign(Box::new(p))));
-        }
-        return Err(file_error(
-            &file,
-            InputProblem::TooFewRuns {
-                runs: runs.len(),
-                kept: cleaning.samples_kept,
-                read: cleaning.samples_read,
-                min_speed: f.diagnose.min_speed,
-            },
-        ));
+        let too_few = (runs.len(), &cleaning, &top_speeds[..]);
+        return Err(runs::too_few_runs(&src, &file, min_speed, too_few));
     }
-    // A folder's whole name (`runs_0.05` is not `runs_0`): two folders
-    // must not write over each other's default output.
-    let name = f.name.clone().unwrap_or_else(|| {
-        if path.is_dir() {
-            path.file_name()
-        } else {
-            path.file_stem()
-        }
-        .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
-    });
+    let name = campaign_name(f.name.clone(), path);
     Ok(Campaign {
         name,
         source: path.to_path_buf(),
@@ -228,6 +198,34 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
 /// The folder whose every `*.csv` is read as a run (by [`run_files`],
 /// and kept on the campaign so no output is written into it): `[runs]
 /// dir`, or a campaign folder's `runs/` where no files are listed.
+/// A `[tyres]` with `front` only runs it on both axles, as a scenario's:
+/// the note saying so. Apart from [`load_campaign`] so that it reads on a
+/// screen.
+fn front_only_note(tyres: Option<&TyreSpec>) -> Vec<String> {
+    tyres
+        .filter(|t| t.file.is_none() && t.front.is_some() && t.rear.is_none() && t.rig.is_none())
+        .map(|_| {
+            "[tyres] gives `front` only: the rear axle runs on the front file too, at its own static load, as a scenario's `rear` defaults to its `front`".to_string()
+        })
+        .into_iter()
+        .collect()
+}
+
+/// The campaign's `name`, else its folder's whole name (`runs_0.05` is not
+/// `runs_0`: two folders must not write over each other's default output)
+/// or its file's stem. Apart from [`load_campaign`] so that it reads on a
+/// screen.
+fn campaign_name(name: Option<String>, path: &Path) -> String {
+    name.unwrap_or_else(|| {
+        if path.is_dir() {
+            path.file_name()
+        } else {
+            path.file_stem()
+        }
+        .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
+    })
+}
+
 fn runs_folder(runs: Option<&RunSpec>, base: &Path, path: &Path, folder: bool) -> Option<PathBuf> {
     match runs {
         Some(RunSpec { dir: Some(d), .. }) => Some(beside(base, d)),
@@ -539,38 +537,7 @@ fn base_tyres(
             )
         }
     };
-    let name = spec.model.as_deref().unwrap_or("pac89");
-    // A Magic Formula named here is a .tir fitted by `identify`: say how
-    // (a fresh user's guess, answered with a list it is not on).
-    if ["mf52", "mf61", "mf62"].contains(
-        &name
-            .to_ascii_lowercase()
-            .replace(['.', '_', '-'], "")
-            .as_str(),
-    ) {
-        return Err(src.value_error(&ParamError::without_value(
-            "tyres.model",
-            ParamReason::Campaign(Box::new(CampaignReason::StagedMagicFormula(
-                StagedMagicFormula {
-                    model: name.to_string(),
-                    fitted: swarm_models().iter().map(|m| m.as_str()).collect(),
-                },
-            ))),
-        )));
-    }
-    // The rig fit starts a swarm, which the staged Magic Formula does not.
-    let model = named(
-        &swarm_models(),
-        ModelName::as_str,
-        NameKind::TyreModel,
-        name,
-    )
-    .map_err(|why| {
-        src.value_error(&ParamError::without_value(
-            "tyres.model",
-            ParamReason::Name(Box::new(why)),
-        ))
-    })?;
+    let model = rig_model::rig_model(src, spec.model.as_deref().unwrap_or("pac89"))?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

@@ -222,6 +222,32 @@ pub(super) type ReadRuns = (
     Vec<(String, f64)>,
 );
 
+/// The refusal of a campaign left with fewer than two runs, `(runs,
+/// cleaning, top speeds)`: at the stated `min_speed` (m/s) where it
+/// removed them, else in `file` with the counts. Apart from
+/// [`super::load_campaign`] so that it reads on a screen.
+pub(super) fn too_few_runs(
+    src: &TomlSource,
+    file: &Path,
+    min_speed: f64,
+    (runs, cleaning, top_speeds): (usize, &CleaningReport, &[(String, f64)]),
+) -> InputError {
+    let stated = src.key_span("diagnose.min_speed");
+    if let Some(p) = min_speed_removed(min_speed, stated.is_some(), top_speeds) {
+        let p = CampaignFileProblem::MinSpeedRemoved(p);
+        return src.located(stated, InputProblem::Campaign(Box::new(p)));
+    }
+    file_error(
+        file,
+        InputProblem::TooFewRuns {
+            runs,
+            kept: cleaning.samples_kept,
+            read: cleaning.samples_read,
+            min_speed,
+        },
+    )
+}
+
 /// Reads, checks, calibrates and cleans every run, cut into segments if
 /// asked; a run whose samples an earlier one holds is refused by
 /// `copied(earlier, run)` ([`refuse_copy`]).

@@ -6,7 +6,9 @@
 //! ([`crate::measured::clean`]), cut into segments if asked, `ay` levelled
 //! by a logged roll ([`super::levelled`]). Units: SI, rad.
 
-use super::run_checks::{checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal};
+use super::run_checks::{
+    checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal, SteerInDegrees,
+};
 use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
@@ -58,49 +60,7 @@ pub(super) fn run_files(
         src.referenced_folder("runs.dir", &beside(base, d))?;
     }
     if let Some(d) = super::runs_folder(runs, base, path, folder) {
-        let entries = std::fs::read_dir(&d).map_err(|source| InputError::Io {
-            path: d.clone(),
-            source,
-        })?;
-        // `.CSV` as Windows loggers write it; anything else in the folder
-        // is named in a note, not passed over in silence.
-        let (mut found, mut skipped): (Vec<PathBuf>, Vec<PathBuf>) = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .partition(|p| {
-                p.is_file() && p.extension().is_some_and(|x| x.eq_ignore_ascii_case("csv"))
-            });
-        found.sort();
-        skipped.sort();
-        let names: Vec<String> = skipped
-            .iter()
-            .map(|p| {
-                let name = p.file_name().unwrap_or_default().to_string_lossy();
-                if p.is_dir() {
-                    format!("{name}/")
-                } else {
-                    name.into_owned()
-                }
-            })
-            .collect();
-        if !skipped.is_empty() {
-            notes.push(format!(
-                "{}: {} entr{} not read ({}): the runs are the *.csv files of the folder itself",
-                d.display(),
-                skipped.len(),
-                if skipped.len() == 1 { "y" } else { "ies" },
-                names.join(", ")
-            ));
-        }
-        if found.is_empty() {
-            return Err(file_error(
-                file,
-                InputProblem::EmptyRunsFolder {
-                    folder: d.to_path_buf(),
-                    holds: names,
-                },
-            ));
-        }
-        files.extend(found);
+        files.extend(folder_runs(&d, file, notes)?);
     }
     // A run listed twice would be held out and trained on at once (a copy
     // of one too: [`read_runs`] refuses it, having read both).
@@ -222,6 +182,88 @@ pub(super) type ReadRuns = (
     Vec<(String, f64)>,
 );
 
+/// The runs of folder `d`: its `*.csv` files (`.CSV` as Windows loggers
+/// write it), sorted; anything else in it is named in a note, not passed
+/// over in silence, and a folder without runs is refused in `file`. Apart
+/// from [`run_files`] so that it reads on a screen.
+fn folder_runs(d: &Path, file: &Path, notes: &mut Vec<String>) -> Result<Vec<PathBuf>, InputError> {
+    let entries = std::fs::read_dir(d).map_err(|source| InputError::Io {
+        path: d.to_path_buf(),
+        source,
+    })?;
+    let (mut found, mut skipped): (Vec<PathBuf>, Vec<PathBuf>) = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .partition(|p| p.is_file() && p.extension().is_some_and(|x| x.eq_ignore_ascii_case("csv")));
+    found.sort();
+    skipped.sort();
+    let names: Vec<String> = skipped
+        .iter()
+        .map(|p| {
+            let name = p.file_name().unwrap_or_default().to_string_lossy();
+            if p.is_dir() {
+                format!("{name}/")
+            } else {
+                name.into_owned()
+            }
+        })
+        .collect();
+    if !skipped.is_empty() {
+        notes.push(format!(
+            "{}: {} entr{} not read ({}): the runs are the *.csv files of the folder itself",
+            d.display(),
+            skipped.len(),
+            if skipped.len() == 1 { "y" } else { "ies" },
+            names.join(", ")
+        ));
+    }
+    if found.is_empty() {
+        return Err(file_error(
+            file,
+            InputProblem::EmptyRunsFolder {
+                folder: d.to_path_buf(),
+                holds: names,
+            },
+        ));
+    }
+    Ok(found)
+}
+
+/// Run `i`'s refusal filed with the others (`refused`, `in_degrees`),
+/// counting in `radians` a run whose steer was judged to read in radians.
+/// Apart from [`read_runs`] so that it reads on a screen.
+fn file_refusal(
+    i: usize,
+    refusal: RunRefusal,
+    refused: &mut Vec<(usize, InputError)>,
+    in_degrees: &mut Vec<(usize, Box<SteerInDegrees>)>,
+    radians: &mut usize,
+) {
+    match refusal {
+        RunRefusal::Run(e) => refused.push((i, e)),
+        RunRefusal::Judged(e) => {
+            refused.push((i, e));
+            *radians += 1;
+        }
+        RunRefusal::InDegrees(d) => in_degrees.push((i, d)),
+    }
+}
+
+/// The declared columns run file `p` lacks filed in `absent` (each with
+/// the files lacking it and the first one's error). Apart from
+/// [`read_runs`] so that it reads on a screen.
+fn file_lacking(
+    absent: &mut Vec<(AngleColumn, Vec<String>, InputError)>,
+    lacks: Vec<(AngleColumn, InputError)>,
+    p: &Path,
+) {
+    for (a, e) in lacks {
+        match absent.iter_mut().find(|x| x.0 == a) {
+            Some(x) => x.1.push(p.display().to_string()),
+            None => absent.push((a, vec![p.display().to_string()], e)),
+        }
+    }
+}
+
 /// The refusal of a campaign left with fewer than two runs, `(runs,
 /// cleaning, top speeds)`: at the stated `min_speed` (m/s) where it
 /// removed them, else in `file` with the counts. Apart from
@@ -282,24 +324,12 @@ pub(super) fn read_runs(
         let (run, lacks, run_notes, judged) = match checked_run(&ctx, i, &raw, copied) {
             Ok(checked) => checked,
             Err(refusal) => {
-                match refusal {
-                    RunRefusal::Run(e) => refused.push((i, e)),
-                    RunRefusal::Judged(e) => {
-                        refused.push((i, e));
-                        radians += 1;
-                    }
-                    RunRefusal::InDegrees(d) => in_degrees.push((i, d)),
-                }
+                file_refusal(i, refusal, &mut refused, &mut in_degrees, &mut radians);
                 continue;
             }
         };
         radians += usize::from(judged);
-        for (a, e) in lacks {
-            match absent.iter_mut().find(|x| x.0 == a) {
-                Some(x) => x.1.push(p.display().to_string()),
-                None => absent.push((a, vec![p.display().to_string()], e)),
-            }
-        }
+        file_lacking(&mut absent, lacks, p);
         notes.extend(run_notes);
         inputs.push(p.clone());
         let name = run.path.display().to_string();

@@ -195,9 +195,6 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     })
 }
 
-/// The folder whose every `*.csv` is read as a run (by [`run_files`],
-/// and kept on the campaign so no output is written into it): `[runs]
-/// dir`, or a campaign folder's `runs/` where no files are listed.
 /// A `[tyres]` with `front` only runs it on both axles, as a scenario's:
 /// the note saying so. Apart from [`load_campaign`] so that it reads on a
 /// screen.
@@ -226,6 +223,9 @@ fn campaign_name(name: Option<String>, path: &Path) -> String {
     })
 }
 
+/// The folder whose every `*.csv` is read as a run (by [`run_files`],
+/// and kept on the campaign so no output is written into it): `[runs]
+/// dir`, or a campaign folder's `runs/` where no files are listed.
 fn runs_folder(runs: Option<&RunSpec>, base: &Path, path: &Path, folder: bool) -> Option<PathBuf> {
     match runs {
         Some(RunSpec { dir: Some(d), .. }) => Some(beside(base, d)),

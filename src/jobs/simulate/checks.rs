@@ -446,6 +446,38 @@ fn ranges_text(r: &FittedRanges) -> String {
     parts.join(", ")
 }
 
+/// The simulation's constant inputs (no slip ratio, no camber, the file's
+/// pressure) past the ranges `r` with `share` of slack, in words. Apart from
+/// [`beyond_fitted`] so that it reads on a screen.
+fn constants_past(r: &FittedRanges, share: f64, pressure: Option<(f64, &str)>) -> Vec<String> {
+    let mut out = Vec::new();
+    // A constant input past its range, by the rule tyre-eval says its
+    // points by: a one-level range by its distance, a sweep by its span.
+    let past = |key: &str, range: Option<[f64; 2]>, v: f64, unit: &str| {
+        let range = range.filter(|r| past_by(*r, v, share).is_some())?;
+        let level = crate::jobs::tyre_eval::one_level(key, range).then(|| {
+            let mid = crate::format::readable(0.5 * (range[0] + range[1]), 4);
+            format!(", one level of the data at {mid}{unit}")
+        });
+        Some(format!(
+            "{}{}",
+            crate::jobs::tyre_eval::past_end(key, range, v, unit),
+            level.unwrap_or_default()
+        ))
+    };
+    out.extend(past("kappa", r.kappa, 0.0, "").map(|w| format!("a slip ratio of 0 ({w})")));
+    out.extend(past("camber", r.camber, 0.0, " rad").map(|w| format!("a camber of 0 rad ({w})")));
+    if let Some((p, key)) = pressure {
+        out.extend(past("pressure", r.pressure, p, " Pa").map(|w| {
+            format!(
+                "a pressure of {} Pa (the file's {key}), {w}",
+                crate::format::readable(p, 4)
+            )
+        }));
+    }
+    out
+}
+
 /// The rows whose wheels leave the ranges `r` of the tyre of `axle` (0
 /// front, 1 rear), from `source`: counted, with the extremes reached.
 fn beyond_fitted(
@@ -515,30 +547,7 @@ fn beyond_fitted(
             ),
         });
     }
-    // A constant input past its range, by the rule tyre-eval says its
-    // points by: a one-level range by its distance, a sweep by its span.
-    let past = |key: &str, range: Option<[f64; 2]>, v: f64, unit: &str| {
-        let range = range.filter(|r| past_by(*r, v, share).is_some())?;
-        let level = crate::jobs::tyre_eval::one_level(key, range).then(|| {
-            let mid = crate::format::readable(0.5 * (range[0] + range[1]), 4);
-            format!(", one level of the data at {mid}{unit}")
-        });
-        Some(format!(
-            "{}{}",
-            crate::jobs::tyre_eval::past_end(key, range, v, unit),
-            level.unwrap_or_default()
-        ))
-    };
-    what.extend(past("kappa", r.kappa, 0.0, "").map(|w| format!("a slip ratio of 0 ({w})")));
-    what.extend(past("camber", r.camber, 0.0, " rad").map(|w| format!("a camber of 0 rad ({w})")));
-    if let Some((p, key)) = pressure {
-        what.extend(past("pressure", r.pressure, p, " Pa").map(|w| {
-            format!(
-                "a pressure of {} Pa (the file's {key}), {w}",
-                crate::format::readable(p, 4)
-            )
-        }));
-    }
+    what.extend(constants_past(r, share, pressure));
     let (ranges, evaluated) = source.words();
     Some(format!(
         "{} of {} rows take the {name} tyres outside {ranges} ({}; {evaluated}: there, {}",

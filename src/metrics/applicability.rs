@@ -143,6 +143,72 @@ pub enum Overshoot {
 /// every road or racing tyre is still short of its peak there.
 pub const LINEAR_SLIP: f64 = 3.0 * std::f64::consts::PI / 180.0;
 
+/// Why the step-steer metrics do not apply to a steady sideslip `beta`
+/// (rad) beyond 10°: the turn's geometry at a crawl or on little grip,
+/// linear tyres past their range, or a slide. Apart from
+/// [`applicability_with_grip`] so that it reads on a screen.
+fn sliding_words(
+    m: &StepMetrics,
+    beta: f64,
+    speed: Option<f64>,
+    grip: Option<Grip>,
+    overshoot: Option<Overshoot>,
+) -> String {
+    // In the steady turn both axles use |ay|/(μ·g) of their grip.
+    let share = grip
+        .zip(m.ay_steady)
+        .map(|(g, ay)| (ay.abs() / g.accel(), g));
+    let gripless = matches!(
+        overshoot,
+        Some(Overshoot::NoGripLimit | Overshoot::LinearSlip(_))
+    );
+    // Linear tyres are judged by their slip angles: a crawl's 10°
+    // sideslip at 0.05° of slip is the turn's geometry (β ≈ b·δ/l),
+    // and was said to take the tyres beyond their range.
+    let linear_slip = match overshoot {
+        Some(Overshoot::LinearSlip(slip)) => Some(slip),
+        _ => None,
+    };
+    match (share.filter(|s| s.0 < KINEMATIC_GRIP), speed) {
+        _ if linear_slip.is_some_and(|s| s[0].max(s[1]) <= LINEAR_SLIP)
+            && speed.is_some() =>
+        {
+            let [front, rear] = linear_slip.unwrap_or_default();
+            format!(
+                "the steady sideslip is {:.1}°, beyond 10°, {}",
+                beta.to_degrees(),
+                kinematic_turn_because(
+                    &format!(
+                        "the linear tyres' slip angles stay within {}° (front) and {}° (rear), short of the 3° where real tyres' forces begin to peak",
+                        crate::format::significant(front.to_degrees(), 2),
+                        crate::format::significant(rear.to_degrees(), 2)
+                    ),
+                    speed.unwrap_or_default(),
+                    m.steer_step
+                )
+            )
+        }
+        // Linear tyres have no grip to slide past.
+        _ if gripless => format!(
+            "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity ({}a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
+            beta.to_degrees(),
+            linear_slip.map_or_else(String::new, |s| format!(
+                "the largest is {}°; ",
+                crate::format::significant(s[0].max(s[1]).to_degrees(), 2)
+            ))
+        ),
+        (Some((share, g)), Some(u)) => format!(
+            "the steady sideslip is {:.1}°, beyond 10°, {}",
+            beta.to_degrees(),
+            kinematic_turn(share, g.words(), u, m.steer_step)
+        ),
+        _ => format!(
+            "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+            beta.to_degrees()
+        ),
+    }
+}
+
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
 /// m/s², the lower axle's peak at static load, road friction included):
 /// a sideslip beyond 10° with the tyres at under [`KINEMATIC_GRIP`] of it
@@ -184,59 +250,7 @@ pub fn applicability_with_grip(
         }
     }
     if let Some(beta) = m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
-        // In the steady turn both axles use |ay|/(μ·g) of their grip.
-        let share = grip
-            .zip(m.ay_steady)
-            .map(|(g, ay)| (ay.abs() / g.accel(), g));
-        let gripless = matches!(
-            overshoot,
-            Some(Overshoot::NoGripLimit | Overshoot::LinearSlip(_))
-        );
-        // Linear tyres are judged by their slip angles: a crawl's 10°
-        // sideslip at 0.05° of slip is the turn's geometry (β ≈ b·δ/l),
-        // and was said to take the tyres beyond their range.
-        let linear_slip = match overshoot {
-            Some(Overshoot::LinearSlip(slip)) => Some(slip),
-            _ => None,
-        };
-        out.push(match (share.filter(|s| s.0 < KINEMATIC_GRIP), speed) {
-            _ if linear_slip.is_some_and(|s| s[0].max(s[1]) <= LINEAR_SLIP)
-                && speed.is_some() =>
-            {
-                let [front, rear] = linear_slip.unwrap_or_default();
-                format!(
-                    "the steady sideslip is {:.1}°, beyond 10°, {}",
-                    beta.to_degrees(),
-                    kinematic_turn_because(
-                        &format!(
-                            "the linear tyres' slip angles stay within {}° (front) and {}° (rear), short of the 3° where real tyres' forces begin to peak",
-                            crate::format::significant(front.to_degrees(), 2),
-                            crate::format::significant(rear.to_degrees(), 2)
-                        ),
-                        speed.unwrap_or_default(),
-                        m.steer_step
-                    )
-                )
-            }
-            // Linear tyres have no grip to slide past.
-            _ if gripless => format!(
-                "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity ({}a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
-                beta.to_degrees(),
-                linear_slip.map_or_else(String::new, |s| format!(
-                    "the largest is {}°; ",
-                    crate::format::significant(s[0].max(s[1]).to_degrees(), 2)
-                ))
-            ),
-            (Some((share, g)), Some(u)) => format!(
-                "the steady sideslip is {:.1}°, beyond 10°, {}",
-                beta.to_degrees(),
-                kinematic_turn(share, g.words(), u, m.steer_step)
-            ),
-            _ => format!(
-                "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
-                beta.to_degrees()
-            ),
-        });
+        out.push(sliding_words(m, beta, speed, grip, overshoot));
     }
     if let Some(percent) = m.yaw_rate_overshoot.filter(|p| *p > SPIN_OVERSHOOT) {
         out.push(overshoot_words(percent, speed, overshoot));

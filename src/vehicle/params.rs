@@ -242,15 +242,10 @@ impl Vehicle {
         said
     }
 
-    /// Checks every value for physical sense; the error names the key.
-    pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::positive("mass", self.mass)?;
-        ParamError::positive("yaw_inertia", self.yaw_inertia)?;
-        ParamError::positive("a", self.a)?;
-        ParamError::positive("b", self.b)?;
-        ParamError::positive("track_front", self.track_front)?;
-        ParamError::positive("track_rear", self.track_rear)?;
-        ParamError::non_negative("cg_height", self.cg_height)?;
+    /// The mass and lengths below their limits, and each track within its
+    /// ratio to the wheelbase. Apart from [`Self::validate`] so that it
+    /// reads on a screen; in its order, which decides the error said.
+    fn plausible_sizes(&self) -> Result<(), ParamError> {
         if self.mass > MAX_MASS {
             return Err(ParamError::new(
                 "mass",
@@ -287,6 +282,19 @@ impl Vehicle {
                 return Err(ParamError::new(key, track, reason));
             }
         }
+        Ok(())
+    }
+
+    /// Checks every value for physical sense; the error names the key.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("mass", self.mass)?;
+        ParamError::positive("yaw_inertia", self.yaw_inertia)?;
+        ParamError::positive("a", self.a)?;
+        ParamError::positive("b", self.b)?;
+        ParamError::positive("track_front", self.track_front)?;
+        ParamError::positive("track_rear", self.track_rear)?;
+        ParamError::non_negative("cg_height", self.cg_height)?;
+        self.plausible_sizes()?;
         // After the track (a track in the wrong unit is the track's error,
         // not the height's) and before the dynamic index (a mass in tonnes
         // is the mass's, not the inertia's).

@@ -20,10 +20,12 @@ fn slope(
     }
 }
 
-/// The messages the readers wrote as text before they were typed, word
-/// for word (the CLI's users and tests read them).
+// The messages the readers wrote as text before they were typed, word
+// for word (the CLI's users and tests read them), by theme.
+
+/// A rig channel of the wrong sign: `fy`, `mz` and `fx`.
 #[test]
-fn messages_read_as_the_text_they_replace() {
+fn messages_read_as_the_text_they_replace_wrong_signs() {
     let fy = InputProblem::WrongSign {
         channel: RigChannel::Fy,
         position: 3,
@@ -45,6 +47,11 @@ fn messages_read_as_the_text_they_replace() {
         fy_slope: None,
     };
     assert_eq!(fx.to_string(), "column `fx` (column 2 of the header) has the wrong sign: near zero slip (|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad) its least-squares slope against `kappa` is -3000 N (standard error 10 N) from 12 samples (6 with kappa > 0, 6 with kappa < 0); FORMATS.md (ISO 8855) requires a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa). The file is likely in the SAE or another sign convention: negate the `fx` column");
+}
+
+/// No level near the one requested: as typed, and a unit's slip.
+#[test]
+fn messages_read_as_the_text_they_replace_levels() {
     let level = InputProblem::NoLevelNear {
         variable: Variable::Pressure,
         requested: 250e3,
@@ -89,12 +96,24 @@ fn messages_read_as_the_text_they_replace() {
         ),
         "{degrees}"
     );
+}
+
+/// An angle column in degrees and a camber the file lacks.
+#[test]
+fn messages_read_as_the_text_they_replace_angles() {
     let angle = InputProblem::AngleInDegrees {
         column: "camber",
         value: 3.0,
         limit: std::f64::consts::FRAC_PI_4,
     };
     assert_eq!(angle.to_string(), "column `camber`: 3 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?");
+    let camber = InputProblem::NoCamberColumn { camber: 0.05 };
+    assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
+}
+
+/// A run without a steer step, and a campaign without runs.
+#[test]
+fn messages_read_as_the_text_they_replace_runs() {
     let step = InputProblem::NoSteerStep {
         pieces: vec![
             RefusedPiece {
@@ -134,6 +153,4 @@ fn messages_read_as_the_text_they_replace() {
     let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
     assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
     assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");
-    let camber = InputProblem::NoCamberColumn { camber: 0.05 };
-    assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
 }

@@ -416,95 +416,6 @@ fn a_simulated_lift_off_is_reported_with_its_wheel_and_time() {
 }
 
 #[test]
-fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
-    use crate::sim::Tolerances;
-    let m = nonlinear_model();
-    let man = Manoeuvre::StepSteer(StepSteer {
-        speed: 22.2222,
-        amplitude: 0.04,
-        trim: 0.0,
-        start: 0.5,
-        rise_time: 0.1,
-        end: 4.0,
-    });
-    let fine = Integrator {
-        step: 1e-4,
-        ..rk4_1ms()
-    }
-    .run(&m, &man, State::default());
-    let tol = Tolerances {
-        rtol: 1e-9,
-        atol: 1e-11,
-        max_step: 0.05,
-    };
-    let sim = Integrator {
-        step: 1e-3,
-        method: Method::Dopri5(tol),
-        ..Integrator::default()
-    }
-    .simulate(&m, &man, State::default());
-    let (h, sol) = (sim.history, sim.dense.expect("a dense solution"));
-    assert_eq!(h.len(), 4001);
-    let r_ss = fine.yaw_rate.last().copied().unwrap();
-    for (i, t) in h.t.iter().enumerate() {
-        let j = i * 10;
-        assert!((fine.t[j] - t).abs() < 1e-12);
-        assert!(
-            (h.yaw_rate[i] - fine.yaw_rate[j]).abs() < 1e-7 * r_ss.abs(),
-            "t {t}: {} vs {}",
-            h.yaw_rate[i],
-            fine.yaw_rate[j]
-        );
-        assert!((h.ay[i] - fine.ay[j]).abs() < 1e-6, "t {t}");
-    }
-    // A few hundred steps, not thousands.
-    assert!(sol.stats.accepted < 400, "{:?}", sol.stats);
-    // The solver alone (what an ODE solver returns, the peer comparison's
-    // job): the same solution as the simulation's, to the bit, and at
-    // SciPy's rtol 1e-6 with no largest step still within 1e-6 of r_ss
-    // of the fine RK4 at its rows, in fewer steps.
-    let integ = Integrator {
-        step: 1e-3,
-        method: Method::Dopri5(tol),
-        ..Integrator::default()
-    };
-    let alone = integ
-        .solve_dopri5(&m, &man, State::default(), &tol)
-        .expect("(β, r) alone");
-    assert_eq!(alone, sol);
-    let loose = Tolerances {
-        rtol: 1e-6,
-        atol: 1e-9,
-        max_step: f64::INFINITY,
-    };
-    let coarse = integ
-        .solve_dopri5(&m, &man, State::default(), &loose)
-        .expect("(β, r) alone");
-    let mut states = Vec::new();
-    coarse.states_into(&h.t, &mut states);
-    for (i, x) in states.iter().enumerate() {
-        let r = fine.yaw_rate[i * 10];
-        assert!(
-            (x[1] - r).abs() < 1e-6 * r_ss.abs(),
-            "t {}: {} vs {r}",
-            h.t[i],
-            x[1]
-        );
-    }
-    assert!(
-        coarse.stats.accepted < sol.stats.accepted / 2,
-        "{:?}",
-        coarse.stats
-    );
-    // With states beyond (β, r) there is no (β, r) solution to return.
-    let mut lagged = m.clone();
-    lagged.options.effects.relaxation_length = 0.5;
-    assert!(integ
-        .solve_dopri5(&lagged, &man, State::default(), &tol)
-        .is_none());
-}
-
-#[test]
 fn with_every_effect_off_the_extra_states_do_not_feed_back_bit_for_bit() {
     // The one right-hand side: with the effects off, whatever the lag and
     // roll states hold, β̇, ṙ and every output are those of (β, r) alone,
@@ -596,5 +507,6 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     }
 }
 
+mod dopri5;
 mod equilibrium;
 mod longitudinal;

@@ -142,6 +142,53 @@ fn the_generic_channels_equal_the_fast_path_at_low_speed_and_no_load() {
     assert!(w <= 1e-12, "{w:.2e}");
 }
 
+/// Fy (N) of `t`'s fast path at slip angle `alpha` (rad), load `fz` (N)
+/// and friction scale `mu`, no slip ratio or camber: what the
+/// parameterised force is checked against.
+fn pure_fy(t: &MagicFormula, alpha: f64, fz: f64, mu: f64) -> f64 {
+    use crate::tyre::{SlipState, TyreModel};
+    t.forces(&SlipState {
+        alpha,
+        kappa: 0.0,
+        fz,
+        camber: 0.0,
+        mu_scale: mu,
+        speed: 16.7,
+    })
+    .fy
+}
+
+/// ∂Fy/∂x_k by fourth-order central differences of step `h` at `x0` (the 9
+/// lateral parameters, then α, Fz, μ): the derivatives' reference.
+fn fy_difference(t: &MagicFormula, x0: &[f64], k: usize, h: f64) -> f64 {
+    use crate::tyre::Parameterised;
+    let at = |d: f64| {
+        let mut x = x0.to_vec();
+        x[k] += d;
+        let mut u = t.clone();
+        u.set_parameters(&x[..9]);
+        pure_fy(&u, x[9], x[10], x[11])
+    };
+    (-at(2.0 * h) + 8.0 * at(h) - 8.0 * at(-h) + at(-2.0 * h)) / (12.0 * h)
+}
+
+/// Whether `t` is clamped (a load or slip-angle limit) at one end of ±2h
+/// along x_k of `x0` and not at the other: differences across the kink
+/// are not its derivative.
+fn straddles_a_limit(t: &MagicFormula, x0: &[f64], k: usize, h: f64) -> bool {
+    let clamped = |d: f64| {
+        t.is_clamped(&MfInput {
+            fz: x0[10] + d * f64::from(k == 10),
+            kappa: 0.0,
+            alpha: x0[9] + d * f64::from(k == 9),
+            camber: 0.0,
+            speed: 16.7,
+            pressure: None,
+        })
+    };
+    clamped(2.0 * h) != clamped(-(2.0 * h))
+}
+
 /// The pure lateral force of [`LateralForceOf`] in plain numbers equals
 /// the fast path's `fy` at zero camber and slip ratio on every fixture
 /// file, in each mode and on both sides, with a road friction and
@@ -151,19 +198,8 @@ fn the_generic_channels_equal_the_fast_path_at_low_speed_and_no_load() {
 /// (floor as in the Jacobian test of the staged fit: 1e-15·S/h).
 #[test]
 fn the_lateral_force_of_equals_the_fast_path_with_its_derivatives() {
-    use crate::tyre::{LateralForceOf, Parameterised, SlipOf, SlipState, TyreModel};
+    use crate::tyre::{LateralForceOf, Parameterised, SlipOf};
     use num_dual::DualSVec64;
-    let fy = |t: &MagicFormula, alpha: f64, fz: f64, mu: f64| {
-        t.forces(&SlipState {
-            alpha,
-            kappa: 0.0,
-            fz,
-            camber: 0.0,
-            mu_scale: mu,
-            speed: 16.7,
-        })
-        .fy
-    };
     let modes = [111, 121, 211, 221].map(|m| MfMode::from_use_mode(m).unwrap());
     let mut derivatives = 0;
     for (file, _) in FILES {
@@ -188,7 +224,7 @@ fn the_lateral_force_of_equals_the_fast_path_with_its_derivatives() {
                         mu_scale: 0.9,
                         speed: 16.7,
                     };
-                    let (a, b) = (t.lateral_force_of(&p, &s), fy(&t, alpha, fz, 0.9));
+                    let (a, b) = (t.lateral_force_of(&p, &s), pure_fy(&t, alpha, fz, 0.9));
                     assert!(
                         (a - b).abs() <= 1e-12 * a.abs().max(1e-4 * scale),
                         "{file} {:?} at {alpha}, {fz}: {a} vs {b}",
@@ -209,34 +245,11 @@ fn the_lateral_force_of_equals_the_fast_path_with_its_derivatives() {
                     for k in 0..12 {
                         let x0 = [p.clone(), vec![alpha, fz, 0.9]].concat();
                         let h = 1e-3 * x0[k].abs().max(if k == 9 { 1e-2 } else { 0.1 });
-                        let at = |d: f64| {
-                            let mut x = x0.clone();
-                            x[k] += d;
-                            let mut u = t.clone();
-                            u.set_parameters(&x[..9]);
-                            fy(&u, x[9], x[10], x[11])
-                        };
-                        let d =
-                            (-at(2.0 * h) + 8.0 * at(h) - 8.0 * at(-h) + at(-2.0 * h)) / (12.0 * h);
+                        let d = fy_difference(&t, &x0, k, h);
                         let floor = 1e-9 * scale / h;
                         // A limit (load, slip angle) within ±2h: the
                         // differences straddle the kink.
-                        let kink = t.is_clamped(&MfInput {
-                            fz: x0[10] + 2.0 * h * f64::from(k == 10),
-                            kappa: 0.0,
-                            alpha: x0[9] + 2.0 * h * f64::from(k == 9),
-                            camber: 0.0,
-                            speed: 16.7,
-                            pressure: None,
-                        }) != t.is_clamped(&MfInput {
-                            fz: x0[10] - 2.0 * h * f64::from(k == 10),
-                            kappa: 0.0,
-                            alpha: x0[9] - 2.0 * h * f64::from(k == 9),
-                            camber: 0.0,
-                            speed: 16.7,
-                            pressure: None,
-                        });
-                        if kink {
+                        if straddles_a_limit(&t, &x0, k, h) {
                             continue;
                         }
                         assert!(

@@ -6,11 +6,9 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::PartAxis;
 
-/// Nine channel-and-axis charts become three print-sized panels: a
-/// panel per axis holding every channel, labels about 10 pt on a
-/// 170 mm text width, each channel's series named with its quantity.
-#[test]
-fn the_gap_map_is_three_panels_legible_in_print() {
+/// Two parts of every channel on every axis, each with two runs' shares:
+/// the gap map these tests draw.
+fn gap_points() -> Vec<GapPoint> {
     let mut points = Vec::new();
     for ch in Channel::ALL {
         for axis in PartAxis::ALL {
@@ -26,6 +24,15 @@ fn the_gap_map_is_three_panels_legible_in_print() {
             }
         }
     }
+    points
+}
+
+/// Nine channel-and-axis charts become three print-sized panels: a
+/// panel per axis holding every channel, labels about 10 pt on a
+/// 170 mm text width, each channel's series named with its quantity.
+#[test]
+fn the_gap_map_is_three_panels_legible_in_print() {
+    let points = gap_points();
     let fig = gap_figure(&[EffectKind::SensorDelay], &points, false);
     assert_eq!((fig.panels.len(), fig.columns), (3, 1));
     assert!(
@@ -81,6 +88,14 @@ fn the_gap_map_is_three_panels_legible_in_print() {
     assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
     assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
     assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
+}
+
+/// Without a verdict the map shows the base model alone, names no report
+/// channel in a label, and says where a run without ay is banded by u·r.
+#[test]
+fn the_gap_map_without_a_verdict_is_the_base_model_alone() {
+    let points = gap_points();
+    let fig = gap_figure(&[EffectKind::SensorDelay], &points, false);
     // Without a verdict: the base model alone, and no report name
     // (yaw_rate, ay, beta) in a label.
     let base = gap_figure(&[], &points, true);

@@ -232,6 +232,13 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
         ],
         &rows,
     );
+    screened(p, d);
+}
+
+/// The candidates and sets screened out before cross-validation, each
+/// with its in-sample reduction: the paragraphs under the ranking table.
+/// Apart from [`ranking`] so that it reads on a screen.
+fn screened(p: &mut Page, d: &Diagnosis) {
     let screened_sets: Vec<_> = d.screened_sets().collect();
     let sets: Vec<String> = screened_sets
         .iter()

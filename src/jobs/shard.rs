@@ -374,6 +374,22 @@ fn distinct_files(paths: &[PathBuf]) -> Result<(Vec<PathBuf>, Copies), Error> {
     Ok((kept.into_iter().map(|k| k.2).collect(), identical))
 }
 
+/// Refuses a merge whose input files changed since the shards read them
+/// (a folder's copy is its listing, which the job checks itself). Apart
+/// from [`read_shards`] so that it reads on a screen.
+fn inputs_unchanged(inputs: &[InputCopy]) -> Result<(), Error> {
+    for c in inputs.iter().filter(|c| !c.path.is_dir()) {
+        let now = std::fs::read_to_string(&c.path).unwrap_or_default();
+        if now != c.text {
+            return Err(OptionsError::InputChanged {
+                path: c.path.clone(),
+            }
+            .into());
+        }
+    }
+    Ok(())
+}
+
 /// Reads the shard files of one run: all of one job, one input, one N,
 /// every shard exactly once (a file byte for byte another one given is
 /// read once, and said: [`Shards::note`]), and inputs unchanged since.
@@ -430,16 +446,7 @@ pub(crate) fn read_shards<T: DeserializeOwned>(
     if !missing.is_empty() {
         return Err(OptionsError::ShardsMissing { missing, count }.into());
     }
-    // A folder's copy is its listing, which the job checks itself.
-    for c in first.inputs.iter().filter(|c| !c.path.is_dir()) {
-        let now = std::fs::read_to_string(&c.path).unwrap_or_default();
-        if now != c.text {
-            return Err(OptionsError::InputChanged {
-                path: c.path.clone(),
-            }
-            .into());
-        }
-    }
+    inputs_unchanged(&first.inputs)?;
     let (input, units) = (first.input.clone(), first.units);
     let mut slots: Vec<Option<T>> = (0..units).map(|_| None).collect();
     for f in files {

@@ -439,6 +439,23 @@ fn map_bifurcations(res: &SweepResult, axes: (Axis, Axis), first: &Condition) ->
     })
 }
 
+/// The stability map's category of a point's equilibria in the box: 0
+/// none, 1 stable only, 2 stable and saddles, 3 no stable one (the order of
+/// [`stability_map`]'s legend). Apart from it so that it reads on a screen.
+fn map_category(e: &[Equilibrium]) -> usize {
+    let stable = e.iter().filter(|q| q.stability.kind.is_stable()).count();
+    let saddles = e
+        .iter()
+        .filter(|q| q.stability.kind == Kind::Saddle)
+        .count();
+    match (e.len(), stable, saddles) {
+        (0, _, _) => 0,
+        (_, s, 0) if s > 0 => 1,
+        (_, s, _) if s > 0 => 2,
+        _ => 3,
+    }
+}
+
 /// Stability map over two swept axes (the third at its first value), the
 /// bifurcations along them marked.
 pub fn stability_map(
@@ -469,18 +486,7 @@ pub fn stability_map(
         {
             continue;
         }
-        let e = in_box(&p.exact, bx);
-        let stable = e.iter().filter(|q| q.stability.kind.is_stable()).count();
-        let saddles = e
-            .iter()
-            .filter(|q| q.stability.kind == Kind::Saddle)
-            .count();
-        let cat = match (e.len(), stable, saddles) {
-            (0, _, _) => 0,
-            (_, s, 0) if s > 0 => 1,
-            (_, s, _) if s > 0 => 2,
-            _ => 3,
-        };
+        let cat = map_category(&in_box(&p.exact, bx));
         pts[cat].push((
             display(ax, ax.get(&p.condition)),
             display(ay, ay.get(&p.condition)),

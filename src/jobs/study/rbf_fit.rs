@@ -40,8 +40,9 @@ pub(super) fn train(
         }
         .into());
     }
+    let train_er: Vec<f64> = train.iter().map(|&i| er[i]).collect();
     let net = Rbf::train(
-        &train.iter().map(|&i| er[i]).collect::<Vec<_>>(),
+        &train_er,
         &train
             .iter()
             .map(|&i| vec![pairs[i].k_front, pairs[i].k_rear])
@@ -74,20 +75,7 @@ pub(super) fn train(
             }
         })
         .collect();
-    // The network's answer over its training range of Er, for rbf.png.
-    let (lo, hi) = train
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &i| {
-            (a.min(er[i]), b.max(er[i]))
-        });
-    let prediction = (0..200)
-        .filter(|_| hi > lo)
-        .map(|j| {
-            let e = lo + (hi - lo) * f64::from(j) / 199.0;
-            let p = net.predict(e);
-            [e, p[0] / k, p[1] / k]
-        })
-        .collect();
+    let prediction = prediction_curve(&net, &train_er, k);
     let report = RbfReport {
         spread: r.spread,
         training_pairs: train.len(),
@@ -98,4 +86,24 @@ pub(super) fn train(
         prediction,
     };
     Ok((net, report))
+}
+
+/// The network's answer over its training range of Er (`er`, the training
+/// pairs' values), for rbf.png: 200 points of `[Er, k_front, k_rear]` with
+/// the stiffnesses in units of `k`, none where the range is a point. Apart
+/// from [`train`] so that it reads on a screen.
+fn prediction_curve(net: &Rbf, er: &[f64], k: f64) -> Vec<[f64; 3]> {
+    let (lo, hi) = er
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    (0..200)
+        .filter(|_| hi > lo)
+        .map(|j| {
+            let e = lo + (hi - lo) * f64::from(j) / 199.0;
+            let p = net.predict(e);
+            [e, p[0] / k, p[1] / k]
+        })
+        .collect()
 }

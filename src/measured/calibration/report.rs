@@ -427,6 +427,32 @@ fn plus_minus(value: f64, error: f64) -> String {
 }
 
 impl ChannelCalibration {
+    /// The spans (standstills, straights) whose offsets drift beyond their
+    /// errors, each as `; the … drift (least to greatest, χ²/dof)`: the
+    /// tail of [`Self::line`], apart so that it reads on a screen.
+    fn drifts(&self) -> String {
+        let mut out = String::new();
+        for (p, kind) in [
+            (&self.standstill, SpanKind::Standstill),
+            (&self.straight, SpanKind::Straight),
+        ] {
+            if let Some(p) = p.filter(|p| !p.consistent) {
+                // The spans' own precision, not the pooled error the drift
+                // inflated.
+                let ratio = p.chi2 / p.dof as f64;
+                let d = digits(p.std_error / ratio.sqrt().max(1.0)).min(4);
+                let r = if ratio < 100.0 { 1 } else { 0 };
+                out.push_str(&format!(
+                    "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {ratio:.r$})",
+                    kind.words(2),
+                    p.least,
+                    p.greatest,
+                ));
+            }
+        }
+        out
+    }
+
     /// The channel's terminal line.
     pub fn line(&self) -> String {
         let name = self.channel.name();
@@ -491,24 +517,7 @@ impl ChannelCalibration {
                 plus_minus(a.difference, a.std_error)
             ));
         }
-        for (p, kind) in [
-            (&self.standstill, SpanKind::Standstill),
-            (&self.straight, SpanKind::Straight),
-        ] {
-            if let Some(p) = p.filter(|p| !p.consistent) {
-                // The spans' own precision, not the pooled error the drift
-                // inflated.
-                let ratio = p.chi2 / p.dof as f64;
-                let d = digits(p.std_error / ratio.sqrt().max(1.0)).min(4);
-                let r = if ratio < 100.0 { 1 } else { 0 };
-                out.push_str(&format!(
-                    "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {ratio:.r$})",
-                    kind.words(2),
-                    p.least,
-                    p.greatest,
-                ));
-            }
-        }
+        out.push_str(&self.drifts());
         out
     }
 }

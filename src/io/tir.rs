@@ -35,6 +35,7 @@ use crate::tyre::mf::{
     MagicFormula, MfCoefficients, MfLimits, MfMode, MfOptions, MfVersion, TyreSide,
 };
 use crate::tyre::{ModelParameters, Tyre};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 /// The value of a `KEY = value` line.
@@ -73,8 +74,8 @@ impl TirDocument {
     pub fn parse(path: &Path, text: &str) -> Result<Self, InputError> {
         let mut section = String::new();
         let mut lines = Vec::new();
-        let mut seen = std::collections::HashMap::new();
-        let mut elsewhere = std::collections::HashMap::new();
+        let mut seen = HashMap::new();
+        let mut elsewhere = HashMap::new();
         for (i, raw) in text.lines().enumerate() {
             let trimmed = raw.trim_start();
             let entry = if trimmed.is_empty()
@@ -98,50 +99,8 @@ impl TirDocument {
                 None
             } else if let Some(eq) = raw.find('=') {
                 let e = parse_entry(path, i + 1, raw, eq, &section)?;
-                // A second, different value of a key in its section would
-                // silently win over the first (a repeated equal one is
-                // harmless and read as the file's value).
-                let key = (e.section.clone(), e.key.clone());
-                if let Some((first, _)) = seen.get(&key).filter(|(_, v)| *v != e.value) {
-                    return Err(InputError::problem_at(
-                        path,
-                        i + 1,
-                        raw.len() - trimmed.len() + 1,
-                        InputProblem::Duplicate {
-                            name: e.key,
-                            first: DuplicateAt::Line(*first),
-                        },
-                    ));
-                }
-                // The same key with another value in another section: a
-                // reader takes it from one of them and the other's value
-                // is lost. [UNITS] names units (its MASS = 'kg' is no
-                // mass), so its keys are not parameters.
-                if e.section != "UNITS" {
-                    if let Some((first, sec, _)) = elsewhere
-                        .get(&e.key)
-                        .filter(|(_, s, v): &&(usize, String, _)| *s != e.section && *v != e.value)
-                    {
-                        return Err(InputError::problem_at(
-                            path,
-                            i + 1,
-                            raw.len() - trimmed.len() + 1,
-                            InputProblem::Duplicate {
-                                name: e.key,
-                                first: DuplicateAt::LineInSection {
-                                    line: *first,
-                                    section: sec.clone(),
-                                },
-                            },
-                        ));
-                    }
-                    elsewhere.entry(e.key.clone()).or_insert((
-                        i + 1,
-                        e.section.clone(),
-                        e.value.clone(),
-                    ));
-                }
-                seen.insert(key, (i + 1, e.value.clone()));
+                let column = raw.len() - trimmed.len() + 1;
+                refuse_duplicate(path, (i + 1, column), &e, &mut seen, &mut elsewhere)?;
                 Some(e)
             } else {
                 None
@@ -549,3 +508,59 @@ pub use units::LOAD_OVER_NOMINAL;
 
 #[cfg(test)]
 mod tests;
+
+/// Refuses entry `e` at `(line, column)` of `path` where it repeats a key
+/// with another value, in its section (`seen`, by section and key) or in
+/// another one (`elsewhere`, by key, [UNITS] aside), and records it. Apart
+/// from [`TirDocument::parse`] so that it reads on a screen.
+fn refuse_duplicate(
+    path: &Path,
+    (line, column): (usize, usize),
+    e: &TirEntry,
+    seen: &mut HashMap<(String, String), (usize, TirValue)>,
+    elsewhere: &mut HashMap<String, (usize, String, TirValue)>,
+) -> Result<(), InputError> {
+    // A second, different value of a key in its section would
+    // silently win over the first (a repeated equal one is
+    // harmless and read as the file's value).
+    let key = (e.section.clone(), e.key.clone());
+    if let Some((first, _)) = seen.get(&key).filter(|(_, v)| *v != e.value) {
+        return Err(InputError::problem_at(
+            path,
+            line,
+            column,
+            InputProblem::Duplicate {
+                name: e.key.clone(),
+                first: DuplicateAt::Line(*first),
+            },
+        ));
+    }
+    // The same key with another value in another section: a
+    // reader takes it from one of them and the other's value
+    // is lost. [UNITS] names units (its MASS = 'kg' is no
+    // mass), so its keys are not parameters.
+    if e.section != "UNITS" {
+        if let Some((first, sec, _)) = elsewhere
+            .get(&e.key)
+            .filter(|(_, s, v): &&(usize, String, _)| *s != e.section && *v != e.value)
+        {
+            return Err(InputError::problem_at(
+                path,
+                line,
+                column,
+                InputProblem::Duplicate {
+                    name: e.key.clone(),
+                    first: DuplicateAt::LineInSection {
+                        line: *first,
+                        section: sec.clone(),
+                    },
+                },
+            ));
+        }
+        elsewhere
+            .entry(e.key.clone())
+            .or_insert((line, e.section.clone(), e.value.clone()));
+    }
+    seen.insert(key, (line, e.value.clone()));
+    Ok(())
+}

@@ -383,6 +383,29 @@ fn pixel_segments<DB: DrawingBackend>(
     out
 }
 
+/// A heat map's cells, each in the colour of its value on the series'
+/// scale. Apart from [`draw_series`] so that it reads on a screen.
+fn draw_heat<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    s: &Series,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let vals = s.values.as_deref().unwrap_or(&[]);
+    let scale = s.scale.as_ref();
+    let cells = super::cells::rectangles(s);
+    chart.draw_series(cells.into_iter().zip(vals).map(|(r, &v)| {
+        // A cell without a value is drawn as such, never as the
+        // colour of the map's minimum.
+        let fill = scale
+            .and_then(|sc| sc.position(v))
+            .map_or(NO_VALUE, colormap);
+        Rectangle::new(r, fill.filled())
+    }))?;
+    Ok(())
+}
+
 fn draw_series<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     s: &Series,
@@ -441,19 +464,7 @@ where
             let cells = super::cells::rectangles(s);
             chart.draw_series(cells.into_iter().map(|r| Rectangle::new(r, c.filled())))?;
         }
-        Style::Heat(..) => {
-            let vals = s.values.as_deref().unwrap_or(&[]);
-            let scale = s.scale.as_ref();
-            let cells = super::cells::rectangles(s);
-            chart.draw_series(cells.into_iter().zip(vals).map(|(r, &v)| {
-                // A cell without a value is drawn as such, never as the
-                // colour of the map's minimum.
-                let fill = scale
-                    .and_then(|sc| sc.position(v))
-                    .map_or(NO_VALUE, colormap);
-                Rectangle::new(r, fill.filled())
-            }))?;
-        }
+        Style::Heat(..) => draw_heat(chart, s)?,
     }
     if let Some(m) = s.marker {
         draw_marks(

@@ -216,6 +216,16 @@ fn stage1_of(c: &Condition, k: usize, pso: &Pso) -> Stage1 {
     }
 }
 
+/// Least squares of stage 1's coefficient `k` over its conditions against
+/// the regressors `row` gives each: one of [`stage2`]'s linear laws in load
+/// and camber, written once.
+fn fit_coefficient(stage1: &[Stage1], k: usize, row: impl Fn(&Stage1) -> Vec<f64>) -> Vec<f64> {
+    lstsq(
+        &stage1.iter().map(row).collect::<Vec<_>>(),
+        &stage1.iter().map(|s| s.coefficients[k]).collect::<Vec<_>>(),
+    )
+}
+
 /// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves (camber
 /// terms zero without camber data).
 fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
@@ -223,57 +233,31 @@ fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
     // C = a0.
     a[0] = stage1.iter().map(|s| s.coefficients[1]).sum::<f64>() / stage1.len() as f64;
     // D = a1·Fz² + a2·Fz.
-    let d = lstsq(
-        &stage1
-            .iter()
-            .map(|s| vec![s.fz_kn * s.fz_kn, s.fz_kn])
-            .collect::<Vec<_>>(),
-        &stage1.iter().map(|s| s.coefficients[2]).collect::<Vec<_>>(),
-    );
+    let d = fit_coefficient(stage1, 2, |s| vec![s.fz_kn * s.fz_kn, s.fz_kn]);
     a[1] = d[0];
     a[2] = d[1];
     // E = a6·Fz + a7.
-    let e = lstsq(
-        &stage1
-            .iter()
-            .map(|s| vec![s.fz_kn, 1.0])
-            .collect::<Vec<_>>(),
-        &stage1.iter().map(|s| s.coefficients[3]).collect::<Vec<_>>(),
-    );
+    let e = fit_coefficient(stage1, 3, |s| vec![s.fz_kn, 1.0]);
     a[6] = e[0];
     a[7] = e[1];
     // Sh = a8·γ + a9·Fz + a10, Sv = a11·Fz·γ + a12·Fz + a13.
-    let sh_rows: Vec<Vec<f64>> = stage1
-        .iter()
-        .map(|s| {
-            if with_camber {
-                vec![s.camber_deg, s.fz_kn, 1.0]
-            } else {
-                vec![0.0, s.fz_kn, 1.0]
-            }
-        })
-        .collect();
-    let sh = lstsq(
-        &sh_rows,
-        &stage1.iter().map(|s| s.coefficients[4]).collect::<Vec<_>>(),
-    );
+    let sh = fit_coefficient(stage1, 4, |s| {
+        if with_camber {
+            vec![s.camber_deg, s.fz_kn, 1.0]
+        } else {
+            vec![0.0, s.fz_kn, 1.0]
+        }
+    });
     a[8] = sh[0];
     a[9] = sh[1];
     a[10] = sh[2];
-    let sv_rows: Vec<Vec<f64>> = stage1
-        .iter()
-        .map(|s| {
-            if with_camber {
-                vec![s.fz_kn * s.camber_deg, s.fz_kn, 1.0]
-            } else {
-                vec![0.0, s.fz_kn, 1.0]
-            }
-        })
-        .collect();
-    let sv = lstsq(
-        &sv_rows,
-        &stage1.iter().map(|s| s.coefficients[5]).collect::<Vec<_>>(),
-    );
+    let sv = fit_coefficient(stage1, 5, |s| {
+        if with_camber {
+            vec![s.fz_kn * s.camber_deg, s.fz_kn, 1.0]
+        } else {
+            vec![0.0, s.fz_kn, 1.0]
+        }
+    });
     a[11] = sv[0];
     a[12] = sv[1];
     a[13] = sv[2];

@@ -159,6 +159,23 @@ fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> (Layout, Augmented) {
     (Layout::new(&[], true), make(f, r))
 }
 
+/// The timing phases of the base fit's polish: its steps, then its
+/// Jacobian and curvature (as [`record_polish`] takes them).
+const BASE_POLISH_PHASES: [Phase; 3] = [
+    Phase::BasePolish,
+    Phase::BaseLinearisation,
+    Phase::BaseLinearisation,
+];
+
+/// The runs a fold trains on: all but its `held_out` ones, in order.
+/// Apart from [`axles_from_runs`] so that it reads on a screen.
+fn training_runs<'a>(runs: &'a [Prepared], held_out: &[usize]) -> Vec<&'a Prepared> {
+    (0..runs.len())
+        .filter(|i| !held_out.contains(i))
+        .map(|i| &runs[i])
+        .collect()
+}
+
 /// The base model of axle characteristics identified from the runs (no
 /// tyre data; [`crate::diagnose::base::identify`]): a grid of starts, the best basins
 /// polished, the best of them fitted, then refitted on every fold.
@@ -197,23 +214,16 @@ fn axles_from_runs(
     let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
     if let (Some(rec), Some(st)) = (timing, &stamps) {
         rec.add(Phase::BaseIdentification, mark.0 - t0, mark.1);
-        let phases = [
-            Phase::BasePolish,
-            Phase::BaseLinearisation,
-            Phase::BaseLinearisation,
-        ];
         let n = full.params.len();
         let jacobian = problem.jacobian_evaluations(n);
-        record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
+        let linear = full.linear.is_some();
+        record_polish(rec, st, mark, (n, jacobian), linear, BASE_POLISH_PHASES);
     }
     let fold_params: Vec<Vec<f64>> = (0..folds.len())
         .into_par_iter()
         .map(|k| {
             let t0 = Instant::now();
-            let train: Vec<&Prepared> = (0..runs.len())
-                .filter(|i| !folds[k].contains(i))
-                .map(|i| &runs[i])
-                .collect();
+            let train = training_runs(runs, &folds[k]);
             let stamps = timing.map(|_| Stamps::default());
             let p = Problem::new(
                 |p: &[f64]| counted(&stamps, build, p),

@@ -25,4 +25,4 @@ def test_an_unknown_job_is_still_an_options_error_before_the_shard_is_read(root,
     sweep = root / "scenarios" / "equilibria_steer.toml"
     with pytest.raises(handling.OptionsError) as e:
         handling.run_shard("studies", sweep, 1, 2, out=tmp_path)
-    assert e.value.name == "studies" and "did you mean `study`" in str(e.value)
+    assert e.value.name == "studies" and "unknown job `studies`" in str(e.value)

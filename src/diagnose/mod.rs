@@ -34,6 +34,7 @@ pub(crate) mod model;
 pub mod pipeline;
 pub mod report;
 pub mod timing;
+mod unit_ratio;
 mod verdict;
 pub(crate) use verdict::rules;
 

@@ -692,7 +692,7 @@ fn layer_violations(
 /// The same order is in `src/diagnose/mod.rs` and the book's architecture
 /// chapter.
 const DIAGNOSE_STAGES: &[&[&str]] = &[
-    &["effects", "timing"],
+    &["effects", "timing", "unit_ratio"],
     &["campaign"],
     &["model"],
     &["fit"],

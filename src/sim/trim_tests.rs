@@ -54,10 +54,6 @@ fn combinations() -> Vec<(&'static str, VehicleModel)> {
             }),
         ),
         (
-            "compliance alone",
-            banked(|m| m.options.effects.steering_compliance = 3e-5),
-        ),
-        (
             "roll camber, aero",
             banked(|m| {
                 let e = &mut m.options.effects;

@@ -76,7 +76,7 @@ fn pac89_on_a_slip_angle_near_zero_neither_advises_bin_deg_0_nor_writes_a_fit() 
             }
         } else {
             assert!(
-                e.contains("each of the 4 test conditions lies within one 0.25° bin: the slip angle is not swept, and keeping every sample (--bin-deg 0) gives no fit either"),
+                e.contains("each of the 4 test conditions lies within one 0.250° bin: the slip angle is not swept, and keeping every sample (--bin-deg 0) gives no fit either"),
                 "{e}"
             );
         }

@@ -568,10 +568,6 @@ const SPLIT_ON_OTHER_BRANCHES: &[&str] = &[
     "diagnose/report/gap.rs::trusted_channel_gap",
     "diagnose/report/summary.rs::gap_summary",
     "diagnose/verdict/search.rs::search",
-    "jobs/identify/figures.rs::panel",
-    "jobs/identify/staged_figure.rs::panel",
-    "jobs/identify/staged_figure_tests.rs::the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points",
-    "jobs/identify/swarm.rs::run_swarm",
 ];
 
 /// The library's and the binary's functions (tests included) stay under
@@ -779,7 +775,7 @@ fn layer_violations(
 /// The same order is in `src/diagnose/mod.rs` and the book's architecture
 /// chapter.
 const DIAGNOSE_STAGES: &[&[&str]] = &[
-    &["effects", "timing"],
+    &["effects", "timing", "unit_ratio"],
     &["campaign"],
     &["model"],
     &["fit"],

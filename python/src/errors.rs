@@ -281,6 +281,10 @@ fn options_attrs(py: Python<'_>, o: &LibOptionsError, message: String) -> (PyErr
         | LibOptionsError::InputChanged { path: p }
         | LibOptionsError::CampaignsChanged { path: p }
         | LibOptionsError::MergeCount { path: p, .. } => attrs.push(("path", path(p))),
+        LibOptionsError::ShardOutOfRange { index, count } => {
+            attrs.push(("index", py_obj(py, *index)));
+            attrs.push(("count", py_obj(py, *count)));
+        }
         _ => {}
     }
     (OptionsError::new_err(message), attrs)

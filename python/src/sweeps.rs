@@ -16,9 +16,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use std::path::PathBuf;
 
-/// K of N, checked (1 ≤ K ≤ N).
+/// K of N, checked (1 ≤ K ≤ N): outside it, the library's `OptionsError`
+/// (a `HandlingError`, as the book says every error is), naming K/N and
+/// carrying `index` and `count`; a plain `ValueError` said neither.
 pub(crate) fn shard(index: usize, count: usize) -> PyResult<Shard> {
-    Shard::new(index, count).map_err(|e| PyValueError::new_err(e.to_string()))
+    Shard::new(index, count).map_err(py_err)
 }
 
 /// A stiffness study's model: one (front, rear) cornering-stiffness pair

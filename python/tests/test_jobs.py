@@ -93,7 +93,7 @@ def test_study_shards_on_three_merge_to_the_unsharded_run(tmp_path):
     assert merged["summary"] == whole.summary
     for f in ("study.csv", "summary.json"):
         assert (tmp_path / "merged" / f).read_bytes() == (tmp_path / "whole" / f).read_bytes()
-    with pytest.raises(ValueError):
+    with pytest.raises(handling.OptionsError):
         handling.run_shard("study", p, 4, 3)
 
 

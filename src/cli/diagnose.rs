@@ -7,7 +7,7 @@ use handling::jobs::diagnose;
 use handling::jobs::fleet::{self, BatchOutcome};
 use handling::jobs::shard::Shard;
 use handling::jobs::synth::{self, truth_named, EffectName};
-use handling::proving_ground::{Programme, Truth};
+use handling::proving_ground::{Programme, Truth, MAX_DURATION};
 use std::path::PathBuf;
 use std::str::FromStr;
 
@@ -127,10 +127,20 @@ pub fn synth(a: SynthArgs) -> Result<()> {
     Ok(())
 }
 
-/// A duration in seconds: a finite number above 0.
+/// A duration in seconds: a finite number above 0. The refusal names the
+/// value given and what is wrong with it (clap quotes the text before it,
+/// but "expected a number of seconds above 0" alone left a user of `nan`
+/// or `1e400`, read as infinite, guessing).
 fn seconds(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(d) if d.is_finite() && d > 0.0 => Ok(d),
-        _ => Err("expected a number of seconds above 0".to_string()),
-    }
+    let wrong = match s.parse::<f64>() {
+        Ok(d) if d.is_finite() && d > 0.0 => return Ok(d),
+        Ok(d) if d.is_nan() => format!("`{s}` is no number of seconds"),
+        Ok(d) if d.is_infinite() => format!("`{s}` is read as {d} s, no duration"),
+        Ok(_) => format!("`{s}` s is not above 0"),
+        Err(_) => format!("`{s}` is not a number"),
+    };
+    Err(format!(
+        "{wrong}: expected a number of seconds above 0 (a whole number from the \
+         programme's own to {MAX_DURATION})"
+    ))
 }

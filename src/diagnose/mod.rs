@@ -15,6 +15,7 @@
 //! | `verdict` | how the verdict is chosen: candidates scored on held-out runs, screening, the search, its rules as pure functions, and the verdict's case |
 //! | [`report`] | what the report says: its types, the typed outcome (the verdict's cases, refusals, warnings, notes), where the gap lies (per run, channel, window, regime), the tables, and the words made from them in one place |
 //! | [`pipeline`] | the stages in order, and [`timing`] where their time goes |
+//! | `unit_ratio` | a band gain of 180/π said as a unit slip (degrees read as radians), beside `effects` and `timing` in the first stage |
 //!
 //! The virtual proving ground that generates campaigns with known effects
 //! to check the diagnosis against is not part of it: it lives above it, in
@@ -34,6 +35,7 @@ pub(crate) mod model;
 pub mod pipeline;
 pub mod report;
 pub mod timing;
+mod unit_ratio;
 mod verdict;
 pub(crate) use verdict::rules;
 

@@ -16,6 +16,40 @@ fn rounded(loads: &[f64]) -> String {
     format!("{} N", listed.join(", "))
 }
 
+/// What a user told of too few slip-angle bins can do: `--bin-deg 0`
+/// only where every sample kept gives more points than parameters and the
+/// slip angle is swept (more bins than conditions); one bin per condition
+/// is no sweep, and no thinning makes a fit of it (`--bin-deg 0` then
+/// wrote a tyre at σ 100 %, every parameter unseen by the data).
+fn too_few_bins_advice(
+    samples: usize,
+    parameters: usize,
+    points: usize,
+    conditions: usize,
+    bin_deg: f64,
+) -> String {
+    if points <= conditions {
+        return format!(
+            "each of the {} lies within one {}° bin: the slip angle is not swept, and keeping every sample (--bin-deg 0) gives no fit either; a lateral force is fitted from a slip-angle sweep (`alpha` swept past the force's peak, 4° and beyond)",
+            plural(conditions, "test condition", "test conditions"),
+            crate::format::readable(bin_deg, 3)
+        );
+    }
+    match samples > parameters {
+        true => format!("--bin-deg 0 keeps every sample ({samples} points)"),
+        false => format!("every sample kept (--bin-deg 0) would still be no more than {parameters} points: the fit needs more samples"),
+    }
+}
+
+/// "every free one's standard error exceeds its value" with the count.
+fn unseen_free(free: usize) -> String {
+    match free {
+        0 => "none is free".to_string(),
+        1 => "its one free parameter's standard error exceeds its value, or it sits on its search bound".to_string(),
+        n => format!("each of its {n} free parameters has a standard error above its value or sits on its search bound"),
+    }
+}
+
 /// `channel: ` when a channel is named.
 fn prefix(channel: &Option<&'static str>) -> String {
     channel.map_or(String::new(), |c| format!("{c}: "))
@@ -38,10 +72,7 @@ pub enum FitError {
     /// [`FitError::TooFewPoints`] where the slip-angle thinning merged
     /// samples into bins: how many samples and how wide a bin, so that a
     /// user told "2 points" of a file with 3 rows sees where the third went.
-    #[error("{} with a measured {quantity} in {} of {}° slip angle (--bin-deg) cannot fit {}; {}", plural(*samples, "sample", "samples"), plural(*points, "bin", "bins"), crate::format::readable(*bin_deg, 3), plural(*parameters, "parameter", "parameters"), match samples > parameters {
-        true => format!("--bin-deg 0 keeps every sample ({samples} points)"),
-        false => format!("every sample kept (--bin-deg 0) would still be no more than {parameters} points: the fit needs more samples"),
-    })]
+    #[error("{} with a measured {quantity} in {} of {}° slip angle (--bin-deg) cannot fit {}; {}", plural(*samples, "sample", "samples"), plural(*points, "bin", "bins"), crate::format::readable(*bin_deg, 3), plural(*parameters, "parameter", "parameters"), too_few_bins_advice(*samples, *parameters, *points, *conditions, *bin_deg))]
     TooFewBins {
         /// Samples with the quantity measured, before thinning.
         samples: usize,
@@ -53,6 +84,29 @@ pub enum FitError {
         quantity: &'static str,
         /// Free parameters.
         parameters: usize,
+        /// The test conditions the bins lie in: as many bins as
+        /// conditions is one slip angle per condition, no sweep.
+        conditions: usize,
+    },
+    /// A fit in which the data see no parameter: every free one's standard
+    /// error is larger than its value (or it sits on its search bound) and
+    /// the rest are held, and the fit explains nothing of the data (σ of
+    /// 100 % or more, no better than a zero force). Refused, not written:
+    /// `--bin-deg 0` on rig data whose slip angle stays near 0 wrote such a
+    /// file at σ 100.002 %.
+    #[error("no parameter of the {model} model's {quantity} is determined by these data ({}; the rest held) and the fit explains none of them (σ {} %): it misses by more than a zero force would (is the column's sign the tyre's, as FORMATS.md fixes it?); the data do not see the model, so no tyre is written; {} reaches {}{}", unseen_free(*free), crate::format::fixed(*sigma_percent, 1), slip.0, slip.1, slip.2)]
+    NotSeen {
+        /// The tyre model.
+        model: &'static str,
+        /// The measured quantity (`lateral force`, …).
+        quantity: &'static str,
+        /// Free parameters (each with a standard error above its value).
+        free: usize,
+        /// The fit's σ, %.
+        sigma_percent: f64,
+        /// The slip column, its reach as read (`0.115°`), and the data that
+        /// would determine the model.
+        slip: (&'static str, String, &'static str),
     },
     /// A model without parameters for the quantity.
     #[error("the {model} model has no {quantity} to fit")]

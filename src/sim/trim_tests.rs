@@ -4,7 +4,9 @@
 //! states sit at the slip angles it gives. With the trim's steer and
 //! sideslip and the quasi-static extra states, every derivative vanishes
 //! and the run holds its initial state until the step (round 31: the roll
-//! was taken from u·r alone, so a banked trim rolled and yawed before it).
+//! was taken from u·r alone, so a banked trim rolled and yawed before it;
+//! round 41: a compliant front's lag state started at the kinematic slip,
+//! not the kinematic slip less the compliance's share, and drifted).
 
 use super::{Integrator, Method};
 use crate::manoeuvre::{Manoeuvre, StepSteer};
@@ -35,6 +37,21 @@ fn combinations() -> Vec<(&'static str, VehicleModel)> {
         (
             "lag alone",
             banked(|m| m.options.effects.relaxation_length = 0.5),
+        ),
+        (
+            "compliance, lag",
+            banked(|m| {
+                let e = &mut m.options.effects;
+                (e.steering_compliance, e.relaxation_length) = (3e-5, 0.5);
+            }),
+        ),
+        (
+            "compliance, lag, roll steer, aero",
+            banked(|m| {
+                let e = &mut m.options.effects;
+                (e.steering_compliance, e.relaxation_length) = (1e-5, 0.4);
+                (e.roll_steer, e.aero_load) = ([0.1, -0.05], [0.5, 0.7]);
+            }),
         ),
         (
             "roll camber, aero",

@@ -13,7 +13,7 @@
 //! a fit's dual numbers alike. Units: SI, rad; ISO 8855 signs.
 
 use super::balance::{projection, AxleSolution};
-use super::scalar::{ModelScalars, Scalar};
+use super::scalar::{off, ModelScalars, Scalar};
 use super::wheels::{AxleTyres, PlainTyres, FRONT};
 use super::{Inputs, Kinematics, LoadTransferSeed, Outputs, State, VehicleModel, MIN_SPEED};
 use crate::tyre::Tyre;
@@ -194,7 +194,34 @@ impl VehicleModel {
         let phi = e.roll.gradient * ay;
         let steer = [steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
         let (af, ar) = self.kinematic_slip(beta, r, u, steer);
+        let af = af - e.steering_compliance * self.steady_front_force(sc, ay, steer[0]);
         [beta, r, af, ar, phi, T::from(0.0)]
+    }
+
+    /// The front axle's lateral force (N) that holds the tyres' lateral
+    /// acceleration `ay` with no yaw acceleration at road-wheel steer
+    /// `steer`: Fyf·cos(δ − c·Fyf)·a = Fyr·b and Fyf·cos(δ − c·Fyf) + Fyr =
+    /// m·ay, so Fyf·cos(δ − c·Fyf) = m·ay·b/L. A compliant front's lag
+    /// state settles at the kinematic slip less c·Fyf, not at the kinematic
+    /// slip: started there, a banked trim with compliance and a lag drifted
+    /// before its step. Zero without compliance (the lag state is then the
+    /// kinematic slip, to the bit).
+    fn steady_front_force<T: Scalar>(&self, sc: &ModelScalars<T>, ay: T, steer: T) -> T {
+        let c = sc.effects.steering_compliance;
+        if off(c) {
+            return T::from(0.0);
+        }
+        let v = &self.vehicle;
+        let held = ay * (v.mass * v.b / (v.a + v.b));
+        let exact = self.options.kinematics == Kinematics::Exact;
+        // The projection's dependence on Fyf is c·Fyf·sin δ, a small
+        // fraction of it: the fixed point converges to round-off in a few
+        // steps.
+        let mut fyf = held;
+        for _ in 0..8 {
+            fyf = held / projection(exact, steer - c * fyf);
+        }
+        fyf
     }
 
     /// Derivatives of the full state and the outputs, with the load-transfer

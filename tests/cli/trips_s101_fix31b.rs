@@ -11,7 +11,11 @@ use super::*;
 /// The bundled sedan step (Wang & Liang's Gim sedan, 1° at 80 km/h, step
 /// at 1 s) with `[model.effects]` holding `effects`, simulated from
 /// `dir`: its history's header and rows.
-fn sedan_step_with(dir: &Path, name: &str, effects: &str) -> (Vec<String>, Vec<Vec<f64>>, String) {
+pub(super) fn sedan_step_with(
+    dir: &Path,
+    name: &str,
+    effects: &str,
+) -> (Vec<String>, Vec<Vec<f64>>, String) {
     let text = format!(
         "{}\n[model.effects]\n{effects}\n",
         bundled_scenario("sedan_step.toml")
@@ -26,7 +30,7 @@ fn sedan_step_with(dir: &Path, name: &str, effects: &str) -> (Vec<String>, Vec<V
 
 /// The largest change of column `name` from its first row over the rows
 /// before `t_end`.
-fn drift(head: &[String], rows: &[Vec<f64>], name: &str, t_end: f64) -> f64 {
+pub(super) fn drift(head: &[String], rows: &[Vec<f64>], name: &str, t_end: f64) -> f64 {
     let (t, c) = (column(head, "t"), column(head, name));
     rows.iter()
         .take_while(|r| r[t] < t_end)

@@ -458,9 +458,10 @@ pub fn finding(f: &GapFinding) -> String {
             gain_error_db,
             phase_error_deg,
         } => format!(
-            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads)",
+            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads){}",
             signed(*gain_error_db, 1),
-            signed(*phase_error_deg, 0)
+            signed(*phase_error_deg, 0),
+            gap::unit_hint(*gain_error_db)
         ),
         GapFinding::Dominant {
             channel,

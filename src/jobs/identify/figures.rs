@@ -120,6 +120,41 @@ fn title(
     )
 }
 
+/// A channel's slip on its figure's x axis: a slip ratio in %, an angle
+/// in degrees.
+fn slip_shown(ch: Channel, v: f64) -> f64 {
+    if ch == Channel::LongitudinalForce {
+        100.0 * v
+    } else {
+        v.to_degrees()
+    }
+}
+
+/// The fitted curve of condition `c` over its own slip range (so the y
+/// axis is the data's, not the model's beyond them): x as shown, y.
+fn fitted_curve(tyre: &Tyre, ch: Channel, c: &Condition) -> (Vec<f64>, Vec<f64>) {
+    let axis = match ch {
+        Channel::LongitudinalForce => SlipAxis::Ratio,
+        _ => SlipAxis::Angle,
+    };
+    let (lo, hi) = c
+        .points
+        .iter()
+        .map(|q| q.slip())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    let speed = c.points.first().map_or(10.0, |q| q.speed);
+    let xs: Vec<f64> = (0..=200)
+        .map(|i| lo + (hi - lo) * f64::from(i) / 200.0)
+        .collect();
+    let ys: Vec<f64> = xs
+        .iter()
+        .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
+        .collect();
+    (xs.iter().map(|a| slip_shown(ch, *a)).collect(), ys)
+}
+
 /// One channel at one camber and pressure: a colour per load, the
 /// measured points and the fitted line in it.
 fn panel(
@@ -130,17 +165,6 @@ fn panel(
     at: (f64, Option<f64>),
     names: &LevelNames,
 ) -> Panel {
-    let slip = |v: f64| {
-        if ch == Channel::LongitudinalForce {
-            100.0 * v
-        } else {
-            v.to_degrees()
-        }
-    };
-    let axis = match ch {
-        Channel::LongitudinalForce => SlipAxis::Ratio,
-        _ => SlipAxis::Angle,
-    };
     // The key says which marks are measured (points) and which fitted
     // (lines), in grey, before the loads' colours: a line per load in its
     // points' colour.
@@ -155,7 +179,7 @@ fn panel(
         let measured: Vec<(f64, f64, f64)> = c
             .points
             .iter()
-            .map(|q| (slip(q.slip()), ch.measured(q), ch.model(tyre, q)))
+            .map(|q| (slip_shown(ch, q.slip()), ch.measured(q), ch.model(tyre, q)))
             .filter(|p| p.1.is_finite())
             .collect();
         for (_, m, f) in &measured {
@@ -170,24 +194,7 @@ fn panel(
         let style = level_style(k);
         let colour = style.colour;
         series.push(Series::line("", &x, &y, colour).styled(Style::Points(2)));
-        // The fitted curve over the condition's own slip range: the y
-        // axis is then the data's, not the model's beyond them.
-        let (lo, hi) = c
-            .points
-            .iter()
-            .map(|q| q.slip())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(v), b.max(v))
-            });
-        let speed = c.points.first().map_or(10.0, |q| q.speed);
-        let xs: Vec<f64> = (0..=200)
-            .map(|i| lo + (hi - lo) * f64::from(i) / 200.0)
-            .collect();
-        let ys: Vec<f64> = xs
-            .iter()
-            .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
-            .collect();
-        let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
+        let (xd, ys) = fitted_curve(tyre, ch, c);
         // The line is drawn at the condition's own load, the report's
         // `curves[].fz`: the key says that number, and its level's name
         // where the terminal names the level otherwise (1639.7 N in the

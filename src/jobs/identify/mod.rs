@@ -41,10 +41,12 @@ pub use holds::Held;
 mod staged;
 mod standstill;
 mod two_stage;
+mod unseen;
 mod unused_columns;
 mod written_checks;
 pub use two_stage::{TwoStageReport, Written};
 pub use unused_columns::Measured;
+mod fit_key;
 mod staged_figure;
 mod staged_run;
 

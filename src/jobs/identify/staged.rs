@@ -79,6 +79,13 @@ pub struct StagedJob {
     /// Measured against fitted, a figure per stage fitted (a panel per
     /// camber, pressure and, where needed, load, each with its σ).
     pub figures: Vec<StageFigure>,
+    /// Files beside the outputs, named as this fit's, that it does not
+    /// write: `<out>.png`, the one figure of an earlier release's staged
+    /// fit (now `<out>.<stage>.png`). Said and kept: nothing tells that
+    /// this tool wrote it, and a file the tool cannot tell it wrote is
+    /// not deleted.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub not_from_this_fit: Vec<std::path::PathBuf>,
     /// The outputs, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,
@@ -124,7 +131,24 @@ impl StagedJob {
                 .map(|w| format!("  warning: {w}")),
         );
         out.extend(self.unfitted.iter().map(|l| format!("  {l}")));
+        out.extend(self.not_from_this_fit.iter().map(|p| {
+            format!(
+                "  note: {} beside it is not from this fit (an earlier fit's single figure; this fit's are one per stage, <out>.<stage>.png): kept, remove it by hand",
+                p.display()
+            )
+        }));
         out
+    }
+}
+
+/// The files beside the tyre file `out` named as a fit's outputs that a
+/// staged fit does not write (`<out>.png`), where they exist.
+pub(super) fn not_from_this_fit(out: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let single = out.with_extension("png");
+    if single.is_file() {
+        vec![single]
+    } else {
+        Vec::new()
     }
 }
 

@@ -17,10 +17,11 @@
 //! pure aligning moment and the overturning moment. The y range is the
 //! data's (the key sits beside the chart, [`crate::report::plot`]).
 
+pub(super) use super::fit_key::{key_entries, level_style, MEASURED};
 use crate::format::{fixed, plural};
 use crate::identify::grouping::{Levels as Named, Variable};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
-use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style, INK};
+use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style};
 use crate::tyre::mf::MagicFormula;
 use std::path::{Path, PathBuf};
 
@@ -445,29 +446,12 @@ fn panel(
             continue;
         }
         // One style per level drawn in the panel, none the key's grey.
-        let style = level_style(lines.len());
-        let colour = style.colour;
-        let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
-        let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
-        for (r, m) in at.iter().zip(&measured) {
-            e2 += (st.model(tyre, r) - m).powi(2);
-            y2 += m * m;
-        }
         let label = level_label(key, lv, by_other, k);
-        let (lx, ly) = model_line(tyre, st, key.x, &at);
-        // The key's entry on the level's line, as the swarm figure's; on
-        // its points where it has no line (a single slip value).
-        let (point_label, line_label) = if lx.is_empty() {
-            (label.as_str(), "")
-        } else {
-            ("", label.as_str())
-        };
-        let points = Series::line(point_label, &xs, &measured, colour).styled(Style::Points(3));
-        series.push(points.marked(Marker {
-            shape: style.shape,
-            ..RING
-        }));
-        lines.push(Series::line(line_label, &lx, &ly, colour).styled(style.line));
+        let (points, line, sums) = level_series(tyre, key, &at, &label, lines.len());
+        e2 += sums.0;
+        y2 += sums.1;
+        series.push(points);
+        lines.push(line);
     }
     series.extend(lines);
     let sigma = 100.0 * (e2 / y2).sqrt();
@@ -484,6 +468,43 @@ fn panel(
         series,
         ..Panel::default()
     }
+}
+
+/// One level's measured rows `at` (its points, ringed) and its fitted
+/// line, in the panel's `drawn`-th level style, labelled `label`; and the
+/// sums of squared residuals and of squared measurements over its rows.
+fn level_series(
+    tyre: &MagicFormula,
+    key: &Key,
+    at: &[&MfRow],
+    label: &str,
+    drawn: usize,
+) -> (Series, Series, (f64, f64)) {
+    let st = key.stage;
+    let style = level_style(drawn);
+    let colour = style.colour;
+    let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
+    let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
+    let (mut e2, mut y2) = (0.0, 0.0);
+    for (r, m) in at.iter().zip(&measured) {
+        e2 += (st.model(tyre, r) - m).powi(2);
+        y2 += m * m;
+    }
+    let (lx, ly) = model_line(tyre, st, key.x, at);
+    // The key's entry on the level's line, as the swarm figure's; on
+    // its points where it has no line (a single slip value).
+    let (point_label, line_label) = if lx.is_empty() {
+        (label, "")
+    } else {
+        ("", label)
+    };
+    let points = Series::line(point_label, &xs, &measured, colour).styled(Style::Points(3));
+    let points = points.marked(Marker {
+        shape: style.shape,
+        ..RING
+    });
+    let line = Series::line(line_label, &lx, &ly, colour).styled(style.line);
+    (points, line, (e2, y2))
 }
 
 /// How a measured row is drawn: a ring, hollow, so that the level's
@@ -503,53 +524,6 @@ fn level_label(key: &Key, lv: &Levels, by_other: bool, k: usize) -> String {
         Variable::Load.display(lv.load[k])
     }
 }
-
-/// The first entries of a fit figure's key, which say how measured and
-/// fitted are drawn: the measured points (grey, drawn as `points`) and
-/// the fitted line (in colour `fitted`). Every fit figure's panel opens
-/// its key with them; the levels' colours follow.
-pub(super) fn key_entries(points: Style, fitted: usize) -> Vec<Series> {
-    vec![
-        Series::line("measured", &[], &[], MEASURED).styled(points),
-        Series::line("fitted", &[], &[], fitted),
-    ]
-}
-
-/// How a panel's `k`-th level is drawn: its colour, its fitted line's
-/// dash and its measured points' marker.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct LevelStyle {
-    /// Palette index: the palette without black and the key's grey.
-    pub colour: usize,
-    /// Solid, dashed or dotted.
-    pub line: Style,
-    /// Ring, diamond or disc.
-    pub shape: Shape,
-}
-
-/// The style of a panel's `k`-th level: the nine colours of the palette
-/// that are neither black nor the key's grey with solid lines and rings,
-/// then the same colours with dashed lines and diamonds, then dotted lines
-/// and discs: 27 levels told apart (a moment stage's grid of slip ratios
-/// has 12; by colour alone the tenth level was drawn as the first).
-pub(super) fn level_style(k: usize) -> LevelStyle {
-    const CYCLES: [(Style, Shape); 3] = [
-        (Style::Line, Shape::Ring),
-        (Style::Dashed, Shape::Diamond),
-        (Style::Dotted, Shape::Disc),
-    ];
-    let colours = INK - 1;
-    let c = k % colours;
-    let (line, shape) = CYCLES[(k / colours) % CYCLES.len()];
-    LevelStyle {
-        colour: if c >= MEASURED { c + 1 } else { c },
-        line,
-        shape,
-    }
-}
-
-/// The palette index of the key's "measured" swatch (grey).
-pub(super) const MEASURED: usize = 7;
 
 /// Points of a model line: enough that the narrow peak of a combined-slip
 /// aligning moment near κ = 0 on a ±100 % axis is drawn as a curve.

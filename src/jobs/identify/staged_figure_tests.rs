@@ -4,7 +4,7 @@
 //! colour per condition, each panel's own σ, the x variable of each stage.
 
 use super::*;
-use crate::report::plot::Axes;
+use crate::report::plot::{Axes, INK};
 
 fn tyre() -> MagicFormula {
     crate::io::tir::read_tir_text(
@@ -144,35 +144,39 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points()
         assert_eq!(colours.len(), points.len(), "{}: {colours:?}", p.title);
         assert!(colours.iter().all(|c| *c != INK && *c != MEASURED));
         for (m, l) in points.iter().zip(&lines) {
-            // The line in its points' colour, a smooth curve (at least 100
-            // slips, far more than the condition's 41 or 20 points) in
-            // increasing x, over their slip range.
-            assert_eq!(l.color, m.color, "{}", p.title);
-            assert!(
-                l.x.len() >= 100 && l.x.len() > 2 * m.x.len(),
-                "{}: {} points on the line, {} measured",
-                p.title,
-                l.x.len(),
-                m.x.len()
-            );
-            assert!(l.x.windows(2).all(|w| w[1] > w[0]), "{}", p.title);
-            // Evenly spaced: not the measured points' own slips.
-            let step = l.x[1] - l.x[0];
-            assert!(
-                l.x.windows(2)
-                    .all(|w| (w[1] - w[0] - step).abs() < 1e-9 * step.abs().max(1.0)),
-                "{}",
-                p.title
-            );
-            let (mx0, mx1) =
-                m.x.iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                        (a.min(*v), b.max(*v))
-                    });
-            assert!((l.x[0] - mx0).abs() < 1e-9 && (l.x[l.x.len() - 1] - mx1).abs() < 1e-9);
-            assert!(x.0 <= mx0 && x.1 >= mx1);
+            a_line_over_its_points(p, m, l, x);
         }
     }
+}
+
+/// Condition `m`'s fitted line `l` in panel `p` (x axis `x`): in its points'
+/// colour, at least 100 slips (far more than the condition's 41 or 20
+/// points) evenly spaced in increasing x over their range, in the axis.
+fn a_line_over_its_points(p: &Panel, m: &Series, l: &Series, x: (f64, f64)) {
+    assert_eq!(l.color, m.color, "{}", p.title);
+    assert!(
+        l.x.len() >= 100 && l.x.len() > 2 * m.x.len(),
+        "{}: {} points on the line, {} measured",
+        p.title,
+        l.x.len(),
+        m.x.len()
+    );
+    assert!(l.x.windows(2).all(|w| w[1] > w[0]), "{}", p.title);
+    // Evenly spaced: not the measured points' own slips.
+    let step = l.x[1] - l.x[0];
+    assert!(
+        l.x.windows(2)
+            .all(|w| (w[1] - w[0] - step).abs() < 1e-9 * step.abs().max(1.0)),
+        "{}",
+        p.title
+    );
+    let (mx0, mx1) =
+        m.x.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(*v), b.max(*v))
+            });
+    assert!((l.x[0] - mx0).abs() < 1e-9 && (l.x[l.x.len() - 1] - mx1).abs() < 1e-9);
+    assert!(x.0 <= mx0 && x.1 >= mx1);
 }
 
 #[test]
@@ -316,7 +320,7 @@ fn is_line(style: Style) -> bool {
 #[test]
 fn levels_past_the_palette_are_told_apart_by_dash_and_marker() {
     // 27 levels, each its own style; none black nor the key's grey.
-    let styles: Vec<LevelStyle> = (0..27).map(level_style).collect();
+    let styles: Vec<_> = (0..27).map(level_style).collect();
     for (k, a) in styles.iter().enumerate() {
         assert!(a.colour != INK && a.colour != MEASURED, "{k}: {a:?}");
         if let Some(j) = styles[..k].iter().position(|b| b == a) {

@@ -94,6 +94,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         file_warnings,
         input_warnings,
         figures,
+        not_from_this_fit: super::staged::not_from_this_fit(&out),
         tir,
         unfitted,
         options: o.clone(),

@@ -18,7 +18,7 @@ use crate::identify::grouping::{group, Grouped, Grouping, SlipAxis};
 use crate::identify::lifted::without_lifted;
 use crate::identify::pac89_two_stage::TwoStage;
 use crate::identify::pooled::Pooled;
-use crate::identify::{fit_channel_holding, start_tyre_of, Channel, FitSettings};
+use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSettings};
 use crate::io::rig::read_rig_with_moments;
 use crate::report::refuse_overwrites;
 use crate::tyre::{Identification, ModelName, Tyre};
@@ -49,17 +49,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let lock = output_lock(o)?;
     // Counted over the conditions fitted, not the file's levels.
     let pooled = Pooled::of(&tyre0, &grouped.report).among(&conditions);
-    // The two-stage identification fits every coefficient: with a
-    // coefficient held with --hold it is not run (the summary says so).
-    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
-        && first == Channel::LateralForce
-        && o.hold.is_empty();
-    let (fit, stages) = two_stage::beside_direct(asks_two_stage, &conditions, &settings, || {
-        fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
-    });
-    let fit = fit
-        .map_err(|e| thinned_too_far(e, &grouped.report))
-        .map_err(on_data(o, None))?;
+    let (fit, stages) = first_fit(o, model, (&tyre0, first), &conditions, &settings, &grouped)?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         file: String::new(),
@@ -106,8 +96,33 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         settings: &settings,
     };
     later_fits(o, &mut r, &tyre0, stages, inputs)?;
+    super::unseen::refuse_unseen(&r.fit, &r.conditions).map_err(on_data(o, None))?;
     finish(o, &mut r)?;
     Ok(r)
+}
+
+/// The first channel's fit of `tyre0` to `conditions`, and PAC89's two
+/// stages beside it where they are run. The two-stage identification fits
+/// every coefficient: with a coefficient held with --hold it is not run
+/// (the summary says so).
+fn first_fit(
+    o: &Options,
+    model: ModelName,
+    (tyre0, first): (&Tyre, Channel),
+    conditions: &[Condition],
+    settings: &FitSettings,
+    grouped: &Grouped,
+) -> Result<(Fit, Option<Result<TwoStage, FitError>>), Error> {
+    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
+        && first == Channel::LateralForce
+        && o.hold.is_empty();
+    let (fit, stages) = two_stage::beside_direct(asks_two_stage, conditions, settings, || {
+        fit_channel_holding(tyre0, first, conditions, settings, &o.hold)
+    });
+    let fit = fit
+        .map_err(|e| thinned_too_far(e, &grouped.report, conditions))
+        .map_err(on_data(o, None))?;
+    Ok((fit, stages))
 }
 
 /// The fit's settings from the options `o`: the seed, the local polish,
@@ -208,7 +223,11 @@ fn later_fits(
 /// Too few points where the slip-angle bins merged samples, said with
 /// the samples and the bin ([`FitError::TooFewBins`]): three rows 0.0025
 /// rad apart, two of them in one 0.25° bin, were said as "2 points".
-fn thinned_too_far(e: Error, report: &crate::identify::grouping::GroupingReport) -> Error {
+fn thinned_too_far(
+    e: Error,
+    report: &crate::identify::grouping::GroupingReport,
+    conditions: &[Condition],
+) -> Error {
     match e {
         Error::Fit(FitError::TooFewPoints {
             points,
@@ -224,6 +243,7 @@ fn thinned_too_far(e: Error, report: &crate::identify::grouping::GroupingReport)
                 bin_deg: report.slip_bin.to_degrees(),
                 quantity,
                 parameters,
+                conditions: conditions.len(),
             }
             .into()
         }

@@ -170,18 +170,27 @@ pub fn band_lines(findings: &[GapFinding], runs: usize) -> Vec<String> {
         .into_iter()
         .map(|((lo, hi), v)| match v.as_slice() {
             [(run, gain, phase)] => format!(
-                "{run}: yaw-rate response {lo:.2}–{hi:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads)",
+                "{run}: yaw-rate response {lo:.2}–{hi:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads){}",
                 crate::format::signed(*gain, 1),
-                crate::format::signed(*phase, 0)
+                crate::format::signed(*phase, 0),
+                unit_hint(*gain)
             ),
             _ => format!(
-                "yaw-rate response {lo:.2}–{hi:.2} Hz off in {} of {runs} runs: {} dB, {}° (simulated against measured: + the model leads; each run's in diagnosis.json)",
+                "yaw-rate response {lo:.2}–{hi:.2} Hz off in {} of {runs} runs: {} dB, {}° (simulated against measured: + the model leads; each run's in diagnosis.json){}",
                 v.len(),
                 range(&v, |e| e.1, 1),
-                range(&v, |e| e.2, 0)
+                range(&v, |e| e.2, 0),
+                unit_hint(v.iter().map(|e| e.1).fold(0.0, |a: f64, g| if g.abs() > a.abs() { g } else { a }))
             ),
         })
         .collect()
+}
+
+/// "; <hint>" where a band's gain error is a degree-to-radian ratio
+/// ([`crate::diagnose::unit_ratio`]), else nothing.
+pub(super) fn unit_hint(gain_error_db: f64) -> String {
+    crate::diagnose::unit_ratio::degree_ratio_hint(gain_error_db)
+        .map_or(String::new(), |h| format!("; {h}"))
 }
 
 /// The steady offsets a channel's dominance was judged without

@@ -31,8 +31,6 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::replay::UNMEASURED_START;
-#[cfg(doc)]
-use crate::diagnose::model::scale::floor_counting;
 use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{
@@ -110,13 +108,10 @@ pub struct ChannelGap {
     pub worst_window: Option<WindowGap>,
     /// Standard error of the bias (the residual's autocorrelation counted).
     pub bias_standard_error: f64,
-    /// How the floor's part above the residual's scatter counts in that
-    /// standard error: `white` (a draw a sample: measured scatter, a
-    /// sensor's floor) or `slow` (one draw for the run: an estimator's
-    /// floor; [`floor_counting`]).
+    /// How the floor counts in that standard error: `white`, a draw a
+    /// sample, or `slow`, one for the run (an estimator's floor).
     pub bias_counting: FloorCounting,
-    /// The bias beyond [`scan::bias_threshold`] standard errors (4 white,
-    /// 3 slow).
+    /// The bias beyond [`scan::bias_threshold`] standard errors.
     pub bias_significant: bool,
     /// By time window.
     pub windows: Vec<PartGap>,
@@ -240,8 +235,8 @@ pub fn channel_gap(
 
 /// The gap of one channel of a record against the noise floor `trusted`
 /// (the campaign's trusted uncertainty; its own scatter where None or 0),
-/// its excess over the residual's scatter counted in the bias test as
-/// `counting` says (white for the channel's own scatter).
+/// counted in the bias test as `counting` says (white for its own scatter:
+/// the trust's countings are white wherever its floor is 0).
 pub fn trusted_channel_gap(
     channel: Channel,
     rec: &Record,
@@ -276,11 +271,6 @@ pub fn trusted_channel_gap(
     let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
     let from = scored_from(rec.start);
     let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
-    // A floor of the run's own scatter is white by its definition.
-    let counting = match noise_source {
-        NoiseSource::Trusted => counting,
-        _ => FloorCounting::White,
-    };
     let bias = scan::bias_test(t, &e, noise_floor, counting, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated);
     let found = Found {

@@ -24,8 +24,7 @@
 //!   while a noise slower than a fixed quarter second, counted by it, read
 //!   as a bias (a state estimator's sideslip); significant beyond
 //!   [`BIAS_STANDARD_ERRORS`].
-//! - Where the floor exceeds the residual's scatter, the excess is the
-//!   floor's, counted as what it stands for
+//! - The floor is counted as what it stands for
 //!   ([`crate::diagnose::model::scale::floor_counting`]): measured scatter
 //!   and a gyro's or accelerometer's floor (even over a smoothed or
 //!   noise-free record: a low-pass leaves a white noise's mean's standard

@@ -282,7 +282,8 @@ fn grid_note(ctx: &Context, step: f64) -> Option<Note> {
 
 /// Where the gap lies: every run replayed by the all-run base model, each
 /// channel against its trusted noise floor.
-fn base_gaps(c: &Campaign, all: &Augmented, floors: &[f64; 3]) -> Vec<RunGap> {
+fn base_gaps(c: &Campaign, all: &Augmented, trust: &Trust) -> Vec<RunGap> {
+    let floors = (&trust.floors, &trust.countings);
     c.runs
         .par_iter()
         .map(|run| base_run_gap(all, run, c.settings.step, floors))
@@ -422,11 +423,8 @@ fn run(
     let set = &c.settings;
     let (effects, visibility) = candidates_seen(c)?;
     let (runs, folds, pso) = prepare(c);
-    let Trust {
-        noise,
-        scales,
-        floors,
-    } = channel_trust(&c.runs, &c.uncertainty);
+    let trust = channel_trust(&c.runs, &c.uncertainty);
+    let scales = trust.scales;
     let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, scales, timing)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
@@ -438,7 +436,8 @@ fn run(
             let campaign = c.source.clone();
             DiagnosisError::BetaAgainstModel { campaign, source }
         })?;
-    let run_gaps = base_gaps(c, &bases.all, &floors);
+    let run_gaps = base_gaps(c, &bases.all, &trust);
+    let Trust { noise, floors, .. } = trust;
     let calibrated = calibrated(c);
     let ctx = Context {
         calibrated,

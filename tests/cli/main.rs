@@ -437,6 +437,7 @@ mod trips_s100_fix30c;
 mod trips_s100_fix30d;
 mod trips_s100_perf40;
 mod trips_s100_words39;
+mod trips_s101_beta39;
 mod trips_s101_fix31a;
 mod trips_s101_fix31b;
 mod trips_s101_fix31c;

@@ -85,6 +85,48 @@ pub enum ScaleSource {
     Estimated,
 }
 
+/// How the part of a channel's floor above its own scatter counts in the
+/// standard error of a run's mean residual (the gap's bias test).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FloorCounting {
+    /// White noise: a new draw every sample, counted over all of them.
+    White,
+    /// A slow error (an estimator's drift, a misalignment): one draw for
+    /// the whole run, counted once.
+    Slow,
+}
+
+/// What channel `c`'s floor (from `source`, its high-frequency `scatter`
+/// beside it) stands for, and so how the bias test counts it:
+/// - a floor read from the scatter, or a gyro's or accelerometer's sensor
+///   floor, is the sensor's noise: white;
+/// - a yaw rate or `ay` smoother than any sensor is a gyro's or an
+///   accelerometer's record smoothed or noise-free (they are measured, not
+///   estimated: [`QUIET_SENSOR_SHARE`]); its floor is the white noise the
+///   smoothing took away, and a low-pass leaves the standard error of a
+///   white noise's mean as it was: white. Their slow error, an offset, is
+///   the very bias the test looks for;
+/// - a sideslip that reads as an estimator's output (its scatter below
+///   [`SMOOTH_SHARE`] of the slip sensor's floor), trusted to an estimated
+///   output's uncertainty or to one the user stated: its record shows
+///   nothing of that uncertainty, which is the estimator's lag, drift and
+///   misalignment, at low frequency: slow. A run's mean inside it is not
+///   evidence of a bias (Chindamo, Lenzo & Gadola 2018: estimators' errors
+///   are offsets and drifts over a manoeuvre, not sample-to-sample scatter);
+/// - a sideslip read as a sensor's (stated or not): white.
+pub fn floor_counting(c: Channel, source: ScaleSource, scatter: f64) -> FloorCounting {
+    match (c, source) {
+        (Channel::YawRate | Channel::Ay, _) => FloorCounting::White,
+        (Channel::Beta, ScaleSource::Scatter | ScaleSource::SensorFloor) => FloorCounting::White,
+        (Channel::Beta, ScaleSource::Estimated) => FloorCounting::Slow,
+        (Channel::Beta, ScaleSource::Stated) if reads_as_estimated(c, scatter) => {
+            FloorCounting::Slow
+        }
+        (Channel::Beta, ScaleSource::Stated) => FloorCounting::White,
+    }
+}
+
 /// How far a channel is trusted.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ChannelScale {
@@ -379,6 +421,31 @@ mod tests {
         );
         let e = stated_excess(Channel::Beta, ScaleSource::Stated, 0.06, 0.0002).unwrap();
         assert!(e.estimated && (e.times - 12.0).abs() < 1e-12, "{e:?}");
+    }
+
+    #[test]
+    fn only_a_sideslip_read_as_an_estimator_s_output_has_a_slow_floor() {
+        use FloorCounting::{Slow, White};
+        let counted = |c, stated: StatedUncertainty, scatter| {
+            let s = channel_scale(c, &stated, scatter, 0.05);
+            floor_counting(c, s.source, scatter)
+        };
+        let beta = |v| StatedUncertainty {
+            beta: Some(v),
+            ..NONE
+        };
+        // Putnam's sideslip (0.0002 rad): an estimator's, assumed or stated.
+        assert_eq!(counted(Channel::Beta, NONE, 0.0002), Slow);
+        assert_eq!(counted(Channel::Beta, beta(0.004), 0.0002), Slow);
+        // A slip sensor, at its floor or beyond it, stated or not.
+        assert_eq!(counted(Channel::Beta, NONE, 0.0012), White);
+        assert_eq!(counted(Channel::Beta, NONE, 0.003), White);
+        assert_eq!(counted(Channel::Beta, beta(0.004), 0.0012), White);
+        // A noise-free or smoothed gyro's or accelerometer's record: white.
+        for c in [Channel::YawRate, Channel::Ay] {
+            assert_eq!(counted(c, NONE, 0.0), White);
+            assert_eq!(counted(c, NONE, 0.01), White);
+        }
     }
 
     #[test]

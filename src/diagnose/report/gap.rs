@@ -31,6 +31,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::replay::UNMEASURED_START;
+use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{
     regime_samples, scatter_by, timed_from_an_input, window_samples, Levels, Part, Scatter,
@@ -109,7 +110,10 @@ pub struct ChannelGap {
     pub worst_window: Option<WindowGap>,
     /// Standard error of the bias (the residual's autocorrelation counted).
     pub bias_standard_error: f64,
-    /// The bias beyond [`scan::BIAS_STANDARD_ERRORS`] standard errors.
+    /// How the floor counts in that standard error: `white`, a draw a
+    /// sample, or `slow`, one for the run (an estimator's floor).
+    pub bias_counting: FloorCounting,
+    /// The bias beyond [`scan::bias_threshold`] standard errors.
     pub bias_significant: bool,
     /// By time window.
     pub windows: Vec<PartGap>,
@@ -221,17 +225,27 @@ pub fn channel_gap(
     measured: &[f64],
     simulated: &[f64],
 ) -> ChannelGap {
-    trusted_channel_gap(channel, rec, measured, simulated, None)
+    trusted_channel_gap(
+        channel,
+        rec,
+        measured,
+        simulated,
+        None,
+        FloorCounting::White,
+    )
 }
 
 /// The gap of one channel of a record against the noise floor `trusted`
-/// (the campaign's trusted uncertainty; its own scatter where None or 0).
+/// (the campaign's trusted uncertainty; its own scatter where None or 0),
+/// counted in the bias test as `counting` says (white for its own scatter:
+/// the trust's countings are white wherever its floor is 0).
 pub fn trusted_channel_gap(
     channel: Channel,
     rec: &Record,
     measured: &[f64],
     simulated: &[f64],
     trusted: Option<f64>,
+    counting: FloorCounting,
 ) -> ChannelGap {
     let (t, steer) = (rec.t, rec.steer);
     let n = t.len();
@@ -259,7 +273,7 @@ pub fn trusted_channel_gap(
     let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
     let from = scored_from(rec.start);
     let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
-    let bias = scan::bias_test(t, &e, noise_floor, resolved);
+    let bias = scan::bias_test(t, &e, noise_floor, counting, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated)
         .filter(|&s| shift::resolved(dt, measured, simulated, s, tau));
     let found = Found {
@@ -299,6 +313,7 @@ pub fn trusted_channel_gap(
         input_correlation_lag: lag as f64 * dt,
         time_shift,
         bias_standard_error: bias.standard_error,
+        bias_counting: bias.counting,
         bias_significant: bias.significant,
         worst_window: window,
         windows,
@@ -402,11 +417,12 @@ fn replay_start(run: &crate::measured::MeasuredRun) -> f64 {
 
 /// The gap of every measured channel of a replayed run, on its unmasked
 /// samples, each against its `trusted` noise floor (by channel index; 0:
-/// the run's own scatter).
+/// the run's own scatter), counted in the bias test as `counting` says.
 pub fn run_gap(
     run: &crate::measured::MeasuredRun,
     sim: &crate::sim::TimeHistory,
     trusted: &[f64; 3],
+    counting: &[FloorCounting; 3],
 ) -> Vec<ChannelGap> {
     let idx = scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
@@ -422,7 +438,8 @@ pub fn run_gap(
         speed: &speed,
     };
     let gap = |c: Channel, m: &[f64], s: &[f64]| {
-        trusted_channel_gap(c, &rec, &pick(m), &at(s), Some(trusted[c.index()]))
+        let i = c.index();
+        trusted_channel_gap(c, &rec, &pick(m), &at(s), Some(trusted[i]), counting[i])
     };
     let mut out = vec![gap(Channel::YawRate, &run.yaw_rate, &sim.yaw_rate)];
     if let Some(ay) = &run.ay {

@@ -7,6 +7,7 @@
 use crate::diagnose::model::channels::reduction;
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, GapFinding};
@@ -17,12 +18,13 @@ use crate::measured::MeasuredRun;
 
 /// The base model's gap on one run, at the run's own samples (the base
 /// model has no sensor effects: its history is what the sensors read),
-/// each channel against its `trusted` noise floor.
+/// each channel against its `trusted` noise floor, counted in the bias test
+/// as `counting` says.
 pub(crate) fn base_run_gap(
     base: &Augmented,
     run: &MeasuredRun,
     step: f64,
-    trusted: &[f64; 3],
+    (trusted, counting): (&[f64; 3], &[FloorCounting; 3]),
 ) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let history = p.replay(base);
@@ -33,7 +35,7 @@ pub(crate) fn base_run_gap(
         .iter()
         .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
         .collect();
-    let channels = run_gap(run, &history, trusted);
+    let channels = run_gap(run, &history, trusted, counting);
     // The bands are judged against the yaw rate's noise floor, as its gap is.
     let floor = channels
         .iter()

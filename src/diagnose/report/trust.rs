@@ -12,7 +12,9 @@
 
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::model::scale::{channel_scale, reads_as_estimated, signal_rms, stated_excess};
+use crate::diagnose::model::scale::{
+    channel_scale, floor_counting, reads_as_estimated, signal_rms, stated_excess, FloorCounting,
+};
 use crate::diagnose::report::summary::run_scatter;
 use crate::diagnose::report::ChannelNoise;
 use crate::measured::clean::median;
@@ -29,6 +31,9 @@ pub struct Trust {
     pub scales: [f64; 3],
     /// The noise floors by channel index (0 where no run measures it).
     pub floors: [f64; 3],
+    /// How each floor counts in the bias test, by channel index
+    /// ([`floor_counting`]; white where no run measures the channel).
+    pub countings: [FloorCounting; 3],
 }
 
 /// How far each channel of `runs` is trusted, with the uncertainties the
@@ -38,6 +43,7 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
     let rms = signal_rms(runs);
     let mut scales = [1.0; 3];
     let mut floors = [0.0; 3];
+    let mut countings = [FloorCounting::White; 3];
     let noise = Channel::ALL
         .into_iter()
         .filter_map(|ch| {
@@ -57,6 +63,7 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
                 let trust = channel_scale(ch, stated, scatter, rms[ch.index()]);
                 scales[ch.index()] = trust.scale;
                 floors[ch.index()] = trust.uncertainty;
+                countings[ch.index()] = floor_counting(ch, trust.source, scatter);
                 ChannelNoise {
                     channel: ch,
                     unit: ch.unit(),
@@ -75,5 +82,6 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
         noise,
         scales,
         floors,
+        countings,
     }
 }

@@ -24,6 +24,20 @@
 //!   while a noise slower than a fixed quarter second, counted by it, read
 //!   as a bias (a state estimator's sideslip); significant beyond
 //!   [`BIAS_STANDARD_ERRORS`].
+//! - The floor is counted as what it stands for
+//!   ([`crate::diagnose::model::scale::floor_counting`]): measured scatter
+//!   and a gyro's or accelerometer's floor (even over a smoothed or
+//!   noise-free record: a low-pass leaves a white noise's mean's standard
+//!   error as it was) are white noise, one draw a sample, `floor²/n`; the
+//!   floor of a sideslip that reads as an estimator's output (assumed, or
+//!   stated by the user) stands for the estimator's drift and
+//!   misalignment, slow error, one draw for the whole run, the whole
+//!   `floor²` added to the noise's part (an offset moves the residual's
+//!   mean, not its scatter, so no scatter covers it): a mean is then a
+//!   bias only beyond [`SLOW_BIAS_STANDARD_ERRORS`] of it, about three
+//!   floors, the whole-run test's line, and beyond
+//!   [`BIAS_STANDARD_ERRORS`] of the noise's part alone. The counting used
+//!   is reported per channel (`bias_counting`, and in the words).
 //! - The time shift: the lag of the largest correlation of the measured
 //!   channel with the simulated one over ±[`MAX_SHIFT`] s, refined between
 //!   samples by a parabola through the peak and its neighbours; only where
@@ -33,6 +47,7 @@
 //!
 //! Units: the channel's own; times in s.
 
+use crate::diagnose::model::scale::FloorCounting;
 use crate::measured::calibration::stats::integrated_time;
 use crate::stats::CentredSums;
 use serde::Serialize;
@@ -97,6 +112,23 @@ pub struct WindowGap {
     pub significant: bool,
 }
 
+/// Standard errors of the mean beyond which a bias is significant where
+/// the floor is counted as a slow error ([`FloorCounting::Slow`]): the
+/// floor's part is then one draw for the run, so the standard error is
+/// about one floor and the line is the whole-run test's three noise floors
+/// (a normal tail of 0.003 on both sides: a run's mean is one draw of the
+/// error, as its RMS is).
+pub const SLOW_BIAS_STANDARD_ERRORS: f64 = 3.0;
+
+/// The standard errors beyond which a bias counted by `counting` is
+/// significant.
+pub fn bias_threshold(counting: FloorCounting) -> f64 {
+    match counting {
+        FloorCounting::White => BIAS_STANDARD_ERRORS,
+        FloorCounting::Slow => SLOW_BIAS_STANDARD_ERRORS,
+    }
+}
+
 /// A bias tested against its standard error.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BiasTest {
@@ -106,7 +138,9 @@ pub struct BiasTest {
     pub standard_errors: f64,
     /// Effective samples (samples over the autocorrelation time).
     pub effective_samples: f64,
-    /// Beyond [`BIAS_STANDARD_ERRORS`].
+    /// How the floor's part above the residual's scatter was counted.
+    pub counting: FloorCounting,
+    /// Beyond [`bias_threshold`] of the counting.
     pub significant: bool,
 }
 
@@ -241,24 +275,49 @@ pub(super) fn worst_window(
 /// follows it ([`super::drift::bias_noise_time`]), not by the residual's
 /// own: the error tested is not its noise, and a noise slower than a
 /// quarter second is not an error. Where the floor exceeds the residual's
-/// own scatter, the excess is the floor's, white by its definition, and is
-/// counted over every sample: counted over the correlation time of a
-/// replay's deterministic transient error (0.00026 rad/s against a
-/// 0.005 rad/s floor), a 0.01 rad/s gyro offset read "1.3 standard errors
-/// … over 0 effective samples".
-pub(super) fn bias_test(t: &[f64], e: &[f64], floor: f64, resolved: bool) -> BiasTest {
+/// own scatter, the excess is counted as the floor's `counting` says
+/// ([`FloorCounting`]). White, over every sample: counted over the
+/// correlation time of a replay's deterministic transient error
+/// (0.00026 rad/s against a 0.005 rad/s floor), a 0.01 rad/s gyro offset
+/// read "1.3 standard errors … over 0 effective samples". Slow, once over
+/// the run: an estimator's sideslip trusted to 0.005 rad had any 0.5 mrad
+/// mean "a bias" of ten standard errors of 0.0001 rad (Putnam's log: 19
+/// of its 46 channels), though the floor stands for the estimator's own
+/// drift and misalignment, which a run's mean inside it may well be.
+pub(super) fn bias_test(
+    t: &[f64],
+    e: &[f64],
+    floor: f64,
+    counting: FloorCounting,
+    resolved: bool,
+) -> BiasTest {
     let n = e.len().max(1) as f64;
     let m = mean(e);
     let var = e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n;
     let tau = super::drift::bias_noise_time(t, e);
-    let weighed = var * tau + (floor * floor - var).max(0.0);
+    // The floor in `n × (the mean's variance)`. White: a draw a sample,
+    // and only its excess over the residual's scatter, which already holds
+    // that noise. Slow: one draw for all `n`, and the whole floor, since
+    // an estimator's offset moves the residual's mean, not its scatter.
+    let weighed = var * tau
+        + match counting {
+            FloorCounting::White => (floor * floor - var).max(0.0),
+            FloorCounting::Slow => floor * floor * n,
+        };
     let standard_error = (weighed / n).sqrt();
     let standard_errors = m.abs() / standard_error;
+    // Beyond its line, and beyond the white line of the residual's own
+    // noise alone (the slow line is for the floor's one draw, not for a
+    // noise counted over many samples).
+    let noise_alone = m.abs() / (var * tau / n).sqrt();
     BiasTest {
         standard_error,
         standard_errors,
         effective_samples: n * var.max(floor * floor) / weighed.max(f64::MIN_POSITIVE),
-        significant: resolved && standard_errors > BIAS_STANDARD_ERRORS,
+        counting,
+        significant: resolved
+            && standard_errors > bias_threshold(counting)
+            && noise_alone > BIAS_STANDARD_ERRORS,
     }
 }
 
@@ -405,7 +464,7 @@ mod tests {
             .enumerate()
             .map(|(i, x)| (x - m) / sd + if i >= 400 { 2.0 } else { 0.0 })
             .collect();
-        let b = bias_test(&t, &e, 1.0, true);
+        let b = bias_test(&t, &e, 1.0, FloorCounting::White, true);
         let closed = 2.0_f64.sqrt() / 800.0_f64.sqrt();
         assert!(b.effective_samples > 600.0, "{b:?}");
         assert!(
@@ -434,7 +493,7 @@ mod tests {
             .iter()
             .map(|&t| 0.2 + 1e-4 * (2.0 * std::f64::consts::PI * 0.3 * t).sin())
             .collect();
-        let b = bias_test(&t, &e, 1.0, true);
+        let b = bias_test(&t, &e, 1.0, FloorCounting::White, true);
         assert!(b.significant, "{b:?}");
         assert!(
             (b.standard_errors - 0.2 * 800f64.sqrt()).abs() < 0.01,
@@ -455,7 +514,7 @@ mod tests {
                 .iter()
                 .map(|_| crate::optim::stats::gauss(&mut rng))
                 .collect();
-            alarms += usize::from(bias_test(&t, &e, 1.0, true).significant);
+            alarms += usize::from(bias_test(&t, &e, 1.0, FloorCounting::White, true).significant);
         }
         assert!(alarms <= 1, "{alarms} of 200");
     }
@@ -509,7 +568,7 @@ mod tests {
             let mut ratios = Vec::new();
             for _ in 0..20 {
                 let e = first_order(&mut rng, n, seconds / 0.01);
-                let b = bias_test(&t, &e, 0.0, true);
+                let b = bias_test(&t, &e, 0.0, FloorCounting::White, true);
                 ratios.push(b.effective_samples / closed);
                 alarms += usize::from(b.significant);
                 let old = noise_time(&t, &e);

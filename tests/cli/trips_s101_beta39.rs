@@ -40,14 +40,14 @@ fn estimator_sideslip_replay(dir: &Path, seed: u64, offset: f64) -> PathBuf {
 }
 
 /// The replay's line for `name` on the terminal and its entry in gap.json.
-fn replayed(dir: &Path, seed: u64, offset: f64) -> (String, serde_json::Value) {
+pub(super) fn replayed(dir: &Path, seed: u64, offset: f64) -> (String, serde_json::Value) {
     let scenario = estimator_sideslip_replay(dir, seed, offset);
     let out = dir.join("out");
     let stdout = simulate_to(&scenario, &out);
     (stdout, read_json(&out.join("gap.json")))
 }
 
-fn channel<'a>(
+pub(super) fn channel<'a>(
     stdout: &'a str,
     gap: &'a serde_json::Value,
     name: &str,

@@ -198,6 +198,62 @@ pub(crate) fn parts_table(
         .collect()
 }
 
+/// Channel `ch`'s finding ([`gap_summary`]): where its held-out RMS is
+/// above three noise floors and where within, the runs it is significant
+/// in and its steady offset; None where no part covers all its samples.
+fn channel_finding(
+    ch: Channel,
+    runs: &[RunGap],
+    parts: &[Shrinkage],
+    significant: bool,
+) -> Option<GapFinding> {
+    let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
+    let all = rows.iter().find(|p| p.part == Part::All)?;
+    let nf = all.noise_floor;
+    let split = rows
+        .iter()
+        .filter(|p| p.part != Part::All && p.samples >= 10);
+    let wrong: Vec<(Part, f64)> = split
+        .clone()
+        .filter(|p| above_noise(p.before, nf))
+        .map(|p| (p.part, p.before))
+        .collect();
+    let right: Vec<Part> = split
+        .filter(|p| !above_noise(p.before, nf))
+        .map(|p| p.part)
+        .collect();
+    let significant_in: Vec<(String, f64)> = runs
+        .iter()
+        .filter_map(|r| {
+            let c = r
+                .channels
+                .iter()
+                .find(|c| c.channel == ch && c.significant)?;
+            Some((r.run.clone(), c.rms))
+        })
+        .collect();
+    Some(GapFinding::Channel {
+        channel: ch,
+        rms: all.before,
+        noise_floor: nf,
+        significant_runs: significant_in.len(),
+        significant_in,
+        runs: runs.len(),
+        wrong,
+        right,
+        offset: SteadyOffset::of(
+            &runs
+                .iter()
+                .flat_map(|r| r.channels.iter().filter(|c| c.channel == ch))
+                .map(|c| c.bias)
+                .collect::<Vec<_>>(),
+            nf,
+            all.before,
+        ),
+        combined_significant: significant,
+    })
+}
+
 /// The gap's findings (the report words them): overall, per channel where
 /// it is largest and where the model is right (parts of at least ten
 /// samples, against three noise floors), and the frequency bands of a run
@@ -214,55 +270,11 @@ pub(crate) fn gap_summary(
         heldout_error: j0,
         noise_level: jn,
     }];
-    for ch in Channel::ALL {
-        let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
-        let Some(all) = rows.iter().find(|p| p.part == Part::All) else {
-            continue;
-        };
-        let nf = all.noise_floor;
-        let split = rows
-            .iter()
-            .filter(|p| p.part != Part::All && p.samples >= 10);
-        let wrong: Vec<(Part, f64)> = split
-            .clone()
-            .filter(|p| above_noise(p.before, nf))
-            .map(|p| (p.part, p.before))
-            .collect();
-        let right: Vec<Part> = split
-            .filter(|p| !above_noise(p.before, nf))
-            .map(|p| p.part)
-            .collect();
-        let significant_in: Vec<(String, f64)> = runs
-            .iter()
-            .filter_map(|r| {
-                let c = r
-                    .channels
-                    .iter()
-                    .find(|c| c.channel == ch && c.significant)?;
-                Some((r.run.clone(), c.rms))
-            })
-            .collect();
-        out.push(GapFinding::Channel {
-            channel: ch,
-            rms: all.before,
-            noise_floor: nf,
-            significant_runs: significant_in.len(),
-            significant_in,
-            runs: runs.len(),
-            wrong,
-            right,
-            offset: SteadyOffset::of(
-                &runs
-                    .iter()
-                    .flat_map(|r| r.channels.iter().filter(|c| c.channel == ch))
-                    .map(|c| c.bias)
-                    .collect::<Vec<_>>(),
-                nf,
-                all.before,
-            ),
-            combined_significant: significant,
-        });
-    }
+    out.extend(
+        Channel::ALL
+            .into_iter()
+            .filter_map(|ch| channel_finding(ch, runs, parts, significant)),
+    );
     for r in runs {
         for b in &r.bands {
             if b.gain_error_db.abs() > 1.0 || b.phase_error_deg.abs() > 10.0 {

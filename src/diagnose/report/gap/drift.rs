@@ -184,6 +184,34 @@ mod tests {
         }
     }
 
+    /// The window test counts the slow floor as the bias test does: on the
+    /// estimator's sideslip of [`estimator_wander`] against its assumed
+    /// 0.005 rad floor, right or off by half, one or two floors, no window
+    /// is a gap and the mean no bias, on eight seeds (a window of 50
+    /// samples averaged the floor down as white noise and called every
+    /// window of a half-floor offset a gap, beside "no bias"); four floors
+    /// off (0.02 rad), both find it, in every window.
+    #[test]
+    fn the_windows_and_the_bias_agree_on_an_estimator_s_sideslip() {
+        use super::super::scan::{noise_time, scored_from, worst_window};
+        let floor = 0.005;
+        let slow = (floor, FloorCounting::Slow);
+        for seed in 1..=8 {
+            for offset in [0.0, 0.0025, 0.005, 0.01, 0.02] {
+                let (t, e) = estimator_wander(seed, offset);
+                let tau = noise_time(&t, &e);
+                let w = worst_window(&t, scored_from(t[0]), &e, slow, tau, t.len(), true).unwrap();
+                let b = bias_test(&t, &e, floor, FloorCounting::Slow, true);
+                let far = offset > 3.0 * floor;
+                assert_eq!(b.significant, far, "{seed} {offset}: {b:?}");
+                assert_eq!(w.significant, far, "{seed} {offset}: {w:?}");
+                let every = w.windows_significant == w.windows_tested;
+                assert_eq!(every, far, "{seed} {offset}: {w:?}");
+                assert_eq!(w.windows_significant > 0, far, "{seed} {offset}: {w:?}");
+            }
+        }
+    }
+
     /// The closed form of the correction: a mean of `L` samples takes
     /// `τ/L` of the variance, so a noise of `1 − ρ = x` reads
     /// `x/(1 − 2/(x·L))`, and is read back.

@@ -52,7 +52,7 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Unseen};
+use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Screened, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
@@ -62,11 +62,11 @@ use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, dominant, gap_summary, parts_table};
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
-use crate::diagnose::verdict::baseline::baseline;
+use crate::diagnose::verdict::baseline::{baseline, Baseline};
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::search;
+use crate::diagnose::verdict::search::{search, Search};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -76,7 +76,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod conclusion;
 mod rig_notes;
-use conclusion::{conclude, with_rows, Concluded};
+use conclusion::{conclude, with_rows};
 
 /// Work units reported to the progress counter for a campaign.
 pub fn work_units(c: &Campaign) -> usize {
@@ -282,7 +282,8 @@ fn grid_note(ctx: &Context, step: f64) -> Option<Note> {
 
 /// Where the gap lies: every run replayed by the all-run base model, each
 /// channel against its trusted noise floor.
-fn base_gaps(c: &Campaign, all: &Augmented, floors: &[f64; 3]) -> Vec<RunGap> {
+fn base_gaps(c: &Campaign, all: &Augmented, trust: &Trust) -> Vec<RunGap> {
+    let floors = (&trust.floors, &trust.countings);
     c.runs
         .par_iter()
         .map(|run| base_run_gap(all, run, c.settings.step, floors))
@@ -412,6 +413,83 @@ fn candidates_seen(c: &Campaign) -> Result<(Vec<EffectKind>, Vec<Note>), Error> 
     Ok((effects, visibility))
 }
 
+/// The notes on sideslip files read in the other sign convention; a
+/// sideslip against the model throughout is refused before any fit.
+fn beta_against(c: &Campaign, all: &Augmented) -> Result<Vec<Note>, Error> {
+    let found = crate::diagnose::base::beta_sign::check(c, all).map_err(|source| {
+        let campaign = c.source.clone();
+        DiagnosisError::BetaAgainstModel { campaign, source }
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|f| Note::BetaAgainstInFile {
+            file: f.file,
+            correlation: f.correlation,
+            samples: f.samples,
+        })
+        .collect())
+}
+
+/// The candidates alone, scored, in order and ranked against the base,
+/// the screened ones' rows, and the search of combinations within
+/// `limits` (most effects, screening): without a significant gap nothing
+/// is searched.
+fn searched(
+    ctx: &Context,
+    effects: &[EffectKind],
+    base: &Baseline,
+    limits: (usize, bool),
+    significant: bool,
+) -> (Vec<Scored>, Vec<usize>, Vec<Ranked>, Vec<Screened>, Search) {
+    let (singles, order, screened, screened_rows) =
+        singles(ctx, effects, base, limits.1, significant);
+    let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
+    let found = significant.then(|| {
+        let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
+        search(ctx, &singles, (&order, &all), base, limits)
+    });
+    let found = found.unwrap_or_default();
+    (singles, order, ranking, screened_rows, found)
+}
+
+/// The gap report from the channels' trust (`noise`), the pooled `parts`
+/// and the base model's gap on each run, against the `base` model's
+/// held-out errors at the fits' `scales`: the findings ([`gap_findings`],
+/// the channel that dominates), the shares, and on a verdict of no
+/// significant gap what it rests on (an uncertainty stated far above its
+/// channel's scatter, an assumed floor).
+fn gap_report(
+    c: &Campaign,
+    (noise, parts, runs): (Vec<ChannelNoise>, Vec<Shrinkage>, Vec<RunGap>),
+    base: &Baseline,
+    scales: &[f64; 3],
+    verdict: &mut Verdict,
+) -> GapReport {
+    let (j0, jn) = (base.j0, base.jn);
+    let significant = rules::significant(j0, jn);
+    let mut findings = gap_findings(c, &runs, &parts, significant, j0, jn);
+    findings.extend(dominant(&base.heldout, scales, &findings));
+    if let Verdict::NoSignificantGap(n) = verdict {
+        n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
+        n.assumed = assumed_floors(&noise, &findings);
+    }
+    let channel_shares = crate::diagnose::report::shares::channel_shares(
+        &parts,
+        &noise,
+        !verdict.effects().is_empty(),
+    );
+    GapReport {
+        significant,
+        heldout_error: j0,
+        noise_level: jn,
+        noise,
+        channel_shares,
+        parts,
+        runs,
+        findings,
+    }
+}
+
 /// The diagnosis, its phases timed by `recorder`.
 fn run(
     c: &Campaign,
@@ -422,23 +500,16 @@ fn run(
     let set = &c.settings;
     let (effects, visibility) = candidates_seen(c)?;
     let (runs, folds, pso) = prepare(c);
-    let Trust {
-        noise,
-        scales,
-        floors,
-    } = channel_trust(&c.runs, &c.uncertainty);
+    let trust = channel_trust(&c.runs, &c.uncertainty);
+    let scales = trust.scales;
     let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, scales, timing)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }
 
-    // A sideslip in the other sign convention is refused before any fit.
-    let beta_against =
-        crate::diagnose::base::beta_sign::check(c, &bases.all).map_err(|source| {
-            let campaign = c.source.clone();
-            DiagnosisError::BetaAgainstModel { campaign, source }
-        })?;
-    let run_gaps = base_gaps(c, &bases.all, &floors);
+    let beta_against = beta_against(c, &bases.all)?;
+    let run_gaps = base_gaps(c, &bases.all, &trust);
+    let Trust { noise, floors, .. } = trust;
     let calibrated = calibrated(c);
     let ctx = Context {
         calibrated,
@@ -453,63 +524,25 @@ fn run(
         shared: Default::default(),
     };
     let base = baseline(&ctx, &floors);
-    let (j0, jn) = (base.j0, base.jn);
-    let significant = rules::significant(j0, jn);
+    let significant = rules::significant(base.j0, base.jn);
     let mut notes = notes_of(c, visibility, &ctx, &noise);
     notes.extend(rig_notes::rig_notes(c, &tyre_source, rig_grouping.as_ref()));
-    notes.extend(beta_against.into_iter().map(|f| Note::BetaAgainstInFile {
-        file: f.file,
-        correlation: f.correlation,
-        samples: f.samples,
-    }));
-    let (singles, order, screened, screened_rows) =
-        singles(&ctx, &effects, &base, set.screening, significant);
-    let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
-
-    // Without a significant gap nothing is searched.
-    let found = significant.then(|| {
-        let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
-        let limits = (set.max_effects, set.screening);
-        search(&ctx, &singles, (&order, &all), &base, limits)
-    });
-    let found = found.unwrap_or_default();
-    let chosen = found.chosen.as_ref();
+    notes.extend(beta_against);
+    let limits = (set.max_effects, set.screening);
+    let (singles, order, ranking, screened_rows, found) =
+        searched(&ctx, &effects, &base, limits, significant);
     // Before and after on held-out runs, per channel, window and regime.
-    let (base_obs, after_obs) = before_after(&ctx, chosen);
+    let (base_obs, after_obs) = before_after(&ctx, found.chosen.as_ref());
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
     // The gap's parts are the same pooled before values; their `after` is
     // the verdict's (base replays again would write after = before, which
     // says the verdict changed nothing).
     let parts = shrinkage.clone();
-    let Concluded {
-        mut verdict,
-        confounded,
-        swapped,
-    } = conclude(
-        &ctx,
-        c,
-        &found,
-        (&singles[..], &order[..]),
-        (&base, significant),
-        &shrinkage,
-    );
-    // A gap within noise that only an uncertainty stated far above its
-    // channel's scatter makes so says it.
-    if let Verdict::NoSignificantGap(n) = &mut verdict {
-        n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
-    }
+    let pair = (&singles[..], &order[..]);
+    let done = conclude(&ctx, c, &found, pair, (&base, significant), &shrinkage);
+    let mut verdict = done.verdict;
     let overlays = overlays(&ctx, &base_obs, &after_obs);
-    let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
-    findings.extend(dominant(&base.heldout, &scales, &findings));
-    // ... and one that an assumed floor makes so says that too.
-    if let Verdict::NoSignificantGap(n) = &mut verdict {
-        n.assumed = assumed_floors(&noise, &findings);
-    }
-    let channel_shares = crate::diagnose::report::shares::channel_shares(
-        &parts,
-        &noise,
-        !verdict.effects().is_empty(),
-    );
+    let gap = gap_report(c, (noise, parts, run_gaps), &base, &scales, &mut verdict);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),
@@ -523,21 +556,12 @@ fn run(
         calibration: c.calibration.clone(),
         road: roads(c, &ctx),
         base: base_report(&bases, tyre_source, rig_grouping),
-        gap: GapReport {
-            significant,
-            heldout_error: j0,
-            noise_level: jn,
-            noise,
-            channel_shares,
-            parts,
-            runs: run_gaps,
-            findings,
-        },
+        gap,
         ranking,
         screened: screened_rows.into_iter().chain(found.screened).collect(),
-        combinations: with_rows(found.combinations, &swapped),
+        combinations: with_rows(found.combinations, &done.swapped),
         verdict,
-        confounded,
+        confounded: done.confounded,
         shrinkage,
         overlays,
         timing: recorder.timing(),

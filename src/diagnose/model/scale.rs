@@ -85,6 +85,96 @@ pub enum ScaleSource {
     Estimated,
 }
 
+/// How the part of a channel's floor above its own scatter counts in the
+/// standard error of a run's mean residual (the gap's bias test).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FloorCounting {
+    /// White noise: a new draw every sample, counted over all of them.
+    White,
+    /// A slow error (an estimator's drift, a misalignment): one draw for
+    /// the whole run, counted once.
+    Slow,
+}
+
+/// The lag-1 correlation of a white record's first differences, −½
+/// (`Δxᵢ = wᵢ − wᵢ₋₁`); a random walk's, an estimator's integrated output,
+/// is 0 and a smooth signal's near 1. Above this line a record's
+/// high-frequency part is not a white sensor's: it is smoothed.
+pub const WHITE_DIFFERENCES: f64 = -0.25;
+
+/// The lag-1 correlation of the first differences of `x`, read robustly
+/// from the scatter of its first and second differences (`1.4826·MAD`):
+/// `ρ₁ = 1 − var(Δ²x)/(2·var(Δx))`. −½ for white noise, 0 for a random
+/// walk; the medians ignore the minority of samples where the signal
+/// itself moves fast (Hampel 1974). 1 (smooth) for a record whose
+/// differences are mostly zero; NaN on fewer than four samples.
+pub fn difference_correlation(x: &[f64]) -> f64 {
+    if x.len() < 4 {
+        return f64::NAN;
+    }
+    let mad = |mut d: Vec<f64>| {
+        let median = crate::measured::clean::midpoint_median;
+        let m = median(&mut d);
+        let mut dev: Vec<f64> = d.iter().map(|v| (v - m).abs()).collect();
+        1.4826 * median(&mut dev)
+    };
+    let first = mad(x.windows(2).map(|w| w[1] - w[0]).collect());
+    let second = mad(x.windows(3).map(|w| w[2] - 2.0 * w[1] + w[0]).collect());
+    if first <= 0.0 {
+        return 1.0;
+    }
+    1.0 - 0.5 * (second / first).powi(2)
+}
+
+/// What channel `c`'s floor (from `source`, its high-frequency `scatter`
+/// and the median lag-1 correlation of its first differences,
+/// `differences` ([`difference_correlation`]), beside it) stands for, and
+/// so how the gap's bias and window tests count it:
+/// - a floor read from the scatter, or a gyro's or accelerometer's sensor
+///   floor, is the sensor's noise: white;
+/// - a yaw rate or `ay` smoother than any sensor is a gyro's or an
+///   accelerometer's record smoothed or noise-free (they are measured, not
+///   estimated: [`QUIET_SENSOR_SHARE`]); its floor is the white noise the
+///   smoothing took away, and a low-pass leaves the standard error of a
+///   white noise's mean as it was: white. Their slow error, an offset, is
+///   the very bias the test looks for;
+/// - a sideslip that reads as an estimator's output (its scatter below
+///   [`SMOOTH_SHARE`] of the slip sensor's floor) and is trusted to an
+///   estimated output's assumed uncertainty, *and smooth* (its
+///   differences correlated above [`WHITE_DIFFERENCES`]): its record shows
+///   nothing of that uncertainty, which is the estimator's lag, drift and
+///   misalignment, at low frequency: slow. A run's mean inside it is not
+///   evidence of a bias (Chindamo, Lenzo & Gadola 2018: estimators' errors
+///   are offsets and drifts over a manoeuvre, not sample-to-sample scatter);
+/// - the same sideslip trusted to an uncertainty the user stated: slow,
+///   smooth or not. The statement says what the record cannot: an error
+///   beyond the channel's scatter, which a scatter below any slip sensor's
+///   does not hold;
+/// - an unstated sideslip whose high-frequency scatter is white
+///   (differences correlated near −½, as a sensor's noise; Putnam's log
+///   reads −0.45), however quiet, or one read as a sensor's (stated or
+///   not): white. The tool cannot tell such a record from a quiet slip
+///   sensor's, and a sensor's floor is its noise.
+pub fn floor_counting(
+    c: Channel,
+    source: ScaleSource,
+    scatter: f64,
+    differences: f64,
+) -> FloorCounting {
+    // NaN (too few samples) is not white: read as an estimator's.
+    let smooth = differences.is_nan() || differences >= WHITE_DIFFERENCES;
+    match (c, source) {
+        (Channel::YawRate | Channel::Ay, _) => FloorCounting::White,
+        (Channel::Beta, ScaleSource::Scatter | ScaleSource::SensorFloor) => FloorCounting::White,
+        (Channel::Beta, ScaleSource::Estimated) if smooth => FloorCounting::Slow,
+        (Channel::Beta, ScaleSource::Stated) if reads_as_estimated(c, scatter) => {
+            FloorCounting::Slow
+        }
+        (Channel::Beta, ScaleSource::Estimated | ScaleSource::Stated) => FloorCounting::White,
+    }
+}
+
 /// How far a channel is trusted.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ChannelScale {
@@ -379,6 +469,68 @@ mod tests {
         );
         let e = stated_excess(Channel::Beta, ScaleSource::Stated, 0.06, 0.0002).unwrap();
         assert!(e.estimated && (e.times - 12.0).abs() < 1e-12, "{e:?}");
+    }
+
+    #[test]
+    fn only_a_smooth_sideslip_read_as_an_estimator_s_output_has_a_slow_floor() {
+        use FloorCounting::{Slow, White};
+        let counted = |c, stated: StatedUncertainty, scatter, differences| {
+            let s = channel_scale(c, &stated, scatter, 0.05);
+            floor_counting(c, s.source, scatter, differences)
+        };
+        let beta = |v| StatedUncertainty {
+            beta: Some(v),
+            ..NONE
+        };
+        // A smooth sideslip (its differences a random walk's, 0): an
+        // estimator's, assumed or stated.
+        assert_eq!(counted(Channel::Beta, NONE, 0.0002, 0.0), Slow);
+        assert_eq!(counted(Channel::Beta, beta(0.004), 0.0002, 0.0), Slow);
+        assert_eq!(counted(Channel::Beta, NONE, 0.0002, f64::NAN), Slow);
+        // As quiet, but white (−½), nothing stated: a sensor's noise
+        // (Putnam's sideslip, 0.0007 rad, differences −0.45); with an
+        // uncertainty stated, the user's word for an estimator's: slow.
+        assert_eq!(counted(Channel::Beta, NONE, 0.0005, -0.5), White);
+        assert_eq!(counted(Channel::Beta, NONE, 0.0007, -0.45), White);
+        assert_eq!(counted(Channel::Beta, beta(0.005), 0.0007, -0.45), Slow);
+        // A slip sensor, at its floor or beyond it, stated or not.
+        assert_eq!(counted(Channel::Beta, NONE, 0.0012, 0.0), White);
+        assert_eq!(counted(Channel::Beta, NONE, 0.003, -0.5), White);
+        assert_eq!(counted(Channel::Beta, beta(0.004), 0.0012, 0.0), White);
+        // A noise-free or smoothed gyro's or accelerometer's record: white.
+        for c in [Channel::YawRate, Channel::Ay] {
+            assert_eq!(counted(c, NONE, 0.0, 0.9), White);
+            assert_eq!(counted(c, NONE, 0.01, -0.5), White);
+        }
+    }
+
+    /// The closed forms: white noise's differences correlate −½, a random
+    /// walk's 0 (an estimator's integrated output), on a slow signal (a
+    /// 0.02 rad step over 0.3 s at 100 Hz) as without it; a first-order
+    /// wander of 3 s reads as a random walk.
+    #[test]
+    fn a_white_record_s_differences_correlate_minus_a_half_and_a_smooth_one_s_zero() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        let mut gauss = || crate::optim::stats::gauss(&mut rng);
+        let n = 8000;
+        let step = |i: usize| 0.02 * (1.0 - (-(i as f64 * 0.01 - 1.0).max(0.0) / 0.3).exp());
+        let white: Vec<f64> = (0..n).map(|i| step(i) + 0.0005 * gauss()).collect();
+        let rho = (-0.01_f64 / 3.0).exp();
+        let mut x = 0.0;
+        let wander: Vec<f64> = (0..n)
+            .map(|i| {
+                x = rho * x + 0.001 * (1.0 - rho * rho).sqrt() * gauss();
+                step(i) + x
+            })
+            .collect();
+        let w = difference_correlation(&white);
+        let s = difference_correlation(&wander);
+        assert!((w + 0.5).abs() < 0.05, "{w}");
+        assert!(s.abs() < 0.1, "{s}");
+        assert!(w < WHITE_DIFFERENCES && s > WHITE_DIFFERENCES);
+        assert_eq!(difference_correlation(&[0.1; 50]), 1.0);
+        assert!(difference_correlation(&[0.0, 1.0, 2.0]).is_nan());
     }
 
     #[test]

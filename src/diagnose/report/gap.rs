@@ -31,6 +31,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::replay::UNMEASURED_START;
+use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{
     regime_samples, scatter_by, timed_from_an_input, window_samples, Levels, Part, Scatter,
@@ -38,10 +39,14 @@ use crate::diagnose::report::parts::{
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
+mod bands;
 mod drift;
 mod said;
 mod scan;
 mod shift;
+#[cfg(test)]
+pub use bands::band_gaps;
+pub use bands::{band_gaps_above, BandGap, BAND_SNR};
 use said::{verdict, Found, Said};
 pub use scan::scored_from;
 pub use scan::WindowGap;
@@ -109,7 +114,10 @@ pub struct ChannelGap {
     pub worst_window: Option<WindowGap>,
     /// Standard error of the bias (the residual's autocorrelation counted).
     pub bias_standard_error: f64,
-    /// The bias beyond [`scan::BIAS_STANDARD_ERRORS`] standard errors.
+    /// How the floor counts in that standard error: `white`, a draw a
+    /// sample, or `slow`, one for the run (an estimator's floor).
+    pub bias_counting: FloorCounting,
+    /// The bias beyond [`scan::bias_threshold`] standard errors.
     pub bias_significant: bool,
     /// By time window.
     pub windows: Vec<PartGap>,
@@ -221,17 +229,27 @@ pub fn channel_gap(
     measured: &[f64],
     simulated: &[f64],
 ) -> ChannelGap {
-    trusted_channel_gap(channel, rec, measured, simulated, None)
+    trusted_channel_gap(
+        channel,
+        rec,
+        measured,
+        simulated,
+        None,
+        FloorCounting::White,
+    )
 }
 
 /// The gap of one channel of a record against the noise floor `trusted`
-/// (the campaign's trusted uncertainty; its own scatter where None or 0).
+/// (the campaign's trusted uncertainty; its own scatter where None or 0),
+/// counted in the bias and window tests as `counting` says (white for its
+/// own scatter: the trust's countings are white wherever its floor is 0).
 pub fn trusted_channel_gap(
     channel: Channel,
     rec: &Record,
     measured: &[f64],
     simulated: &[f64],
     trusted: Option<f64>,
+    counting: FloorCounting,
 ) -> ChannelGap {
     let (t, steer) = (rec.t, rec.steer);
     let n = t.len();
@@ -250,16 +268,7 @@ pub fn trusted_channel_gap(
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let resolved = rms > 1e-6 * signal;
     let significant = above_noise(rms, noise_floor) && resolved;
-    // The noise's autocorrelation from the residual's fast part: its slow
-    // part is the model's error or the replay's start, not noise.
-    let tau = scan::noise_time(t, &e);
-    // The floor's own sample count: the window before the input it is the
-    // scatter of, else the whole run (its second differences); a stated
-    // floor is known better, and counted so, conservatively.
-    let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
-    let from = scored_from(rec.start);
-    let window = scan::worst_window(t, from, &e, noise_floor, tau, floor_samples, resolved);
-    let bias = scan::bias_test(t, &e, noise_floor, resolved);
+    let (window, bias, tau) = scanned(rec, &e, (noise_floor, counting), pre_samples, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated)
         .filter(|&s| shift::resolved(dt, measured, simulated, s, tau));
     let found = Found {
@@ -299,6 +308,7 @@ pub fn trusted_channel_gap(
         input_correlation_lag: lag as f64 * dt,
         time_shift,
         bias_standard_error: bias.standard_error,
+        bias_counting: bias.counting,
         bias_significant: bias.significant,
         worst_window: window,
         windows,
@@ -307,6 +317,35 @@ pub fn trusted_channel_gap(
         gap_found,
         verdict,
     }
+}
+
+/// The scan's window and bias tests of the residual `e` of `rec` against
+/// its floor (value, counting), with the noise's autocorrelation time
+/// (samples) the time shift reads; `pre_samples` before the input.
+fn scanned(
+    rec: &Record,
+    e: &[f64],
+    (noise_floor, counting): (f64, FloorCounting),
+    pre_samples: usize,
+    resolved: bool,
+) -> (Option<WindowGap>, scan::BiasTest, f64) {
+    let t = rec.t;
+    // The noise's autocorrelation from the residual's fast part: its slow
+    // part is the model's error or the replay's start, not noise.
+    let tau = scan::noise_time(t, e);
+    // The floor's own sample count: the window before the input it is the
+    // scatter of, else the whole run (its second differences); a stated
+    // floor is known better, and counted so, conservatively.
+    let floor_samples = if pre_samples >= 10 {
+        pre_samples
+    } else {
+        t.len()
+    };
+    let from = scored_from(rec.start);
+    let floor = (noise_floor, counting);
+    let window = scan::worst_window(t, from, e, floor, tau, floor_samples, resolved);
+    let bias = scan::bias_test(t, e, noise_floor, counting, resolved);
+    (window, bias, tau)
 }
 
 /// The error `e` in the record's time windows and its regimes. A run with
@@ -402,11 +441,12 @@ fn replay_start(run: &crate::measured::MeasuredRun) -> f64 {
 
 /// The gap of every measured channel of a replayed run, on its unmasked
 /// samples, each against its `trusted` noise floor (by channel index; 0:
-/// the run's own scatter).
+/// the run's own scatter), counted in the bias test as `counting` says.
 pub fn run_gap(
     run: &crate::measured::MeasuredRun,
     sim: &crate::sim::TimeHistory,
     trusted: &[f64; 3],
+    counting: &[FloorCounting; 3],
 ) -> Vec<ChannelGap> {
     let idx = scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
@@ -422,7 +462,8 @@ pub fn run_gap(
         speed: &speed,
     };
     let gap = |c: Channel, m: &[f64], s: &[f64]| {
-        trusted_channel_gap(c, &rec, &pick(m), &at(s), Some(trusted[c.index()]))
+        let i = c.index();
+        trusted_channel_gap(c, &rec, &pick(m), &at(s), Some(trusted[i]), counting[i])
     };
     let mut out = vec![gap(Channel::YawRate, &run.yaw_rate, &sim.yaw_rate)];
     if let Some(ay) = &run.ay {
@@ -430,151 +471,6 @@ pub fn run_gap(
     }
     if let Some(beta) = &run.beta {
         out.push(gap(Channel::Beta, beta, &sim.beta));
-    }
-    out
-}
-
-/// The yaw-rate response's gain and phase error in one frequency band.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BandGap {
-    /// Lower edge, Hz.
-    pub f_low: f64,
-    /// Upper edge, Hz.
-    pub f_high: f64,
-    /// Measured yaw-rate gain |r/δ|, 1/s.
-    pub gain_measured: f64,
-    /// Simulated gain, 1/s.
-    pub gain_simulated: f64,
-    /// 20·log10(simulated/measured), dB.
-    pub gain_error_db: f64,
-    /// Phase of simulated relative to measured, degrees (negative: the
-    /// model lags).
-    pub phase_error_deg: f64,
-}
-
-/// Frequency bands of the sweep analysis, Hz.
-const BANDS: [(f64, f64); 5] = [(0.1, 0.3), (0.3, 0.6), (0.6, 1.2), (1.2, 2.4), (2.4, 4.0)];
-
-/// The least yaw-rate response the steer must drive in a band, in units of
-/// the measured channel's noise in one DFT bin (`n·σ²`, σ its noise floor),
-/// for the band's gain and phase to be said. The band's gain estimate
-/// `Σ Y·U*/Σ|U|²` carries the noise as a complex error of relative size
-/// `1/√S` at that ratio `S` (Bendat & Piersol 2010, ch. 9): at 300 the
-/// gain's standard error is 4 % (0.35 dB) and the phase's 2.3°, so the
-/// 1 dB and 10° a finding needs are three standard errors and more. A steer
-/// at the noise level (round 29: white noise of 0.0002 rad on a straight)
-/// drives less than one bin's noise and read "off by −7 dB, +100°".
-pub const BAND_SNR: f64 = 300.0;
-
-/// A run's band analysis: the bands said, and those left unsaid because the
-/// steer drives no response above the noise there ([`BAND_SNR`]).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Bands {
-    /// Bands with steer content and a response above the noise.
-    pub found: Vec<BandGap>,
-    /// Bands holding the steer's power share but no response above the
-    /// noise: no statement is made of them.
-    pub without_steer: usize,
-}
-
-/// Gain and phase errors of the yaw-rate response per frequency band, for a
-/// run whose steer oscillates (at least six sign changes about its mean: a
-/// sweep or a sine; a step has no band content worth splitting). Both
-/// responses are estimated as `H = Σ Y·U*/Σ |U|²` over the DFT bins of the
-/// band (the run resampled to its median interval, means removed); a band is
-/// reported when it holds at least 5 % of the steer's power in 0.1–4 Hz.
-/// No noise floor: every such band ([`band_gaps_above`] gates them).
-#[cfg(test)]
-pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) -> Vec<BandGap> {
-    band_gaps_above(t, steer, measured, simulated, 0.0).found
-}
-
-/// [`band_gaps`], a band said only where the response the steer drives in
-/// it (the larger of the measured and the simulated yaw rate's part
-/// coherent with the steer, `|Σ Y·U*|²/Σ|U|²`) exceeds [`BAND_SNR`] times
-/// the measured yaw rate's noise in one bin, `n·σ²` with σ `noise_floor`
-/// (rad/s); the others are counted.
-pub fn band_gaps_above(
-    t: &[f64],
-    steer: &[f64],
-    measured: &[f64],
-    simulated: &[f64],
-    noise_floor: f64,
-) -> Bands {
-    let n0 = t.len();
-    if n0 < 32 {
-        return Bands::default();
-    }
-    let m0 = mean(steer);
-    let crossings = steer
-        .windows(2)
-        .filter(|w| (w[0] - m0).signum() != (w[1] - m0).signum())
-        .count();
-    if crossings < 6 {
-        return Bands::default();
-    }
-    let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-    dts.sort_by(f64::total_cmp);
-    let dt = dts[dts.len() / 2];
-    let n = ((t[n0 - 1] - t[0]) / dt).floor() as usize + 1;
-    let grid = |y: &[f64]| -> Vec<f64> {
-        let v: Vec<f64> = (0..n)
-            .map(|i| interpolate(t, y, t[0] + i as f64 * dt))
-            .collect();
-        let m = mean(&v);
-        v.into_iter().map(|x| x - m).collect()
-    };
-    let (u, ym, ys) = (grid(steer), grid(measured), grid(simulated));
-    let span = n as f64 * dt;
-    let dft = |x: &[f64], f: f64| -> (f64, f64) {
-        let w = std::f64::consts::TAU * f * dt;
-        x.iter().enumerate().fold((0.0, 0.0), |(re, im), (i, v)| {
-            let (s, c) = (w * i as f64).sin_cos();
-            (re + v * c, im - v * s)
-        })
-    };
-    let nyquist = 0.5 / dt;
-    // (frequency, DFT of steer, of measured, of simulated) per bin.
-    type Bin = (f64, (f64, f64), (f64, f64), (f64, f64));
-    let bins: Vec<Bin> = (1..)
-        .map(|k| k as f64 / span)
-        .take_while(|f| *f <= 4.0_f64.min(0.8 * nyquist))
-        .filter(|f| *f >= 0.1)
-        .map(|f| (f, dft(&u, f), dft(&ym, f), dft(&ys, f)))
-        .collect();
-    let power: f64 = bins.iter().map(|b| b.1 .0 * b.1 .0 + b.1 .1 * b.1 .1).sum();
-    let mut out = Bands::default();
-    for (lo, hi) in BANDS {
-        let (mut uu, mut mr, mut mi, mut sr, mut si) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for (f, (ur, ui), (yr, yi), (zr, zi)) in &bins {
-            if *f >= lo && *f < hi {
-                uu += ur * ur + ui * ui;
-                // Y·U*
-                mr += yr * ur + yi * ui;
-                mi += yi * ur - yr * ui;
-                sr += zr * ur + zi * ui;
-                si += zi * ur - zr * ui;
-            }
-        }
-        if power <= 0.0 || uu < 0.05 * power {
-            continue;
-        }
-        let coherent = (mr * mr + mi * mi).max(sr * sr + si * si) / uu;
-        if coherent <= BAND_SNR * n as f64 * noise_floor * noise_floor {
-            out.without_steer += 1;
-            continue;
-        }
-        let (gm, gs) = (mr.hypot(mi) / uu, sr.hypot(si) / uu);
-        let phase = (si.atan2(sr) - mi.atan2(mr)).to_degrees();
-        let phase = (phase + 540.0).rem_euclid(360.0) - 180.0;
-        out.found.push(BandGap {
-            f_low: lo,
-            f_high: hi,
-            gain_measured: gm,
-            gain_simulated: gs,
-            gain_error_db: 20.0 * (gs / gm).log10(),
-            phase_error_deg: phase,
-        });
     }
     out
 }

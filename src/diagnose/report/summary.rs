@@ -7,6 +7,7 @@
 use crate::diagnose::model::channels::reduction;
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, GapFinding};
@@ -17,12 +18,13 @@ use crate::measured::MeasuredRun;
 
 /// The base model's gap on one run, at the run's own samples (the base
 /// model has no sensor effects: its history is what the sensors read),
-/// each channel against its `trusted` noise floor.
+/// each channel against its `trusted` noise floor, counted in the bias test
+/// as `counting` says.
 pub(crate) fn base_run_gap(
     base: &Augmented,
     run: &MeasuredRun,
     step: f64,
-    trusted: &[f64; 3],
+    (trusted, counting): (&[f64; 3], &[FloorCounting; 3]),
 ) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let history = p.replay(base);
@@ -33,7 +35,7 @@ pub(crate) fn base_run_gap(
         .iter()
         .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
         .collect();
-    let channels = run_gap(run, &history, trusted);
+    let channels = run_gap(run, &history, trusted, counting);
     // The bands are judged against the yaw rate's noise floor, as its gap is.
     let floor = channels
         .iter()
@@ -196,6 +198,62 @@ pub(crate) fn parts_table(
         .collect()
 }
 
+/// Channel `ch`'s finding ([`gap_summary`]): where its held-out RMS is
+/// above three noise floors and where within, the runs it is significant
+/// in and its steady offset; None where no part covers all its samples.
+fn channel_finding(
+    ch: Channel,
+    runs: &[RunGap],
+    parts: &[Shrinkage],
+    significant: bool,
+) -> Option<GapFinding> {
+    let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
+    let all = rows.iter().find(|p| p.part == Part::All)?;
+    let nf = all.noise_floor;
+    let split = rows
+        .iter()
+        .filter(|p| p.part != Part::All && p.samples >= 10);
+    let wrong: Vec<(Part, f64)> = split
+        .clone()
+        .filter(|p| above_noise(p.before, nf))
+        .map(|p| (p.part, p.before))
+        .collect();
+    let right: Vec<Part> = split
+        .filter(|p| !above_noise(p.before, nf))
+        .map(|p| p.part)
+        .collect();
+    let significant_in: Vec<(String, f64)> = runs
+        .iter()
+        .filter_map(|r| {
+            let c = r
+                .channels
+                .iter()
+                .find(|c| c.channel == ch && c.significant)?;
+            Some((r.run.clone(), c.rms))
+        })
+        .collect();
+    Some(GapFinding::Channel {
+        channel: ch,
+        rms: all.before,
+        noise_floor: nf,
+        significant_runs: significant_in.len(),
+        significant_in,
+        runs: runs.len(),
+        wrong,
+        right,
+        offset: SteadyOffset::of(
+            &runs
+                .iter()
+                .flat_map(|r| r.channels.iter().filter(|c| c.channel == ch))
+                .map(|c| c.bias)
+                .collect::<Vec<_>>(),
+            nf,
+            all.before,
+        ),
+        combined_significant: significant,
+    })
+}
+
 /// The gap's findings (the report words them): overall, per channel where
 /// it is largest and where the model is right (parts of at least ten
 /// samples, against three noise floors), and the frequency bands of a run
@@ -212,55 +270,11 @@ pub(crate) fn gap_summary(
         heldout_error: j0,
         noise_level: jn,
     }];
-    for ch in Channel::ALL {
-        let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
-        let Some(all) = rows.iter().find(|p| p.part == Part::All) else {
-            continue;
-        };
-        let nf = all.noise_floor;
-        let split = rows
-            .iter()
-            .filter(|p| p.part != Part::All && p.samples >= 10);
-        let wrong: Vec<(Part, f64)> = split
-            .clone()
-            .filter(|p| above_noise(p.before, nf))
-            .map(|p| (p.part, p.before))
-            .collect();
-        let right: Vec<Part> = split
-            .filter(|p| !above_noise(p.before, nf))
-            .map(|p| p.part)
-            .collect();
-        let significant_in: Vec<(String, f64)> = runs
-            .iter()
-            .filter_map(|r| {
-                let c = r
-                    .channels
-                    .iter()
-                    .find(|c| c.channel == ch && c.significant)?;
-                Some((r.run.clone(), c.rms))
-            })
-            .collect();
-        out.push(GapFinding::Channel {
-            channel: ch,
-            rms: all.before,
-            noise_floor: nf,
-            significant_runs: significant_in.len(),
-            significant_in,
-            runs: runs.len(),
-            wrong,
-            right,
-            offset: SteadyOffset::of(
-                &runs
-                    .iter()
-                    .flat_map(|r| r.channels.iter().filter(|c| c.channel == ch))
-                    .map(|c| c.bias)
-                    .collect::<Vec<_>>(),
-                nf,
-                all.before,
-            ),
-            combined_significant: significant,
-        });
-    }
+    out.extend(
+        Channel::ALL
+            .into_iter()
+            .filter_map(|ch| channel_finding(ch, runs, parts, significant)),
+    );
     for r in runs {
         for b in &r.bands {
             if b.gain_error_db.abs() > 1.0 || b.phase_error_deg.abs() > 10.0 {

@@ -351,7 +351,7 @@ fn run_checks(sc: &Scenario, h: &TimeHistory, warnings: &mut Vec<String>) -> Vec
 /// sensor of its type.
 fn replay_gap(sc: &Scenario, run: &MeasuredRun, h: &TimeHistory) -> ReplayGap {
     let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
-    let mut channels = run_gap(run, h, &trust.floors);
+    let mut channels = run_gap(run, h, &trust.floors, &trust.countings);
     // A gap within noise only by an assumed floor says so.
     for g in &mut channels {
         let noise = trust.noise.iter().find(|n| n.channel == g.channel);

@@ -125,7 +125,92 @@ pub(super) fn bias_noise_time(t: &[f64], e: &[f64]) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::scan::{bias_test, SLOW_BIAS_STANDARD_ERRORS};
     use super::*;
+    use crate::diagnose::model::scale::FloorCounting;
+
+    /// A state estimator's sideslip error over 120 s at 100 Hz: a
+    /// first-order wander of 0.001 rad and correlation time 3 s (smooth:
+    /// its sample-to-sample step is 0.00008 rad), plus `offset`, seeded
+    /// `seed`.
+    fn estimator_wander(seed: u64, offset: f64) -> (Vec<f64>, Vec<f64>) {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let mut gauss = || crate::optim::stats::gauss(&mut rng);
+        let rho = (-0.01_f64 / 3.0).exp();
+        let k = (1.0 - rho * rho).sqrt();
+        let mut x = 0.001 * gauss();
+        let t: Vec<f64> = (0..12_000).map(|i| 0.01 * i as f64).collect();
+        let e = t
+            .iter()
+            .map(|_| {
+                x = rho * x + 0.001 * k * gauss();
+                x + offset
+            })
+            .collect();
+        (t, e)
+    }
+
+    /// Against an estimated output's assumed 0.005 rad floor, counted as
+    /// the slow error it stands for: the wander alone is no bias on any of
+    /// eight seeds, nor is a misalignment of half a floor (0.0025 rad),
+    /// which the white count made eleven standard errors of 0.00023 rad;
+    /// an offset of four floors (0.02 rad) is a bias, its standard error
+    /// one floor (`√(floor² + σ²τ/n)`, the wander's own part, σ 0.001 rad
+    /// over its correlation time, a five-hundredth of the floor's).
+    #[test]
+    fn an_estimator_s_mean_is_a_bias_only_beyond_its_slow_floor() {
+        let floor = 0.005;
+        for seed in 1..=8 {
+            for offset in [0.0, 0.0025] {
+                let (t, e) = estimator_wander(seed, offset);
+                let slow = bias_test(&t, &e, floor, FloorCounting::Slow, true);
+                assert!(!slow.significant, "{seed} {offset}: {slow:?}");
+                assert_eq!(slow.counting, FloorCounting::Slow);
+                let white = bias_test(&t, &e, floor, FloorCounting::White, true);
+                assert_eq!(white.significant, offset > 0.0, "{seed}: {white:?}");
+            }
+            let (t, e) = estimator_wander(seed, 0.02);
+            let b = bias_test(&t, &e, floor, FloorCounting::Slow, true);
+            let closed = floor;
+            assert!(
+                (b.standard_error / closed - 1.0).abs() < 0.02,
+                "{seed}: {b:?} against {closed}"
+            );
+            assert!(
+                b.significant && b.standard_errors > SLOW_BIAS_STANDARD_ERRORS,
+                "{seed}: {b:?}"
+            );
+        }
+    }
+
+    /// The window test counts the slow floor as the bias test does: on the
+    /// estimator's sideslip of [`estimator_wander`] against its assumed
+    /// 0.005 rad floor, right or off by half, one or two floors, no window
+    /// is a gap and the mean no bias, on eight seeds (a window of 50
+    /// samples averaged the floor down as white noise and called every
+    /// window of a half-floor offset a gap, beside "no bias"); four floors
+    /// off (0.02 rad), both find it, in every window.
+    #[test]
+    fn the_windows_and_the_bias_agree_on_an_estimator_s_sideslip() {
+        use super::super::scan::{noise_time, scored_from, worst_window};
+        let floor = 0.005;
+        let slow = (floor, FloorCounting::Slow);
+        for seed in 1..=8 {
+            for offset in [0.0, 0.0025, 0.005, 0.01, 0.02] {
+                let (t, e) = estimator_wander(seed, offset);
+                let tau = noise_time(&t, &e);
+                let w = worst_window(&t, scored_from(t[0]), &e, slow, tau, t.len(), true).unwrap();
+                let b = bias_test(&t, &e, floor, FloorCounting::Slow, true);
+                let far = offset > 3.0 * floor;
+                assert_eq!(b.significant, far, "{seed} {offset}: {b:?}");
+                assert_eq!(w.significant, far, "{seed} {offset}: {w:?}");
+                let every = w.windows_significant == w.windows_tested;
+                assert_eq!(every, far, "{seed} {offset}: {w:?}");
+                assert_eq!(w.windows_significant > 0, far, "{seed} {offset}: {w:?}");
+            }
+        }
+    }
 
     /// The closed form of the correction: a mean of `L` samples takes
     /// `τ/L` of the variance, so a noise of `1 − ρ = x` reads

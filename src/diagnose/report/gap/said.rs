@@ -6,8 +6,9 @@
 //! intercept) is said as a gain error, not as a constant offset beside a
 //! dynamic error. Numbers in the channel's unit.
 
-use super::scan::{BiasTest, WindowGap, BIAS_STANDARD_ERRORS, FALSE_ALARM, WINDOW};
+use super::scan::{bias_threshold, BiasTest, WindowGap, FALSE_ALARM, WINDOW};
 use super::{correlation, mean, PartGap};
+use crate::diagnose::model::scale::FloorCounting;
 
 /// Which tests found a gap.
 pub(super) struct Found<'a> {
@@ -80,9 +81,20 @@ fn stretch_words(w: &WindowGap, unit: &str) -> String {
     }
 }
 
+/// How the floor was counted in a bias's standard error.
+fn counted_words(counting: FloorCounting) -> &'static str {
+    match counting {
+        FloorCounting::White => "the floor counted as white noise",
+        FloorCounting::Slow => "the floor counted as a slow error, once over the run",
+    }
+}
+
+/// A bias against its standard error, with how the floor was counted in
+/// it (white: over every sample; slow: once over the run).
 fn bias_words(bias: f64, b: &BiasTest, unit: &str) -> String {
+    let counted = counted_words(b.counting);
     format!(
-        "{} {unit} ({:.1} standard errors of {:.2e} {unit}, over {:.0} effective samples)",
+        "{} {unit} ({:.1} standard errors of {:.2e} {unit}, over {:.0} effective samples; {counted})",
         crate::format::fixed(bias, 4),
         b.standard_errors,
         b.standard_error,
@@ -122,8 +134,10 @@ pub(super) fn verdict(s: &Said) -> String {
         }
         if found.bias.significant {
             out += &format!(
-                "; the bias is {:.1} standard errors of {:.2e} {unit}",
-                found.bias.standard_errors, found.bias.standard_error
+                "; the bias is {:.1} standard errors of {:.2e} {unit} ({})",
+                found.bias.standard_errors,
+                found.bias.standard_error,
+                counted_words(found.bias.counting)
             );
         }
     }
@@ -181,8 +195,9 @@ fn hidden_gap(s: &Said, bias: f64) -> String {
     }
     if found.bias.significant {
         parts.push(format!(
-            " a bias of {}, beyond {BIAS_STANDARD_ERRORS} standard errors",
-            bias_words(bias, &found.bias, unit)
+            " a bias of {}, beyond {} standard errors",
+            bias_words(bias, &found.bias, unit),
+            bias_threshold(found.bias.counting)
         ));
     }
     v += &parts.join("; and");

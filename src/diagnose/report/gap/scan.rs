@@ -24,6 +24,27 @@
 //!   while a noise slower than a fixed quarter second, counted by it, read
 //!   as a bias (a state estimator's sideslip); significant beyond
 //!   [`BIAS_STANDARD_ERRORS`].
+//! - The floor is counted as what it stands for
+//!   ([`crate::diagnose::model::scale::floor_counting`]): measured scatter,
+//!   an unstated sideslip whose record is white however quiet (a sensor's
+//!   noise), and a gyro's or accelerometer's floor (even over a smoothed or
+//!   noise-free record: a low-pass leaves a white noise's mean's standard
+//!   error as it was) are white noise, one draw a sample, `floor²/n`; the
+//!   floor of a sideslip that reads as an estimator's output, smooth
+//!   (assumed) or stated by the user, stands for the estimator's drift and
+//!   misalignment, slow error, one draw for the whole run, the whole
+//!   `floor²` added to the noise's part (an offset moves the residual's
+//!   mean, not its scatter, so no scatter covers it): a mean is then a
+//!   bias only beyond [`SLOW_BIAS_STANDARD_ERRORS`] of it, about three
+//!   floors, the whole-run test's line, and beyond
+//!   [`BIAS_STANDARD_ERRORS`] of the noise's part alone. The windows count
+//!   the floor the same way: a slow floor is not averaged down by a
+//!   window's samples either, so a window is a gap only beyond
+//!   [`SLOW_BIAS_STANDARD_ERRORS`] floors with the residual's fast noise on
+//!   top (`window_threshold`), and a run never reads "a gap along the run"
+//!   in every window for an offset its bias test calls no bias. The
+//!   counting used is reported per channel (`bias_counting`, and in the
+//!   words).
 //! - The time shift: the lag of the largest correlation of the measured
 //!   channel with the simulated one over ±[`MAX_SHIFT`] s, refined between
 //!   samples by a parabola through the peak and its neighbours; only where
@@ -33,6 +54,7 @@
 //!
 //! Units: the channel's own; times in s.
 
+use crate::diagnose::model::scale::FloorCounting;
 use crate::measured::calibration::stats::integrated_time;
 use crate::stats::CentredSums;
 use serde::Serialize;
@@ -97,6 +119,23 @@ pub struct WindowGap {
     pub significant: bool,
 }
 
+/// Standard errors of the mean beyond which a bias is significant where
+/// the floor is counted as a slow error ([`FloorCounting::Slow`]): the
+/// floor's part is then one draw for the run, so the standard error is
+/// about one floor and the line is the whole-run test's three noise floors
+/// (a normal tail of 0.003 on both sides: a run's mean is one draw of the
+/// error, as its RMS is).
+pub const SLOW_BIAS_STANDARD_ERRORS: f64 = 3.0;
+
+/// The standard errors beyond which a bias counted by `counting` is
+/// significant.
+pub fn bias_threshold(counting: FloorCounting) -> f64 {
+    match counting {
+        FloorCounting::White => BIAS_STANDARD_ERRORS,
+        FloorCounting::Slow => SLOW_BIAS_STANDARD_ERRORS,
+    }
+}
+
 /// A bias tested against its standard error.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BiasTest {
@@ -106,7 +145,9 @@ pub struct BiasTest {
     pub standard_errors: f64,
     /// Effective samples (samples over the autocorrelation time).
     pub effective_samples: f64,
-    /// Beyond [`BIAS_STANDARD_ERRORS`].
+    /// How the floor's part above the residual's scatter was counted.
+    pub counting: FloorCounting,
+    /// Beyond [`bias_threshold`] of the counting.
     pub significant: bool,
 }
 
@@ -166,9 +207,42 @@ pub(super) fn noise_time(t: &[f64], e: &[f64]) -> f64 {
     correlation_time(&fast).max(1.0)
 }
 
+/// The threshold of a window's RMS, noise floors, from `quantile`, the
+/// F quantile of its mean square over a white floor's square. With a slow
+/// floor (`slow`: the residual's fast scatter in floors), the floor is one
+/// draw for the run, which no window's samples average down: a window is
+/// beyond it only past [`SLOW_BIAS_STANDARD_ERRORS`] floors, the bias
+/// test's slow line, with the residual's own fast noise, white, on top
+/// (`√(3² + q·(σ_fast/floor)²)`; the quantiles added, conservatively, as
+/// the two parts are independent). A slow floor that only the white count
+/// averaged down made a sideslip half a floor off read "a gap along the
+/// run" in every window beside "no bias" (Putnam).
+fn window_threshold(quantile: f64, slow: Option<f64>) -> f64 {
+    match slow {
+        None => quantile.sqrt(),
+        Some(fast) => (SLOW_BIAS_STANDARD_ERRORS.powi(2) + quantile * fast * fast).sqrt(),
+    }
+}
+
+/// The residual's fast scatter in floors of `floor` where the floor counts
+/// slow ([`window_threshold`]): the standard deviation of `e` less its
+/// quarter-second moving mean, the noise the window test's `tau` is read
+/// from. None for a white floor.
+fn slow_part(t: &[f64], e: &[f64], floor: f64, counting: FloorCounting) -> Option<f64> {
+    match counting {
+        FloorCounting::White => None,
+        FloorCounting::Slow => {
+            let fast = super::drift::less_moving_mean(e, super::drift::quarter_window_samples(t));
+            let var = fast.iter().map(|x| x * x).sum::<f64>() / fast.len().max(1) as f64;
+            Some(var.sqrt() / floor)
+        }
+    }
+}
+
 /// The sliding window of the residual `e` at times `t` whose RMS is the
 /// most noise floors above its threshold, the noise's autocorrelation time
-/// `tau` samples and the floor estimated from `floor_samples` samples (its
+/// `tau` samples and the floor (`floor`: its value and how it counts,
+/// [`window_threshold`]) estimated from `floor_samples` samples (its
 /// effective count `floor_samples/tau`); `resolved` false (noise-free data: a zero floor) makes
 /// no window significant. The first window starts at `from` ([`scored_from`]
 /// of the replay's start: one [`WINDOW`] into it).
@@ -177,13 +251,14 @@ pub(super) fn worst_window(
     t: &[f64],
     from: f64,
     e: &[f64],
-    floor: f64,
+    (floor, counting): (f64, FloorCounting),
     tau: f64,
     floor_samples: usize,
     resolved: bool,
 ) -> Option<WindowGap> {
     let tau = tau.max(1.0);
     let k2 = (floor_samples as f64 / tau).max(1.0);
+    let slow = slow_part(t, e, floor, counting);
     let t1 = t[t.len() - 1];
     // From `from`, one window into the replay ([`scored_from`]): a
     // replay's first half second follows from the initial state it
@@ -207,7 +282,7 @@ pub(super) fn worst_window(
             }
             let rms = (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
             let k = (v.len() as f64 / tau).max(1.0);
-            let threshold = f_quantile(k, k2, z).sqrt();
+            let threshold = window_threshold(f_quantile(k, k2, z), slow);
             let floors = rms / floor;
             Some(WindowGap {
                 start,
@@ -241,24 +316,49 @@ pub(super) fn worst_window(
 /// follows it ([`super::drift::bias_noise_time`]), not by the residual's
 /// own: the error tested is not its noise, and a noise slower than a
 /// quarter second is not an error. Where the floor exceeds the residual's
-/// own scatter, the excess is the floor's, white by its definition, and is
-/// counted over every sample: counted over the correlation time of a
-/// replay's deterministic transient error (0.00026 rad/s against a
-/// 0.005 rad/s floor), a 0.01 rad/s gyro offset read "1.3 standard errors
-/// … over 0 effective samples".
-pub(super) fn bias_test(t: &[f64], e: &[f64], floor: f64, resolved: bool) -> BiasTest {
+/// own scatter, the excess is counted as the floor's `counting` says
+/// ([`FloorCounting`]). White, over every sample: counted over the
+/// correlation time of a replay's deterministic transient error
+/// (0.00026 rad/s against a 0.005 rad/s floor), a 0.01 rad/s gyro offset
+/// read "1.3 standard errors … over 0 effective samples". Slow, once over
+/// the run: an estimator's sideslip trusted to 0.005 rad had any 0.5 mrad
+/// mean "a bias" of ten standard errors of 0.0001 rad (Putnam's log: 19
+/// of its 46 channels), though the floor stands for the estimator's own
+/// drift and misalignment, which a run's mean inside it may well be.
+pub(super) fn bias_test(
+    t: &[f64],
+    e: &[f64],
+    floor: f64,
+    counting: FloorCounting,
+    resolved: bool,
+) -> BiasTest {
     let n = e.len().max(1) as f64;
     let m = mean(e);
     let var = e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n;
     let tau = super::drift::bias_noise_time(t, e);
-    let weighed = var * tau + (floor * floor - var).max(0.0);
+    // The floor in `n × (the mean's variance)`. White: a draw a sample,
+    // and only its excess over the residual's scatter, which already holds
+    // that noise. Slow: one draw for all `n`, and the whole floor, since
+    // an estimator's offset moves the residual's mean, not its scatter.
+    let weighed = var * tau
+        + match counting {
+            FloorCounting::White => (floor * floor - var).max(0.0),
+            FloorCounting::Slow => floor * floor * n,
+        };
     let standard_error = (weighed / n).sqrt();
     let standard_errors = m.abs() / standard_error;
+    // Beyond its line, and beyond the white line of the residual's own
+    // noise alone (the slow line is for the floor's one draw, not for a
+    // noise counted over many samples).
+    let noise_alone = m.abs() / (var * tau / n).sqrt();
     BiasTest {
         standard_error,
         standard_errors,
         effective_samples: n * var.max(floor * floor) / weighed.max(f64::MIN_POSITIVE),
-        significant: resolved && standard_errors > BIAS_STANDARD_ERRORS,
+        counting,
+        significant: resolved
+            && standard_errors > bias_threshold(counting)
+            && noise_alone > BIAS_STANDARD_ERRORS,
     }
 }
 
@@ -309,228 +409,4 @@ pub(super) fn time_shift(dt: f64, measured: &[f64], simulated: &[f64]) -> Option
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_normal_tail_quantiles_match_the_tables() {
-        for (p, z) in [(0.05, 1.644_854), (0.01, 2.326_348), (1e-4, 3.719_016)] {
-            assert!((upper_normal_quantile(p) - z).abs() < 1e-4, "{p}");
-        }
-    }
-
-    #[test]
-    fn the_f_quantiles_match_the_tables_and_tend_to_chi_square() {
-        // F₀.₉₉(50, 100) = 1.735, F₀.₉₉(10, 20) = 3.368 (tables).
-        let z = upper_normal_quantile(0.01);
-        assert!((f_quantile(50.0, 100.0, z) / 1.735 - 1.0).abs() < 0.01);
-        assert!((f_quantile(10.0, 20.0, z) / 3.368 - 1.0).abs() < 0.02);
-        // A floor known exactly: χ²₀.₉₉(50)/50 = 76.154/50.
-        assert!((f_quantile(50.0, 1e12, z) / (76.154 / 50.0) - 1.0).abs() < 0.005);
-    }
-
-    #[test]
-    fn pure_noise_shows_a_local_gap_in_about_one_run_in_a_hundred() {
-        use rand::SeedableRng;
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        let t: Vec<f64> = (0..1000).map(|i| 0.01 * i as f64).collect();
-        let mut alarms = 0;
-        for _ in 0..400 {
-            let e: Vec<f64> = t
-                .iter()
-                .map(|_| crate::optim::stats::gauss(&mut rng))
-                .collect();
-            // The floor estimated from the first 100 samples, as before an input.
-            let pre = &e[..100];
-            let floor = (pre.iter().map(|x| x * x).sum::<f64>() / 100.0).sqrt();
-            let tau = noise_time(&t, &e);
-            let w = worst_window(&t, scored_from(t[0]), &e, floor, tau, 100, true).unwrap();
-            alarms += usize::from(w.significant);
-        }
-        assert!(alarms <= 10, "{alarms} of 400");
-    }
-
-    /// A replay's slow start transient (5 noise floors decaying over
-    /// 0.5 s) is not noise: the noise's time stays near one sample, and a
-    /// 0.5 s stretch of 3 noise floors later in the run is found. The
-    /// whole residual's correlation time, the transient counted as noise,
-    /// lifts the threshold past it.
-    #[test]
-    fn a_slow_start_transient_does_not_hide_a_later_stretch() {
-        use rand::SeedableRng;
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-        let t: Vec<f64> = (0..600).map(|i| 0.01 * i as f64).collect();
-        let e: Vec<f64> = t
-            .iter()
-            .map(|&x| {
-                let start = 5.0 * (-x / 0.15).exp();
-                let stretch = if (3.0..3.5).contains(&x) { 3.0 } else { 0.0 };
-                start + stretch + crate::optim::stats::gauss(&mut rng)
-            })
-            .collect();
-        let tau = noise_time(&t, &e);
-        assert!(tau < 1.5, "{tau}");
-        // The stretch, looked for after the transient, the floor from a
-        // hundred samples (a second before the input).
-        let (t1, e1) = (&t[100..], &e[100..]);
-        let w = worst_window(t1, scored_from(t1[0]), e1, 1.0, tau, 100, true).unwrap();
-        assert!(w.significant && (2.75..=3.25).contains(&w.start), "{w:?}");
-        let whole = correlation_time(&e);
-        let hidden = worst_window(t1, scored_from(t1[0]), e1, 1.0, whole, 100, true).unwrap();
-        assert!(!hidden.significant, "τ {whole}: {hidden:?}");
-    }
-
-    /// A persistent error does not excuse itself. A residual of white
-    /// noise σ = 1 plus a step of 2 halfway through 800 samples (a sideslip
-    /// twice the model's from a step steer on): its mean is 1, its noise
-    /// white (τ = 1), so the standard error is √(σ² + 1)/√800 = 0.0500
-    /// (the scatter about the mean counts the step's ±1 too) and the bias
-    /// 20 standard errors over 800 effective samples. The whole residual's
-    /// correlation time, the step counted as noise, leaves a few dozen
-    /// samples and the bias under the 4 standard errors.
-    #[test]
-    fn a_step_in_the_residual_is_a_bias_over_the_noise_s_samples() {
-        use rand::SeedableRng;
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
-        let t: Vec<f64> = (0..800).map(|i| 0.01 * i as f64).collect();
-        let noise: Vec<f64> = t
-            .iter()
-            .map(|_| crate::optim::stats::gauss(&mut rng))
-            .collect();
-        // The noise exactly of mean 0 and sd 1: the closed form holds to the sample.
-        let m = mean(&noise);
-        let sd = (noise.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / 800.0).sqrt();
-        let e: Vec<f64> = noise
-            .iter()
-            .enumerate()
-            .map(|(i, x)| (x - m) / sd + if i >= 400 { 2.0 } else { 0.0 })
-            .collect();
-        let b = bias_test(&t, &e, 1.0, true);
-        let closed = 2.0_f64.sqrt() / 800.0_f64.sqrt();
-        assert!(b.effective_samples > 600.0, "{b:?}");
-        assert!(
-            (b.standard_error / closed - 1.0).abs() < 0.15,
-            "{b:?} against {closed}"
-        );
-        assert!(b.significant && b.standard_errors > 17.0, "{b:?}");
-        // The whole residual's correlation time, the step counted as noise.
-        let whole = correlation_time(&e);
-        let old = 1.0 / (2.0 * whole / 800.0).sqrt();
-        assert!(800.0 / whole < 0.1 * b.effective_samples, "τ {whole}");
-        assert!(
-            old < BIAS_STANDARD_ERRORS,
-            "τ {whole}: {old} standard errors"
-        );
-    }
-
-    /// A noise-free residual: a constant offset of two floors' tenths and a
-    /// smooth wiggle far below the floor. The floor is white by its
-    /// definition, so the offset is 0.2·√800 ≈ 5.7 standard errors over all
-    /// 800 samples, not a bias hidden by the wiggle's long correlation time.
-    #[test]
-    fn an_offset_on_a_noise_free_residual_is_judged_by_the_white_floor() {
-        let t: Vec<f64> = (0..800).map(|i| 0.01 * i as f64).collect();
-        let e: Vec<f64> = t
-            .iter()
-            .map(|&t| 0.2 + 1e-4 * (2.0 * std::f64::consts::PI * 0.3 * t).sin())
-            .collect();
-        let b = bias_test(&t, &e, 1.0, true);
-        assert!(b.significant, "{b:?}");
-        assert!(
-            (b.standard_errors - 0.2 * 800f64.sqrt()).abs() < 0.01,
-            "{b:?}"
-        );
-        assert!((b.effective_samples - 800.0).abs() < 1.0, "{b:?}");
-    }
-
-    /// Pure white noise about zero is no bias: its noise time is one sample.
-    #[test]
-    fn white_noise_is_no_bias() {
-        use rand::SeedableRng;
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
-        let t: Vec<f64> = (0..800).map(|i| 0.01 * i as f64).collect();
-        let mut alarms = 0;
-        for _ in 0..200 {
-            let e: Vec<f64> = t
-                .iter()
-                .map(|_| crate::optim::stats::gauss(&mut rng))
-                .collect();
-            alarms += usize::from(bias_test(&t, &e, 1.0, true).significant);
-        }
-        assert!(alarms <= 1, "{alarms} of 200");
-    }
-
-    #[test]
-    fn a_smooth_step_delayed_by_a_tenth_of_a_second_reads_that_shift() {
-        let dt = 0.01;
-        let step = |x: f64| 1.0 - (-(x - 1.0).max(0.0) / 0.15).exp();
-        let t: Vec<f64> = (0..600).map(|i| i as f64 * dt).collect();
-        let sim: Vec<f64> = t.iter().map(|&x| step(x)).collect();
-        for shift in [0.1, -0.043, 0.237] {
-            let meas: Vec<f64> = t.iter().map(|&x| step(x - shift)).collect();
-            let s = time_shift(dt, &meas, &sim).unwrap();
-            assert!((s - shift).abs() < 0.2 * dt, "{shift}: {s}");
-        }
-        // Nothing to align: noise alone.
-        let flat = vec![0.0; 600];
-        assert_eq!(time_shift(dt, &flat, &sim), None);
-    }
-
-    /// First-order noise `x_i = ρ x_{i−1} + √(1 − ρ²) w_i` of unit
-    /// variance, `n` samples, its correlation time `time` samples.
-    fn first_order(rng: &mut rand_chacha::ChaCha8Rng, n: usize, time: f64) -> Vec<f64> {
-        let rho = (-1.0 / time).exp();
-        let k = (1.0 - rho * rho).sqrt();
-        let mut x = crate::optim::stats::gauss(rng);
-        (0..n)
-            .map(|_| {
-                x = rho * x + k * crate::optim::stats::gauss(rng);
-                x
-            })
-            .collect()
-    }
-
-    /// First-order noise of correlation time 0.5, 1 and 3 s sampled at
-    /// 100 Hz for 300 s: its effective sample count is `n(1 − ρ)/(1 + ρ)`
-    /// (50 to 300 of 30,000), read within 15 % on average, and it is no
-    /// bias (none of 20 runs each). The quarter-second mean alone counted
-    /// thousands of samples and called most of them a bias.
-    #[test]
-    fn a_first_order_noise_counts_its_closed_form_samples_and_is_no_bias() {
-        use rand::SeedableRng;
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
-        let n = 30_000;
-        let t: Vec<f64> = (0..n).map(|i| 0.01 * i as f64).collect();
-        let mut alarms = 0;
-        let mut old_alarms = 0;
-        for seconds in [0.5_f64, 1.0, 3.0] {
-            let rho = (-0.01 / seconds).exp();
-            let closed = n as f64 * (1.0 - rho) / (1.0 + rho);
-            let mut ratios = Vec::new();
-            for _ in 0..20 {
-                let e = first_order(&mut rng, n, seconds / 0.01);
-                let b = bias_test(&t, &e, 0.0, true);
-                ratios.push(b.effective_samples / closed);
-                alarms += usize::from(b.significant);
-                let old = noise_time(&t, &e);
-                let m = e.iter().sum::<f64>() / n as f64;
-                let sd = (e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n as f64).sqrt();
-                let z = m.abs() / (sd * (old / n as f64).sqrt());
-                old_alarms += usize::from(z > BIAS_STANDARD_ERRORS);
-            }
-            // Each within the scatter of a count read from 100 to 600
-            // correlation times; their mean within 15 % of the closed form.
-            let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
-            assert!((0.85..1.15).contains(&mean), "{seconds} s: {ratios:?}");
-            assert!(
-                ratios.iter().all(|r| (0.6..1.6).contains(r)),
-                "{seconds} s: {ratios:?}"
-            );
-        }
-        assert!(alarms == 0, "{alarms} of 60");
-        assert!(
-            old_alarms > 30,
-            "the quarter-second count: {old_alarms} of 60"
-        );
-    }
-}
+mod tests;

@@ -115,7 +115,14 @@ fn a_run_is_judged_against_the_trusted_floor_not_its_own_scatter() {
     assert!(own.significant, "{}", own.verdict);
     assert_eq!(own.noise_source, NoiseSource::BeforeInput);
     let rec = s.record();
-    let trusted = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.005));
+    let trusted = trusted_channel_gap(
+        Channel::YawRate,
+        &rec,
+        &smooth,
+        &offset,
+        Some(0.005),
+        FloorCounting::White,
+    );
     assert!(!trusted.significant, "{}", trusted.verdict);
     assert_eq!(
         (trusted.noise_floor, trusted.noise_source),
@@ -124,8 +131,25 @@ fn a_run_is_judged_against_the_trusted_floor_not_its_own_scatter() {
     // Above three trusted floors it is a gap again; no floor (0) is
     // the run's own.
     let far: Vec<f64> = truth.iter().map(|v| v + 0.02).collect();
-    assert!(trusted_channel_gap(Channel::YawRate, &rec, &smooth, &far, Some(0.005)).significant);
-    let none = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.0));
+    assert!(
+        trusted_channel_gap(
+            Channel::YawRate,
+            &rec,
+            &smooth,
+            &far,
+            Some(0.005),
+            FloorCounting::White
+        )
+        .significant
+    );
+    let none = trusted_channel_gap(
+        Channel::YawRate,
+        &rec,
+        &smooth,
+        &offset,
+        Some(0.0),
+        FloorCounting::White,
+    );
     assert_eq!(none.noise_source, NoiseSource::BeforeInput);
 }
 

@@ -2,8 +2,15 @@
 //! data. This module imports nothing, so that any layer (the vehicle model,
 //! the measured runs, the readers) can use it without depending on another.
 //!
-//! Units: SI. Source: the conventional value of standard gravity adopted by
-//! the 3rd CGPM (1901), as in ISO 80000-3 (2019).
+//! Units: SI, rad. Source: the conventional value of standard gravity
+//! adopted by the 3rd CGPM (1901), as in ISO 80000-3 (2019); the steepest
+//! road banks: Daytona's 31°, Talladega's 33° (the tracks' published
+//! figures).
 
 /// Standard gravity, m/s².
 pub const G: f64 = 9.80665;
+
+/// The steepest road bank, rad (0.61, 35°): Daytona's banking is 31°,
+/// Talladega's 33°. A scenario's `road_bank` beyond it is refused and a
+/// run's `bank` column beyond it is said to be in degrees: one limit.
+pub const STEEPEST_BANK: f64 = 0.61;

@@ -56,7 +56,7 @@
 
 use super::columns::Columns;
 use super::run_slope::{fit, slope_slip, stretches, Lateral, Stretch, MIN_BINS, MIN_R2, SI_RANGE};
-use crate::constants::G;
+use crate::constants::{G, STEEPEST_BANK};
 use crate::error::{BankInDegrees, BankReversed, InputError, UnitSlip};
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
 use crate::measured::clean::median;
@@ -67,9 +67,6 @@ use std::path::Path;
 /// means at which the bank's share of `ay` is told apart from the offset,
 /// m/s²: [`PLAUSIBLE_AY_OFFSET`], beyond what any offset stands for.
 pub const BANK_VARIES: f64 = PLAUSIBLE_AY_OFFSET;
-
-/// The steepest road bank, rad (35°).
-pub const STEEPEST_BANK: f64 = 0.61;
 
 /// One mean's residual `e` (m/s²), its bank as read (rad) and `g·sin θ`
 /// with θ in radians (m/s²).

@@ -176,7 +176,9 @@ pub struct Scenario {
     /// files state them (`[fitted_ranges]`).
     pub fitted_ranges: [Option<FittedRanges>; 2],
     /// The steady lateral acceleration a step steer was sized for
-    /// (`lateral_acceleration`), m/s²; None for any other amplitude.
+    /// (`lateral_acceleration`), m/s²: its change from straight running,
+    /// as the metrics' steady ay (on a bank the accelerometer reads
+    /// g·sin θ more); None for any other amplitude.
     pub asked_ay: Option<f64>,
     /// `[vehicle]` keys the tool does not read, set aside.
     pub unread: Vec<crate::io::toml_file::vehicle_keys::UnreadKey>,
@@ -364,23 +366,29 @@ fn step_steer(
     friction: f64,
 ) -> Result<Resolved, InputError> {
     check(src, s.timing())?;
-    let solve = |ay: f64| {
+    // The steady state at the tyres' ay `ay`, refused at the key's `asked`.
+    let solve = |asked: f64, ay: f64| {
         model
             .steady_state_for_lateral_acceleration(s.speed, friction, ay)
-            .map_err(|m| {
+            .map_err(|mut m| {
+                // On a bank the tyres' ay is the change asked plus g·sin θ:
+                // said to six digits, not the sum's seventeen.
+                let digits = 10f64.powi(5 - m.ay.abs().max(1e-300).log10().floor() as i32);
+                m.ay = (m.ay * digits).round() / digits;
                 param_error(
                     src,
                     Some("manoeuvre"),
                     ParamError::new(
                         "lateral_acceleration",
-                        ay,
+                        asked,
                         ParamReason::NoSteadyState(Box::new(m)),
                     ),
                 )
             })
     };
     // Straight running: zero yaw rate, the tyres holding the bank's pull.
-    let trim = solve(model.bank_acceleration())?;
+    let bank = model.bank_acceleration();
+    let trim = solve(bank, bank)?;
     // A step steer needs a step the metrics can measure, and one a road
     // wheel can make: refused at the key that asks for it.
     let step = |key: &str, v: f64, d: f64| {
@@ -401,7 +409,10 @@ fn step_steer(
         }
         Amplitude::LateralAcceleration(ay) => {
             check(src, steady_ay(ay, model))?;
-            let d = solve(ay)?.steer - trim.steer;
+            // The change from straight running, as the metrics' steady ay
+            // reads it: on a bank the tyres already hold g·sin θ there (a
+            // step sized to reach `ay` in all settled g·sin θ short of it).
+            let d = solve(ay, bank + ay)?.steer - trim.steer;
             check(src, step("lateral_acceleration", ay, d))?;
             (d, Some(ay))
         }

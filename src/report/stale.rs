@@ -100,11 +100,28 @@ impl Leftovers {
             out.push(format!(
                 "the folder also holds {} that `{command}` does not write, left as they are: {} (give each run a folder of its own, with --out, to keep runs apart)",
                 crate::format::plural(self.foreign.len(), "file", "files"),
-                self.foreign.join(", ")
+                first_names(&self.foreign)
             ));
         }
         out
     }
+}
+
+/// The most names of other files a summary lists: a working folder given
+/// as `--out .` held 187, said on one 3,029-character line.
+const LISTED: usize = 5;
+
+/// `names` joined, the first [`LISTED`] of them and how many more where
+/// there are more.
+fn first_names(names: &[String]) -> String {
+    if names.len() <= LISTED {
+        return names.join(", ");
+    }
+    format!(
+        "{} and {} more",
+        names[..LISTED].join(", "),
+        names.len() - LISTED
+    )
 }
 
 #[cfg(test)]
@@ -137,6 +154,16 @@ mod tests {
             .collect();
         assert_eq!(stale, ["metrics.json", "phase_portrait_3.png"]);
         assert_eq!(l.foreign, ["notes.txt"]);
+        let many: Vec<String> = (1..=7).map(|i| format!("n{i}.txt")).collect();
+        let said = Leftovers {
+            foreign: many,
+            ..Leftovers::default()
+        }
+        .lines("simulate");
+        assert!(
+            said[0].contains("7 files that `simulate` does not write, left as they are: n1.txt, n2.txt, n3.txt, n4.txt, n5.txt and 2 more ("),
+            "{said:?}"
+        );
         l.remove().unwrap();
         assert!(!dir.path().join("metrics.json").exists());
         assert!(dir.path().join("notes.txt").exists());

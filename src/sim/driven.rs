@@ -410,9 +410,10 @@ fn head<const N: usize>(x: &StateVector) -> [f64; N] {
 
 impl Integrator {
     /// The full initial state of a simulation from `x0`: the extra states at
-    /// their quasi-static values.
+    /// their quasi-static values, a lagged compliant front's at its steady
+    /// slip ([`VehicleModel::steady_state_vector`]).
     fn initial(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> StateVector {
-        model.state_vector(&x0, &self.inputs(manoeuvre, manoeuvre.start_time()))
+        model.steady_state_vector(&x0, &self.inputs(manoeuvre, manoeuvre.start_time()))
     }
 
     /// RK4 at the output step, rows recorded from the first stage of each

@@ -82,8 +82,9 @@ pub const MAX_ROLL_GRADIENT: f64 = 0.05;
 /// Formula 1 car's whole down-force ([`Limit::AeroLoad`]).
 pub const MAX_AERO_LOAD: f64 = 12.0;
 
-/// The steepest road bank, rad (29°): steeper is no road.
-pub const MAX_ROAD_BANK: f64 = 0.5;
+/// The steepest road bank, rad (35°): steeper is no road. The same limit
+/// as a run's `bank` column is read against ([`crate::constants`]).
+pub const MAX_ROAD_BANK: f64 = crate::constants::STEEPEST_BANK;
 
 /// Roll degree of freedom used by roll steer and roll camber: a second-order
 /// response of the body roll φ to lateral acceleration,

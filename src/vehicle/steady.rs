@@ -5,6 +5,7 @@
 //! ay are (β, δ). A damped Newton iteration with a central-difference Jacobian
 //! solves it from the linear bicycle model's answer. Units: SI, rad.
 
+use super::rates::StateVector;
 use super::{Inputs, State, VehicleModel, MIN_SPEED};
 pub use crate::error::NoSteadyState;
 
@@ -135,6 +136,31 @@ pub(crate) fn newton2_analytic(
 }
 
 impl VehicleModel {
+    /// This model with the tyres' lag off. At a steady state each lagged
+    /// slip angle sits at its target (the kinematic slip, the front's less
+    /// its compliance's `c·Fyf`), so the steady states are the lagged
+    /// model's; without the lag states the balance solves the compliant
+    /// front's slip with its force.
+    pub(crate) fn without_lag(&self) -> VehicleModel {
+        let mut m = self.clone();
+        m.options.effects.relaxation_length = 0.0;
+        m
+    }
+
+    /// The full state of a steady (β, r) state at inputs `inp`: the
+    /// quasi-static state ([`VehicleModel::state_vector`]) with a lagged,
+    /// compliant front's slip at its steady value `α = α_kin − c·Fyf(α)`
+    /// rather than `α_kin` (a trim on a bank, whose front carries force,
+    /// would otherwise start its lag state off its target and move).
+    pub(crate) fn steady_state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
+        let mut full = self.state_vector(x, inp);
+        let e = &self.options.effects;
+        if e.lagged() && e.steering_compliance != 0.0 {
+            full[2] = self.without_lag().evaluate(x, inp).alpha_front;
+        }
+        full
+    }
+
     /// The steady state at speed `u` with lateral acceleration `ay`: the
     /// steer angle that holds it and the sideslip (`None` beyond the
     /// friction limit, past 45° of either, or where Newton stalls).
@@ -192,6 +218,17 @@ impl VehicleModel {
         friction: f64,
         ay: f64,
     ) -> Result<SteadyState, NoSteadyState> {
+        let e = &self.options.effects;
+        if e.lagged() && e.steering_compliance != 0.0 {
+            // The quasi-static lag states sit at the kinematic slip angles,
+            // which with compliance is not the front's steady slip
+            // (α_kin − c·Fyf): solved there, the step ignored the
+            // compliance (3.47 m/s² reached for 4 asked). The lag-free
+            // model has the same steady states and solves that slip.
+            return self
+                .without_lag()
+                .steady_state_for_lateral_acceleration(speed, friction, ay);
+        }
         let u = speed.max(MIN_SPEED);
         if let Some(s) = self.steady_state_holding(u, friction, ay) {
             return Ok(s);

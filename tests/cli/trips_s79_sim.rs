@@ -343,7 +343,7 @@ fn effect_numbers_beyond_any_car_are_refused_with_their_range() {
         ("steer", "roll_steer = [5, 0]\n", "`model.effects.roll_steer[0]` = 5: must lie within ±1: roll steer beyond ±1 rad"),
         ("roll", "roll_steer = [0.1, 0]\n[model.effects.roll]\nfrequency = 500\n", "`model.effects.roll.frequency` = 500: must lie in (0, 10]: a body's roll natural frequency is 1–3 Hz"),
         // The sign was dropped ("= 0.9: must lie in (-1, 0.5]").
-        ("bank", "road_bank = -0.9\n", "bank.toml:19:13: `model.effects.road_bank` = -0.9: must lie within ±0.5: a bank steeper than 0.5 rad (29°) is not a road"),
+        ("bank", "road_bank = -0.9\n", "bank.toml:19:13: `model.effects.road_bank` = -0.9: must lie within ±0.61: a bank steeper than 0.61 rad (35°; Daytona's banking is 31°, Talladega's 33°) is not a road"),
         ("share", "bank_profile_scale = 5\n", "`model.effects.bank_profile_scale` = 5: must lie in [0, 2]: the share of a logged bank the road has lies in 0 to 2"),
     ] {
         let path = sedan(dir.path(), name, &format!("{STEP}\n[model.effects]\n{effects}"));

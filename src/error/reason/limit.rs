@@ -15,7 +15,7 @@ pub enum Limit {
     #[error("a shape factor outside (0, 2] has no physical meaning")]
     ShapeFactor,
     /// A road's bank angle.
-    #[error("a bank steeper than 0.5 rad (29°) is not a road")]
+    #[error("a bank steeper than {} rad ({:.0}°; Daytona's banking is 31°, Talladega's 33°) is not a road", crate::constants::STEEPEST_BANK, crate::constants::STEEPEST_BANK.to_degrees())]
     RoadBank,
     /// A steering compliance, rad/N.
     #[error("no steering system loses more than 0.1 rad (5.7°) of road-wheel steer per kN of front axle force (1e-4 rad/N); the scenario key is in rad/N (0.003 rad/kN, the diagnosis's unit, is 3e-6 rad/N)")]

@@ -4,10 +4,14 @@
 //! and the effects of the longitudinal acceleration
 //! (`longitudinal_load_transfer`, `combined_slip`) under a manoeuvre whose
 //! speed never changes and that logs no `ax`: they scale `ax`, which is 0
-//! throughout. Units: m, m/s².
+//! throughout; and an `aero_load` on an axle whose tyres are linear
+//! (`Fy = C_α·α`, whatever the load) with no roll camber and no combined
+//! slip on it, which read the load: the down-force changes no force.
+//! Units: m, m/s², N.
 
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
+use crate::tyre::Tyre;
 use crate::vehicle::MIN_RELAXATION_LENGTH;
 
 /// The warnings of this module for scenario `sc`.
@@ -22,6 +26,7 @@ pub(super) fn idle_effects(sc: &Scenario) -> Vec<String> {
             crate::format::exact(MIN_RELAXATION_LENGTH)
         ));
     }
+    said.extend(idle_aero(sc));
     let mut by_ax = Vec::new();
     if e.longitudinal_load_transfer != 0.0 {
         by_ax.push(format!(
@@ -60,4 +65,45 @@ fn constant_speed(sc: &Scenario) -> Option<f64> {
         }
         _ => Some(first),
     }
+}
+
+/// An `aero_load` that loads only axles on linear tyres (whose force
+/// `C_α·α` does not depend on the load) with no roll camber there and no
+/// combined slip (camber thrust and the friction circle read the load):
+/// the down-force it adds, said with the axles' numbers at the run's
+/// starting speed.
+fn idle_aero(sc: &Scenario) -> Option<String> {
+    let e = &sc.model.options.effects;
+    let k = e.aero_load;
+    let tyres = [&sc.model.front, &sc.model.rear];
+    let acts = |axle: usize| {
+        !matches!(tyres[axle], Tyre::Linear(_))
+            || e.roll_camber[axle] != 0.0
+            || e.combined_slip.is_some()
+    };
+    let loaded: Vec<usize> = (0..2).filter(|&i| k[i] != 0.0).collect();
+    if loaded.is_empty() || loaded.iter().any(|&i| acts(i)) {
+        return None;
+    }
+    let m = &sc.manoeuvre;
+    let u = m.speed(m.start_time());
+    let axle = ["front", "rear"];
+    let adds: Vec<String> = loaded
+        .iter()
+        .map(|&i| {
+            let n = crate::format::rounded(k[i] * u * u, 4);
+            format!("{n} N on the {} axle", axle[i])
+        })
+        .collect();
+    Some(format!(
+        "`model.effects.aero_load` = [{}, {}] N per (m/s)² acts on nothing: it adds {} at {} m/s (k·u²), and the {} tyres are linear, whose force C_α·α does not depend on the load (nor does anything else here: no roll camber, no combined slip); give a tyre whose force grows with its load (gim, pac89, a .tir) for the down-force to act, or 0",
+        crate::format::exact(k[0]),
+        crate::format::exact(k[1]),
+        adds.join(" and "),
+        crate::format::rounded(u, 4),
+        match loaded.as_slice() {
+            [i] => axle[*i],
+            _ => "front and rear",
+        }
+    ))
 }

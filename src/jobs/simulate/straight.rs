@@ -48,6 +48,25 @@ fn cause(sc: &Scenario, speed: f64, steer: f64, beta: f64) -> Option<String> {
     }
 }
 
+/// On a bank, what a step sized by `lateral_acceleration` reaches: the
+/// change asked, from the trim's g·sin θ, as the metrics' steady ay reads
+/// it, and what the accelerometer reads in the turn (empty elsewhere).
+fn asked_change(sc: &Scenario) -> String {
+    let (Some(ay), bank) = (sc.asked_ay, sc.model.bank_acceleration()) else {
+        return String::new();
+    };
+    if bank == 0.0 {
+        return String::new();
+    }
+    format!(
+        "; `lateral_acceleration` = {} m/s² is such a change too, from the {} m/s² the accelerometer reads on the bank at straight running: the step turns the car to {} m/s² as the accelerometer reads it, and the metrics' steady ay is the {} m/s² change",
+        crate::format::exact(ay),
+        crate::format::fixed(bank, 3),
+        crate::format::fixed(bank + ay, 3),
+        crate::format::exact(ay)
+    )
+}
+
 /// What is said of straight running: a fact of the run, or a doubt.
 pub(super) enum Straight {
     /// A step steer's trim, where the run starts.
@@ -62,10 +81,11 @@ pub(super) fn straight_running(sc: &Scenario) -> Option<Straight> {
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         if let Some(why) = cause(sc, s.speed, s.trim, sc.initial.beta) {
             return Some(Straight::Note(format!(
-                "{why}: straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)",
+                "{why}: straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change){}",
                 s.trim.to_degrees(),
                 sc.initial.beta.to_degrees(),
-                s.amplitude.to_degrees()
+                s.amplitude.to_degrees(),
+                asked_change(sc)
             )));
         }
         return None;

@@ -7,8 +7,10 @@ campaign folders (a shared file system on a real cluster).
 
     python python/examples/dask_diagnose_batch.py [batch_folder]
 
-With a folder of campaign folders, diagnoses those (each with its own
-`[diagnose]` settings). Without one, writes six synthetic campaigns first
+With a folder of campaigns (folders or `.toml` files), diagnoses those
+(each with its own `[diagnose]` settings); a campaign that cannot be read
+or diagnosed is listed as FAILED with its error and the others go on, as
+`handling diagnose <folder> --batch` lists it in its fleet table. Without one, writes six synthetic campaigns first
 (`handling.synth`: the proving ground, two with a sensor bias, two with a
 tyre lag, two with neither), each asked about those two candidate effects,
 into a temporary folder; on a LocalCluster of 2 worker processes. Point
@@ -39,6 +41,15 @@ def synthetic_batch(folder: pathlib.Path) -> None:
             f.write('effects = ["sensor_bias", "relaxation_length"]\n')
 
 
+def diagnosed(campaign: pathlib.Path):
+    """The diagnosis of one campaign and None, or None and the error that
+    stopped it: one broken campaign must not end the batch."""
+    try:
+        return handling.diagnose(campaign), None
+    except handling.HandlingError as e:
+        return None, str(e)
+
+
 def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         folder = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(tmp)
@@ -49,15 +60,17 @@ def main() -> None:
             cluster
         ) as client:
             t0 = time.perf_counter()
-            on_dask = client.gather(client.map(handling.diagnose, campaigns))
+            on_dask = client.gather(client.map(diagnosed, campaigns))
             t_dask = time.perf_counter() - t0
         t0 = time.perf_counter()
-        local = [handling.diagnose(c) for c in campaigns]
+        local = [diagnosed(c) for c in campaigns]
         t_local = time.perf_counter() - t0
         assert on_dask == local
-        for c, d in zip(campaigns, local):
-            print(f"{c.name}: {d.verdict.statement}")
-        print(f"{len(campaigns)} campaigns: Dask {t_dask:.2f} s, one process {t_local:.2f} s; identical")
+        for c, (d, error) in zip(campaigns, local):
+            print(f"{c.name}: FAILED: {error}" if d is None else f"{c.name}: {d.verdict.statement}")
+        failed = sum(d is None for d, _ in local)
+        said = f", {failed} failed" if failed else ""
+        print(f"{len(campaigns)} campaigns{said}: Dask {t_dask:.2f} s, one process {t_local:.2f} s; identical")
 
 
 if __name__ == "__main__":

@@ -159,7 +159,16 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Attrs) {
         Error::Param(p) => (
             ParamError::new_err(message),
             vec![
-                ("key", text(&p.key)),
+                // A command-line option (`--top`) as Python's keyword
+                // (`top`), as the message says it; a file's key as it is.
+                (
+                    "key",
+                    if p.key.starts_with("--") {
+                        text(&spelling::keyword(&p.key))
+                    } else {
+                        text(&p.key)
+                    },
+                ),
                 (
                     "value",
                     p.value

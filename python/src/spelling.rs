@@ -6,7 +6,7 @@
 
 /// `--name` (letters, digits and dashes) as its keyword, `name` with
 /// underscores.
-fn keyword(flag: &str) -> String {
+pub(crate) fn keyword(flag: &str) -> String {
     flag.trim_start_matches("--").replace('-', "_")
 }
 

@@ -25,6 +25,21 @@ use serde::Serialize;
 
 pub use crate::diagnose::report::worth::{worth, Worth};
 
+/// What the diagnosis reads of a set's candidates with the campaign's
+/// runs: the words of the set's separation D say why D of the campaign's
+/// runs did not tell them apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DiagnosisReads {
+    /// It calls them confounded (the set is one of its confounded sets).
+    Confounded,
+    /// It finds no significant gap: the runs need neither.
+    NoGap,
+    /// A set asked for beside a gap: the confounding rule is read per
+    /// manoeuvre ([`Worth::AlreadyToldApart`]).
+    Other,
+}
+
 /// What the design recommends for a set.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]

@@ -7,13 +7,14 @@
 //! model with the candidate's parameter vector set by the diagnosis's own
 //! layout). Units: SI, rad; cornering coefficients in 1/rad.
 
+use super::{DesignRequest, SetSource};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::axles::shares;
 use crate::diagnose::model::Augmented;
 use crate::diagnose::{Diagnosis, Ranked};
-use crate::error::Error;
+use crate::error::{DesignError, Error};
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use serde::Serialize;
@@ -262,6 +263,78 @@ impl Fitted {
             .iter()
             .find(|x| same_effects(&x.effects, effects))
     }
+}
+
+/// The members of each set: the requested ones, else the confounded ones.
+pub(crate) fn sets(
+    fitted: &Fitted,
+    req: &DesignRequest,
+) -> Result<Vec<(Vec<FittedCandidate>, SetSource)>, Error> {
+    fitted.cross_validated_any()?;
+    let (wanted, source) = match &req.sets {
+        Some(s) => (s.clone(), SetSource::Requested),
+        None => (
+            fitted
+                .confounded
+                .iter()
+                .map(|set| set.iter().map(|e| vec![*e]).collect())
+                .collect(),
+            SetSource::Confounded,
+        ),
+    };
+    if wanted.is_empty() {
+        let noted = fitted.noted.iter().map(|e| joined(e, "+"));
+        return Err(DesignError::NothingConfounded {
+            noted: noted.collect(),
+        }
+        .into());
+    }
+    wanted
+        .iter()
+        .map(|set| {
+            let members = set
+                .iter()
+                .map(|effects| {
+                    fitted
+                        .candidate(effects)
+                        .cloned()
+                        .ok_or_else(|| not_fitted(fitted, effects))
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            if members.len() < 2 {
+                return Err(DesignError::OneMember.into());
+            }
+            Ok((members, source))
+        })
+        .collect()
+}
+
+/// Why candidate `effects` has no fit to design with: screened out, or
+/// never among the diagnosis's candidates.
+pub(super) fn not_fitted(fitted: &Fitted, effects: &[EffectKind]) -> Error {
+    let candidate = joined(effects, "+");
+    let fitted_labels = fitted.candidates.iter().map(|c| c.label()).collect();
+    match fitted
+        .screened
+        .iter()
+        .find(|s| same_effects(&s.effects, effects))
+    {
+        Some(s) => DesignError::ScreenedOut {
+            candidate,
+            insample_percent: s.insample_reduction_percent,
+            of: match s.extends.as_slice() {
+                [] => "the base model".to_string(),
+                set => joined(set, "+"),
+            },
+            screen_percent: s.screen_percent,
+            fitted: fitted_labels,
+        },
+        None => DesignError::NotFitted {
+            candidate,
+            fitted: fitted_labels,
+        },
+    }
+    .into()
 }
 
 /// The candidates `verdict` notes fitted far from off on a gap within

@@ -4,7 +4,8 @@
 //! after the design measures with the candidates as diagnosed before it
 //! ([`measured`]). Units: separations in noise floors; J dimensionless.
 
-use super::{models, separation, sets, DesignRequest, Fitted, Logging};
+use super::candidates::sets;
+use super::{models, separation, DesignRequest, Fitted, Logging};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::Augmented;

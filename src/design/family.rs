@@ -246,7 +246,7 @@ fn step(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed>
         name: format!("step_{:03}kph_{:.1}ms2", kmh(u), ay),
         kind: Kind::Step,
         description: format!(
-            "a steer step of {:.2}° in {rise:.2} s at {:.0} km/h for {ay:.1} m/s², held 4 s",
+            "a steer step of {:.2}° in {rise:.2} s at {:.0} km/h, held 4 s (sized on the base model for {ay:.1} m/s²)",
             d.to_degrees(),
             kmh(u)
         ),
@@ -404,7 +404,7 @@ fn brake_in_turn(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<
         name: format!("brake_in_turn_{:03}kph_{:.1}ms2", kmh(u), ay),
         kind: Kind::BrakeInTurn,
         description: format!(
-            "a steady turn at {:.0} km/h and {ay:.1} m/s² ({:.2}° of steer), then braking to {:.0} km/h in {t:.1} s, the steer held",
+            "a steady turn at {:.0} km/h ({:.2}° of steer, sized on the base model for {ay:.1} m/s²), then braking to {:.0} km/h in {t:.1} s, the steer held",
             kmh(u),
             d.to_degrees(),
             kmh(end)
@@ -420,7 +420,7 @@ fn accelerate_in_turn(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Op
         name: format!("accelerate_in_turn_{:03}kph_{:.1}ms2", kmh(u), ay),
         kind: Kind::AccelerateInTurn,
         description: format!(
-            "a steady turn at {:.0} km/h and {ay:.1} m/s² ({:.2}° of steer), then accelerating to {:.0} km/h in {t:.1} s, the steer held",
+            "a steady turn at {:.0} km/h ({:.2}° of steer, sized on the base model for {ay:.1} m/s²), then accelerating to {:.0} km/h in {t:.1} s, the steer held",
             kmh(u),
             d.to_degrees(),
             kmh(end)
@@ -457,7 +457,7 @@ fn constant_radius(model: &Augmented, limits: &Limits) -> Option<Designed> {
         name: format!("constant_radius_{:.0}m", radius),
         kind: Kind::ConstantRadius,
         description: format!(
-            "a {radius:.0} m circle at rising speed, {:.0} to {:.0} km/h in {t:.0} s ({:.1} to {ay:.1} m/s²), the steer the base model needs on it",
+            "a steer schedule at rising speed, {:.0} to {:.0} km/h in {t:.0} s: the steer the base model needs on a {radius:.0} m circle ({:.1} to {ay:.1} m/s² on it); drive the steer schedule, not the circle (the scenario replays the steer open loop: a car unlike the base model leaves the circle, and the separation was predicted for the steer)",
             kmh(lo),
             kmh(top),
             lo * lo / radius

@@ -27,11 +27,12 @@ pub mod calibration;
 pub mod candidates;
 pub mod evidence;
 pub mod family;
+pub mod labels;
 pub mod lacking;
 mod request;
 pub mod separation;
 
-pub use advice::{Advised, AdvisedBest, Missing, Recommendation, Worth};
+pub use advice::{Advised, AdvisedBest, DiagnosisReads, Missing, Recommendation, Worth};
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
 pub use calibration::{Calibration, ReferenceGap, CALIBRATING_D};
 pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
@@ -41,7 +42,6 @@ pub use request::DesignRequest;
 pub use separation::Logging;
 
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::Prepared;
 use crate::error::{DesignError, Error};
@@ -156,9 +156,15 @@ pub struct SetDesign {
     pub members: Vec<String>,
     /// Where the set comes from.
     pub source: SetSource,
-    /// How far the campaign's own runs separate the reference from its
-    /// weakest look-alike, D over all runs.
+    /// What the diagnosis reads of the set with the campaign's runs.
+    pub reads: DiagnosisReads,
+    /// How far apart the reference's and its weakest look-alike's fitted
+    /// models replay the campaign's runs, D over all their samples (it
+    /// sums over samples where the diagnosis's held-out errors average
+    /// over them: a pair the diagnosis confounds can differ by D ≫ 1).
     pub campaign_separation: f64,
+    /// The samples of the campaign's runs D sums over.
+    pub campaign_samples: usize,
     /// How the campaign's runs measure the separations their replays
     /// predict: the scatter the expected separations' uncertainties are
     /// widened by.
@@ -200,78 +206,6 @@ pub struct Design {
     pub sets: Vec<SetDesign>,
 }
 
-/// The members of each set: the requested ones, else the confounded ones.
-fn sets(
-    fitted: &Fitted,
-    req: &DesignRequest,
-) -> Result<Vec<(Vec<FittedCandidate>, SetSource)>, Error> {
-    fitted.cross_validated_any()?;
-    let (wanted, source) = match &req.sets {
-        Some(s) => (s.clone(), SetSource::Requested),
-        None => (
-            fitted
-                .confounded
-                .iter()
-                .map(|set| set.iter().map(|e| vec![*e]).collect())
-                .collect(),
-            SetSource::Confounded,
-        ),
-    };
-    if wanted.is_empty() {
-        let noted = fitted.noted.iter().map(|e| joined(e, "+"));
-        return Err(DesignError::NothingConfounded {
-            noted: noted.collect(),
-        }
-        .into());
-    }
-    wanted
-        .iter()
-        .map(|set| {
-            let members = set
-                .iter()
-                .map(|effects| {
-                    fitted
-                        .candidate(effects)
-                        .cloned()
-                        .ok_or_else(|| not_fitted(fitted, effects))
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            if members.len() < 2 {
-                return Err(DesignError::OneMember.into());
-            }
-            Ok((members, source))
-        })
-        .collect()
-}
-
-/// Why candidate `effects` has no fit to design with: screened out, or
-/// never among the diagnosis's candidates.
-fn not_fitted(fitted: &Fitted, effects: &[EffectKind]) -> Error {
-    let candidate = joined(effects, "+");
-    let fitted_labels = fitted.candidates.iter().map(|c| c.label()).collect();
-    match fitted
-        .screened
-        .iter()
-        .find(|s| same_effects(&s.effects, effects))
-    {
-        Some(s) => DesignError::ScreenedOut {
-            candidate,
-            insample_percent: s.insample_reduction_percent,
-            of: match s.extends.as_slice() {
-                [] => "the base model".to_string(),
-                set => joined(set, "+"),
-            },
-            screen_percent: s.screen_percent,
-            fitted: fitted_labels,
-        },
-        None => DesignError::NotFitted {
-            candidate,
-            fitted: fitted_labels,
-        },
-    }
-    .into()
-}
-
 /// The models of `members` on `base`.
 fn models(members: &[FittedCandidate], base: &Augmented) -> Result<Vec<Augmented>, Error> {
     members
@@ -300,7 +234,7 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     // and the transients that follow read as separation (a linear car
     // logged 60 ms late: D = 3.8 from the first samples, 0.6 settled).
     let runs = separation::campaign_prepared(c);
-    let sets = sets(fitted, req)?
+    let sets = candidates::sets(fitted, req)?
         .into_iter()
         .map(|(members, source)| {
             let cx = SetContext {
@@ -359,15 +293,6 @@ fn pairs(
         .collect()
 }
 
-fn peak_ay(obs: &Observed, speed: &[f64], logging: &Logging) -> f64 {
-    let ay: Vec<f64> = if logging.channels[crate::diagnose::Channel::Ay.index()] {
-        obs.ay.clone()
-    } else {
-        obs.yaw_rate.iter().zip(speed).map(|(r, u)| r * u).collect()
-    };
-    ay.iter().fold(0.0, |m: f64, a| m.max(a.abs()))
-}
-
 /// What scoring a manoeuvre for one set needs.
 struct SetContext<'a> {
     c: &'a Campaign,
@@ -395,7 +320,17 @@ impl SetContext<'_> {
         let run = self.prepared(&self.logging.run(&d.name, &d.manoeuvre));
         let obs: Vec<Observed> = self.models.iter().map(|m| run.observe(m)).collect();
         let speed: Vec<f64> = run.times.iter().map(|&t| d.manoeuvre.speed(t)).collect();
-        let peak = peak_ay(&obs[0], &speed, self.logging);
+        let lateral = |o: &Observed| labels::lateral(o, &speed, self.logging);
+        let peak = labels::peak(&lateral(&obs[0]));
+        // Said as the best model predicts it: the reference as fitted, the
+        // base only where the diagnosis found no gap.
+        let predicted = labels::Predicted {
+            best: (!self.fitted.no_gap)
+                .then(|| (self.labels[0].as_str(), lateral(&obs[0]), &obs[0])),
+            base_ay: lateral(&run.observe(self.base)),
+            speed: &speed,
+        };
+        let description = d.description.clone() + &labels::predicted_words(d.kind, &predicted);
         let limit = self.limits.ay_max();
         if peak > 1.1 * limit {
             let name = d.name.clone();
@@ -425,7 +360,7 @@ impl SetContext<'_> {
         let scored = Scored {
             name: d.name.clone(),
             kind: d.kind,
-            description: d.description.clone(),
+            description,
             duration: d.manoeuvre.end_time() - d.manoeuvre.start_time(),
             separation: weakest,
             pairs,
@@ -535,10 +470,17 @@ fn design_set(
     }
     let best = ranked.first().map(|(_, p)| p.clone());
     let ranked: Vec<Scored> = ranked.into_iter().map(|(s, _)| s).collect();
+    let reads = match source {
+        _ if cx.fitted.no_gap => DiagnosisReads::NoGap,
+        SetSource::Confounded => DiagnosisReads::Confounded,
+        SetSource::Requested => DiagnosisReads::Other,
+    };
     Ok(SetDesign {
         members: cx.labels.clone(),
         source,
+        reads,
         campaign_separation,
+        campaign_samples: cx.runs.iter().map(Prepared::count).sum(),
         calibration,
         recommendation: advice::recommendation(&ranked, campaign_separation),
         advised,

@@ -8,6 +8,7 @@
 use super::calibration::ReferenceGap;
 use super::*;
 use crate::diagnose::campaign::DiagnoseSettings;
+use crate::diagnose::effects::EffectKind;
 use crate::diagnose::{diagnose, Diagnosis};
 use crate::proving_ground::{generate, Noise, Programme, SynthSpec};
 use std::sync::OnceLock;

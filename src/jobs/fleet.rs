@@ -15,12 +15,15 @@ use crate::diagnose::effects::{joined, EffectKind};
 use crate::error::{
     CampaignFileProblem, Error, InputError, InputProblem, OptionsError, SelectionProblem,
 };
-use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json, OutputLock};
 
+mod page;
 mod rows;
 pub use rows::FleetRow;
-use rows::{distinct_diagnosed, first_of_its_runs, runs_digest, runs_folder_of, shared_runs_notes};
+use rows::{
+    confounded_with, distinct_diagnosed, first_of_its_runs, runs_digest, runs_folder_of,
+    shared_runs_notes,
+};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -34,6 +37,11 @@ pub struct Recurring {
     /// Campaigns where it is the best single candidate, none of its
     /// parameters on a bound.
     pub best: usize,
+    /// Of the campaigns whose verdict names it, those whose diagnosis
+    /// leaves it confounded with another effect: a verdict the runs do not
+    /// tell from a look-alike, not a finding to count as settled.
+    #[serde(default)]
+    pub confounded: usize,
 }
 
 /// The fleet report: every campaign's row and the recurring effects.
@@ -173,6 +181,8 @@ pub fn run_batch(
                 rows.push(FleetRow {
                     runs_folder,
                     runs_digest,
+                    // The folder `diagnose` wrote it to, as the page links it.
+                    report: Some(format!("{}/report.html", stem_of(&all[i]))),
                     ..row_of(&name, &r)
                 });
                 reports.push(r);
@@ -203,6 +213,8 @@ fn failed_row(name: String, e: &Error) -> FleetRow {
         best_on_bound: false,
         statement: e.to_string(),
         failed: true,
+        confounded_with: Vec::new(),
+        report: None,
         runs_folder: None,
         runs_digest: None,
     }
@@ -299,8 +311,23 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         best_on_bound: best.is_some_and(|b| b.parameters.iter().any(|p| p.at_bound)),
         statement: d.verdict.statement(),
         failed: false,
+        confounded_with: confounded_with(d.verdict.effects(), &d.confounded),
+        report: None,
         runs_folder: None,
         runs_digest: None,
+    }
+}
+
+impl Recurring {
+    /// How many of the verdicts naming it are confounded, in words after
+    /// their count (nothing where none is).
+    pub fn confounded_words(&self) -> String {
+        match self.confounded {
+            0 => String::new(),
+            1 if self.verdicts == 1 => " (confounded with another effect)".to_string(),
+            c if c == self.verdicts => " (each confounded with another effect)".to_string(),
+            c => format!(" ({c} of them confounded with another effect)"),
+        }
     }
 }
 
@@ -322,6 +349,10 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf, lock: OutputLock) -> FleetR
             best: distinct
                 .iter()
                 .filter(|r| !r.best_on_bound && r.best.is_some_and(|b| b.0 == effect))
+                .count(),
+            confounded: distinct
+                .iter()
+                .filter(|r| r.verdict.contains(&effect) && !r.confounded_with.is_empty())
                 .count(),
         })
         .filter(|r| r.verdicts + r.best > 0)
@@ -353,6 +384,7 @@ impl FleetReport {
                 "campaign",
                 "runs",
                 "verdict",
+                "confounded_with",
                 "heldout_error_before",
                 "heldout_error_after",
                 "noise_level",
@@ -367,6 +399,7 @@ impl FleetReport {
                     r.campaign.clone(),
                     r.runs.to_string(),
                     joined(&r.verdict, "+"),
+                    joined(&r.confounded_with, "+"),
                     number(r.heldout_error_before),
                     number(r.heldout_error_after),
                     number(r.noise_level),
@@ -380,72 +413,6 @@ impl FleetReport {
         )?;
         write_json(&json, self)?;
         self.page().write("Fleet diagnosis", &html)
-    }
-
-    /// The table and the recurring effects as a self-contained page; each
-    /// campaign's name is the path of its own `report.html`.
-    fn page(&self) -> Page {
-        let number = |v: Option<f64>| v.map_or_else(|| "—".to_string(), |v| format!("{v:.3}"));
-        let rows: Vec<Vec<Cell>> = self
-            .campaigns
-            .iter()
-            .map(|r| {
-                vec![
-                    Cell::Text(format!("{}/report.html", r.campaign)),
-                    Cell::Number(r.runs.to_string()),
-                    Cell::Text(if r.verdict.is_empty() {
-                        "—".into()
-                    } else {
-                        joined(&r.verdict, " + ")
-                    }),
-                    Cell::Number(number(r.heldout_error_before)),
-                    Cell::Number(number(r.heldout_error_after)),
-                    Cell::Number(number(r.noise_level)),
-                    Cell::Text(
-                        r.best
-                            .map_or_else(String::new, |b| format!("{} ({:.1} %)", b.0.name(), b.1)),
-                    ),
-                    Cell::Text(if r.failed { "FAILED: " } else { "" }.to_string() + &r.statement),
-                ]
-            })
-            .collect();
-        let n = distinct_diagnosed(&self.campaigns);
-        let recurring: Vec<Vec<Cell>> = self
-            .recurring
-            .iter()
-            .map(|e| {
-                vec![
-                    Cell::Text(e.effect.name().into()),
-                    Cell::Number(format!("{} of {n}", e.verdicts)),
-                    Cell::Number(format!("{} of {n}", e.best)),
-                ]
-            })
-            .collect();
-        let mut p = Page::new("Fleet diagnosis");
-        p.section("fleet", "Verdict per campaign").table(
-            "fleet-table",
-            &[
-                "campaign report",
-                "runs",
-                "verdict",
-                "J before",
-                "J after",
-                "J of the noise",
-                "best single candidate",
-                "statement",
-            ],
-            &rows,
-        );
-        p.section("recurring", "Recurring effects").table(
-            "recurring-table",
-            &[
-                "effect",
-                "in the verdict of (campaigns diagnosed)",
-                "best single candidate in",
-            ],
-            &recurring,
-        );
-        p
     }
 
     /// The campaigns diagnosed (not failed).
@@ -485,11 +452,7 @@ impl FleetReport {
                 format!(
                     "  {:<24} {:<32} J {:.3} → {:.3} (noise {:.3})",
                     r.campaign,
-                    if r.verdict.is_empty() {
-                        "—".to_string()
-                    } else {
-                        joined(&r.verdict, "+")
-                    },
+                    r.verdict_words("+"),
                     r.heldout_error_before.unwrap_or(f64::NAN),
                     r.heldout_error_after.unwrap_or(f64::NAN),
                     r.noise_level.unwrap_or(f64::NAN)
@@ -503,9 +466,10 @@ impl FleetReport {
         let n = distinct_diagnosed(&self.campaigns);
         for e in &self.recurring {
             out.push(format!(
-                "  {}: in the verdict of {} of {n} diagnosed campaigns, the best single candidate in {} of {n}",
+                "  {}: in the verdict of {} of {n} diagnosed campaigns{}, the best single candidate in {} of {n}",
                 e.effect.name(),
                 e.verdicts,
+                e.confounded_words(),
                 e.best
             ));
         }

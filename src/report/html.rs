@@ -42,13 +42,30 @@ pub fn escape(text: &str) -> String {
     out
 }
 
-/// A table cell: text, or a number right-aligned.
+/// A table cell: text, a number right-aligned, or a link.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Cell {
     /// Left-aligned text.
     Text(String),
     /// A number already formatted, right-aligned.
     Number(String),
+    /// A link to a file relative to the page (`a/report.html`), its text
+    /// the path itself.
+    Link(String),
+}
+
+/// A relative path as a URL: each byte other than an unreserved one or
+/// `/` percent-encoded (RFC 3986), so a folder named `a b#1` links to it.
+pub fn href(path: &str) -> String {
+    let mut out = String::with_capacity(path.len());
+    for b in path.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~/".contains(&b) {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
 }
 
 impl From<&str> for Cell {
@@ -130,6 +147,10 @@ impl Page {
                     Cell::Number(t) => {
                         let _ = write!(self.body, "<td class=\"num\">{}</td>", escape(t));
                     }
+                    Cell::Link(path) => {
+                        let (url, text) = (escape(&href(path)), escape(path));
+                        let _ = write!(self.body, "<td><a href=\"{url}\">{text}</a></td>");
+                    }
                 }
             }
             self.body.push_str("</tr>\n");
@@ -199,6 +220,25 @@ mod tests {
         assert!(html.contains("id=\"s&quot;1\""));
         assert!(html.contains("<title>&lt;t&gt;</title>"));
         assert!(html.contains("<th>&lt;h&gt;</th>") && html.contains("<td>&amp;</td>"));
+    }
+
+    /// A link cell's URL is percent-encoded and its text escaped: a
+    /// folder `a b#<1>` links to `a%20b%23%3C1%3E/report.html`.
+    #[test]
+    fn a_link_cell_is_an_encoded_url_with_escaped_text() {
+        let mut p = Page::new("links");
+        p.section("s", "s").table(
+            "t",
+            &["report"],
+            &[vec![Cell::Link("a b#<1>/report.html".into())]],
+        );
+        let html = p.finish("links");
+        assert!(
+            html.contains(
+                "<td><a href=\"a%20b%23%3C1%3E/report.html\">a b#&lt;1&gt;/report.html</a></td>"
+            ),
+            "{html}"
+        );
     }
 
     #[test]

@@ -29,7 +29,7 @@ fn a_confounded_delay_gets_a_manoeuvre_whose_speed_changes_written_as_a_scenario
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(
-        text.contains("sensor_delay / steer_path: the campaign's runs separate them by D = "),
+        text.contains("sensor_delay / steer_path: the two fitted models' replays of the campaign's runs differ by D = "),
         "{text}"
     );
     let design = diag.join("design");

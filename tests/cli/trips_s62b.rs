@@ -65,9 +65,11 @@ fn design_recommends_no_manoeuvre_within_its_uncertainty_and_ranks_the_diagnosis
     }
     assert_eq!(set["recommendation"]["kind"], "none_worth_driving", "{set}");
     assert_eq!(set["recommendation"]["campaign_separates_more"], true);
+    let best_e = set["recommendation"]["best_expected"].as_f64().unwrap();
+    let best_u = set["recommendation"]["best_uncertainty"].as_f64().unwrap();
     assert!(
         text.contains(&format!(
-            "  none is worth driving to separate them: the campaign's runs already separate them by D = {campaign:.1}, more than any of these is expected to add (at most "
+            "  no single run of these is expected to tell them apart (at most {best_e:.1} ± {best_u:.1}, less than the D = {campaign:.1} of the campaign's runs, which left them confounded): they are still to be told apart, so a test is still needed"
         )),
         "{text}"
     );

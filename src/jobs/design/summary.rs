@@ -4,7 +4,7 @@
 //! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
-use crate::design::{Measured, Recommendation, Scored, SetDesign, Worth};
+use crate::design::{DiagnosisReads, Measured, Recommendation, Scored, SetDesign, Worth};
 use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
@@ -62,9 +62,9 @@ impl DesignReport {
 /// was left out (of a family of `family` manoeuvres).
 fn set_lines(set: &SetDesign, family: usize) -> Vec<String> {
     let mut out = vec![format!(
-        "{}: the campaign's runs separate them by D = {:.1} noise floors{}",
+        "{}: {}{}",
         set.members.join(" / "),
-        set.campaign_separation,
+        separation_words(set),
         calibration_words(set)
     )];
     for (k, s) in set.ranked.iter().enumerate() {
@@ -79,6 +79,27 @@ fn set_lines(set: &SetDesign, family: usize) -> Vec<String> {
         ));
     }
     out
+}
+
+/// What D of the campaign's runs measures, and why those runs did not
+/// tell the pair apart where the diagnosis says they do not: D sums the
+/// fitted models' squared differences over every sample, the diagnosis's
+/// held-out errors average the residuals over them, so a pair can differ
+/// by D ≫ 1 and leave gaps within the confounding window.
+fn separation_words(set: &SetDesign) -> String {
+    let d = set.campaign_separation;
+    let n = set.campaign_samples.max(1) as f64;
+    let what = format!(
+        "the two fitted models' replays of the campaign's runs differ by D = {d:.1} noise floors (the root of their squared differences summed over the runs' {} samples: {} of a floor a sample, RMS)",
+        set.campaign_samples,
+        readable(d / n.sqrt(), 2)
+    );
+    let why = match set.reads {
+        DiagnosisReads::Confounded => "; yet the diagnosis calls them confounded: it weighs each one's held-out error, an average over the samples, and the gaps the two leave lie within its confounding window, so these runs do not tell them apart",
+        DiagnosisReads::NoGap => "; the diagnosis finds no significant gap with these runs: they need neither, and do not tell one from the other",
+        DiagnosisReads::Other => "",
+    };
+    format!("{what}{why}")
 }
 
 /// How the campaign's own runs calibrate a set's uncertainties, in words
@@ -166,11 +187,12 @@ fn measured_lines(m: &Measured) -> Vec<String> {
     )];
     out.push(match &m.predicted {
         Some(p) => format!(
-            "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
+            "  predicted for {}: {:.1} ± {:.1}, measured {} σ from it{}",
             p.manoeuvre,
             p.expected,
             p.uncertainty,
-            p.deviation,
+            // Signed, and never "-0.0" for what rounds to zero.
+            crate::format::signed(p.deviation, 1),
             if p.steer_difference > 0.1f64.to_radians() {
                 format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
             } else {
@@ -205,7 +227,7 @@ fn worth_words(worth: Option<Worth>) -> &'static str {
             "; not recommended: within its own uncertainty, one run may show no separation or favour the wrong candidate"
         }
         Some(Worth::BelowCampaign) => {
-            "; not recommended: less than the campaign's runs already separate them by"
+            "; not recommended: it adds less than the D of the campaign's runs, which did not tell them apart"
         }
         Some(Worth::AlreadyToldApart) => {
             "; not needed: the diagnosis already tells them apart, no run is needed to separate them"
@@ -245,17 +267,33 @@ fn recommendation_line(set: &SetDesign) -> Option<String> {
             "  no manoeuvre of the family fits within the limits (each is left out beyond them): none to drive; widen --ay-share or --max-ax".into(),
         );
     }
-    let these = if n == 1 { "it" } else { "any of these" };
     Some(if campaign_separates_more {
-        format!(
-            "  none is worth driving to separate them: the campaign's runs already separate them by D = {:.1}, more than {these} is expected to add (at most {e:.1} ± {u:.1})",
-            set.campaign_separation
-        )
+        below_campaign_words(set, e, u)
     } else {
         format!(
             "  none is worth driving to separate them: each one's expected separation lies within its own uncertainty (at most {e:.1} ± {u:.1})"
         )
     })
+}
+
+/// The recommendation when each of the best is expected to add less than
+/// the D of the campaign's runs (the best at most `e ± u`): those runs did
+/// not tell the pair apart, so a test is still needed; the best and the
+/// diagnosis's advice are what to drive, not "nothing".
+fn below_campaign_words(set: &SetDesign, e: f64, u: f64) -> String {
+    let best = set.ranked.first().map_or("", |s| s.name.as_str());
+    let head = format!(
+        "  no single run of these is expected to tell them apart (at most {e:.1} ± {u:.1}, less than the D = {:.1} of the campaign's runs",
+        set.campaign_separation
+    );
+    match set.reads {
+        DiagnosisReads::NoGap => format!(
+            "{head}, with which the diagnosis finds no gap): the runs need neither; to tell them apart all the same, drive the test the diagnosis advises (below) and the best of these, {best}, and diagnose again with those runs"
+        ),
+        _ => format!(
+            "{head}, which left them confounded): they are still to be told apart, so a test is still needed: drive the test the diagnosis advises (below) and the best of these, {best}, and diagnose again with those runs (the diagnosis, not one run, tells them apart)"
+        ),
+    }
 }
 
 /// What the diagnosis advises to separate the set's effects, and where

@@ -40,6 +40,15 @@ pub struct FleetRow {
     pub statement: String,
     /// Whether it failed (not read or not diagnosed).
     pub failed: bool,
+    /// The effects the diagnosis leaves confounded with the verdict's (its
+    /// `confounded` sets that hold one of the verdict's effects): empty
+    /// where the runs tell the verdict from every look-alike.
+    #[serde(default)]
+    pub confounded_with: Vec<EffectKind>,
+    /// Its `report.html`, relative to the fleet's folder (`a/report.html`
+    /// for campaign `a.toml`); None where it failed and wrote none.
+    #[serde(default)]
+    pub report: Option<String>,
     /// The folder its run files were read from, canonical: campaigns
     /// that share it are one campaign's runs, counted once.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -49,6 +58,45 @@ pub struct FleetRow {
     /// campaign's runs too, counted once.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub runs_digest: Option<String>,
+}
+
+impl FleetRow {
+    /// Its verdict's effects joined by `sep`, with the effects the
+    /// diagnosis leaves confounded with them (`steering_compliance
+    /// (confounded with cornering_stiffness)`); "—" for none.
+    pub fn verdict_words(&self, sep: &str) -> String {
+        if self.verdict.is_empty() {
+            return "—".to_string();
+        }
+        let effects = crate::diagnose::effects::joined(&self.verdict, sep);
+        if self.confounded_with.is_empty() {
+            return effects;
+        }
+        format!(
+            "{effects} (confounded with {})",
+            crate::diagnose::effects::joined(&self.confounded_with, " and ")
+        )
+    }
+}
+
+/// The effects `confounded` (a diagnosis's confounded sets) leaves
+/// confounded with one of `verdict`'s, each once, in the sets' order.
+pub(super) fn confounded_with(
+    verdict: &[EffectKind],
+    confounded: &[crate::diagnose::report::Confounded],
+) -> Vec<EffectKind> {
+    let mut out: Vec<EffectKind> = Vec::new();
+    for set in confounded
+        .iter()
+        .filter(|c| c.effects.iter().any(|e| verdict.contains(e)))
+    {
+        for e in &set.effects {
+            if !verdict.contains(e) && !out.contains(e) {
+                out.push(*e);
+            }
+        }
+    }
+    out
 }
 
 /// The canonical folder of a campaign's run files (`None`: it has none,

@@ -557,18 +557,10 @@ fn python_extension_functions_stay_readable() {
     );
 }
 
-/// Long functions of `src/` that other branches of this session split:
-/// skipped here until their branches land. TEMPORARY: the lead empties
-/// this list (and deletes it) at merge, when those splits are on main.
-const SPLIT_ON_OTHER_BRANCHES: &[&str] = &[
-    "diagnose/fit/mod.rs::fit_with",
-    "diagnose/fit/refit.rs::descend",
-    "diagnose/pipeline.rs::run",
-    "diagnose/report/gap.rs::band_gaps_above",
-    "diagnose/report/gap.rs::trusted_channel_gap",
-    "diagnose/report/summary.rs::gap_summary",
-    "diagnose/verdict/search.rs::search",
-];
+/// Long functions of `src/` not yet split, each named here so that no new
+/// one slips in: the fold refits' descent is being rewritten with a cheaper
+/// first pass, and is split with it.
+const SPLIT_ON_OTHER_BRANCHES: &[&str] = &["diagnose/fit/refit.rs::descend"];
 
 /// The library's and the binary's functions (tests included) stay under
 /// the guide's 80 lines: a reader holds one on a screen.

@@ -9,6 +9,7 @@
 //! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
 //! model ([`FitOutcome::bic`]).
 
+mod curvature;
 pub(crate) mod fold_check;
 #[cfg(test)]
 mod fold_check_tests;
@@ -25,6 +26,7 @@ pub mod tempering;
 #[cfg(test)]
 mod unseen_tests;
 
+use crate::diagnose::fit::curvature::curvature;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::{BoundedLm, Jacobians};
@@ -245,106 +247,132 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
     polish: Polish,
     second: bool,
 ) -> (FitOutcome, Option<Vec<f64>>) {
-    let mut evaluations = 0;
     let p0 = problem.clamp(start);
-    // The polish's last Jacobian where it was differenced at the optimum:
-    // the linearisation's own (the same replays, the same numbers).
-    let mut last_jacobian = None;
-    let (params, cost, converged) = if start.is_empty() {
-        (Vec::new(), problem.cost(&[]), true)
+    let (mut params, cost, converged, mut evaluations, last_jacobian) = if start.is_empty() {
+        (Vec::new(), problem.cost(&[]), true, 0, None)
     } else {
-        // A refit starts next to its optimum: a bounded budget (a fold
-        // that needs more is reported as not converged).
-        let iterations = match polish {
-            Polish::LevenbergMarquardt => FIT_ITERATIONS,
-            Polish::Refit => REFIT_ITERATIONS,
-        };
-        // A fit's Jacobian costs a replay of the runs per parameter: an
-        // accepted step updates it (Broyden) where its model still serves,
-        // and the convergence test reads a fresh one. A refit keeps a
-        // fresh one each iteration: its budget is a handful of them.
-        let jacobians = match polish {
-            Polish::LevenbergMarquardt => Jacobians::Secant,
-            Polish::Refit => Jacobians::Every,
-        };
-        let (lm, jacobian) = BoundedLm {
-            iterations,
-            tolerance: FIT_TOLERANCE,
-            jacobians,
-        }
-        .minimize_linearised(problem, &p0, &problem.bounds);
-        last_jacobian = jacobian;
-        evaluations += lm.evaluations;
-        // The polish accepts only steps that lower the cost (and returns its
-        // start when its cost is not finite): it ends no worse than it began.
-        // The cost reported is the data's: the prior's rows regularise
-        // the fit, they are no misfit of the runs.
-        let data_cost = lm.cost - problem.prior_cost(&lm.params);
-        (lm.params, data_cost, lm.converged)
+        polished(problem, &p0, polish)
     };
-    let mut params = params;
-    let mut unseen = Vec::new();
     let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
-    let mut robust_cov = None;
-    let (std_errors, robust_std_errors, linear) = match polish {
-        Polish::LevenbergMarquardt if !params.is_empty() => {
-            if last_jacobian.is_none() {
-                evaluations += problem.jacobian_evaluations(params.len());
-            }
-            let linear = linearise_with(problem, &params, second, last_jacobian);
-            evaluations += 1;
-            // A parameter the data cannot see (an accelerometer offset of a
-            // run set without ay) is wherever the swarm left it: report its
-            // off value (the effect off), which fits as well.
-            let off = problem.clamp(off.unwrap_or(start));
-            let probes;
-            (unseen, probes) = unseen_at(problem, &params, &linear);
-            evaluations += probes;
-            for (i, &u) in unseen.iter().enumerate() {
-                if u {
-                    params[i] = off[i];
-                }
-            }
-            let mut free = linear.jacobian.clone();
-            for (i, &b) in problem.bounds.iter().enumerate() {
-                if crate::diagnose::effects::on_bound(params[i], b).is_some() {
-                    free.column_mut(i).fill(0.0);
-                }
-            }
-            let covariance = robust_covariance(problem, &linear, &free);
-            let robust = match &covariance {
-                Some(v) => (0..params.len())
-                    .map(|i| {
-                        if v[(i, i)] >= 0.0 {
-                            v[(i, i)].sqrt()
-                        } else {
-                            f64::NAN
-                        }
-                    })
-                    .collect(),
-                None => vec![f64::NAN; params.len()],
-            };
-            robust_cov = covariance;
-            (standard_errors(&free, 2.0 * cost), robust, Some(linear))
-        }
-        _ => (vec![f64::NAN; params.len()], Vec::new(), None),
-    };
-
-    let outcome = FitOutcome {
-        params,
-        std_errors,
+    let mut outcome = FitOutcome {
+        std_errors: vec![f64::NAN; params.len()],
         cost,
         residuals: problem.data_count(),
-        evaluations: evaluations + 1,
+        evaluations: 0,
         converged,
         global: GlobalSearch::None,
-        unseen,
+        unseen: Vec::new(),
         held: Vec::new(),
-        linear,
-        robust_std_errors,
-        robust_covariance: robust_cov,
+        linear: None,
+        robust_std_errors: Vec::new(),
+        robust_covariance: None,
+        params: Vec::new(),
     };
+    if at.is_some() {
+        // A parameter the data cannot see (an accelerometer offset of a
+        // run set without ay) is wherever the swarm left it: report its
+        // off value (the effect off), which fits as well.
+        let off = problem.clamp(off.unwrap_or(start));
+        evaluations += linearised(
+            problem,
+            &mut params,
+            &off,
+            (second, last_jacobian),
+            &mut outcome,
+        );
+    }
+    outcome.params = params;
+    outcome.evaluations = evaluations + 1;
     (outcome, at)
+}
+
+/// The polish of `problem` from `p0` (clamped into the box): its
+/// parameters, data cost, whether it converged, its replays, and its last
+/// Jacobian where it was differenced at the optimum (the linearisation's
+/// own: the same replays, the same numbers).
+fn polished<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p0: &[f64],
+    polish: Polish,
+) -> (Vec<f64>, f64, bool, usize, Option<DMatrix<f64>>) {
+    // A refit starts next to its optimum: a bounded budget (a fold
+    // that needs more is reported as not converged).
+    let iterations = match polish {
+        Polish::LevenbergMarquardt => FIT_ITERATIONS,
+        Polish::Refit => REFIT_ITERATIONS,
+    };
+    // A fit's Jacobian costs a replay of the runs per parameter: an
+    // accepted step updates it (Broyden) where its model still serves,
+    // and the convergence test reads a fresh one. A refit keeps a
+    // fresh one each iteration: its budget is a handful of them.
+    let jacobians = match polish {
+        Polish::LevenbergMarquardt => Jacobians::Secant,
+        Polish::Refit => Jacobians::Every,
+    };
+    let (lm, jacobian) = BoundedLm {
+        iterations,
+        tolerance: FIT_TOLERANCE,
+        jacobians,
+    }
+    .minimize_linearised(problem, p0, &problem.bounds);
+    // The polish accepts only steps that lower the cost (and returns its
+    // start when its cost is not finite): it ends no worse than it began.
+    // The cost reported is the data's: the prior's rows regularise
+    // the fit, they are no misfit of the runs.
+    let data_cost = lm.cost - problem.prior_cost(&lm.params);
+    (lm.params, data_cost, lm.converged, lm.evaluations, jacobian)
+}
+
+/// The linearisation of a polished fit at `params` (its second
+/// derivatives when `second`, its Jacobian the polish's last where it has
+/// one) and what comes of it in `out`: the unseen parameters (set to
+/// their value in `off`), the standard errors (a parameter on a bound
+/// held there), the robust ones and their covariance. Returns the replays
+/// it made.
+fn linearised<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    params: &mut [f64],
+    off: &[f64],
+    (second, last_jacobian): (bool, Option<DMatrix<f64>>),
+    out: &mut FitOutcome,
+) -> usize {
+    let mut evaluations = 0;
+    if last_jacobian.is_none() {
+        evaluations += problem.jacobian_evaluations(params.len());
+    }
+    let linear = linearise_with(problem, params, second, last_jacobian);
+    evaluations += 1;
+    let (unseen, probes) = unseen_at(problem, params, &linear);
+    evaluations += probes;
+    for (i, &u) in unseen.iter().enumerate() {
+        if u {
+            params[i] = off[i];
+        }
+    }
+    let mut free = linear.jacobian.clone();
+    for (i, &b) in problem.bounds.iter().enumerate() {
+        if crate::diagnose::effects::on_bound(params[i], b).is_some() {
+            free.column_mut(i).fill(0.0);
+        }
+    }
+    let covariance = robust_covariance(problem, &linear, &free);
+    out.robust_std_errors = match &covariance {
+        Some(v) => (0..params.len())
+            .map(|i| {
+                if v[(i, i)] >= 0.0 {
+                    v[(i, i)].sqrt()
+                } else {
+                    f64::NAN
+                }
+            })
+            .collect(),
+        None => vec![f64::NAN; params.len()],
+    };
+    out.robust_covariance = covariance;
+    out.std_errors = standard_errors(&free, 2.0 * out.cost);
+    out.unseen = unseen;
+    out.linear = Some(linear);
+    evaluations
 }
 
 /// The step, as a share of a parameter's range, at which a parameter on a
@@ -518,83 +546,4 @@ fn linearise_with<F: Fn(&[f64]) -> Augmented + Sync>(
         jacobian,
         curvature,
     }
-}
-
-/// Step of the second differences, as a share of each parameter's box:
-/// their truncation error is first order in it, and the replays' own
-/// rounding (the load-transfer loop's 1e-9) divided by its square stays
-/// three orders below the curvature of a residual over its box.
-const CURVATURE_STEP: f64 = 1e-3;
-
-/// Second derivatives of the residuals at `p` by forward second
-/// differences, stepping into the box: `(r(p+2h_a) − 2r(p+h_a) + r(p))/h_a²`
-/// and `(r(p+h_a+h_b) − r(p+h_a) − r(p+h_b) + r(p))/(h_a·h_b)`. The replays
-/// are independent: they run in parallel. The columns of a parameter
-/// marked in `skip` (missing: not marked) stay zero, as a pinned one's.
-fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
-    problem: &Problem<F>,
-    p: &[f64],
-    r0: &[f64],
-    skip: &[bool],
-) -> DMatrix<f64> {
-    use rayon::prelude::*;
-    let n = p.len();
-    let h: Vec<f64> = (0..n)
-        .map(|k| {
-            let (lo, hi) = problem.bounds[k];
-            let h = CURVATURE_STEP * (hi - lo);
-            // A parameter pinned (a box of no width) has no curvature:
-            // its columns stay zero below; nor has one skipped.
-            if h == 0.0 || skip.get(k).copied().unwrap_or(false) {
-                return 0.0;
-            }
-            if p[k] + 2.0 * h > hi {
-                -h
-            } else {
-                h
-            }
-        })
-        .collect();
-    let shifted = |moves: &[(usize, f64)]| {
-        let mut q = p.to_vec();
-        for &(k, m) in moves {
-            q[k] += m * h[k];
-        }
-        let mut r = vec![0.0; r0.len()];
-        problem.residuals(&q, &mut r);
-        r
-    };
-    let singles: Vec<(Vec<f64>, Vec<f64>)> = (0..n)
-        .into_par_iter()
-        .map(|k| {
-            if h[k] == 0.0 {
-                (Vec::new(), Vec::new())
-            } else {
-                (shifted(&[(k, 1.0)]), shifted(&[(k, 2.0)]))
-            }
-        })
-        .collect();
-    let pairs: Vec<(usize, usize)> = (0..n).flat_map(|a| (a..n).map(move |b| (a, b))).collect();
-    let columns: Vec<Vec<f64>> = pairs
-        .par_iter()
-        .map(|&(a, b)| {
-            if h[a] == 0.0 || h[b] == 0.0 {
-                vec![0.0; r0.len()]
-            } else if a == b {
-                let (one, two) = &singles[a];
-                let h2 = h[a] * h[a];
-                (0..r0.len())
-                    .map(|i| (two[i] - 2.0 * one[i] + r0[i]) / h2)
-                    .collect()
-            } else {
-                let both = shifted(&[(a, 1.0), (b, 1.0)]);
-                let (ra, rb) = (&singles[a].0, &singles[b].0);
-                let hab = h[a] * h[b];
-                (0..r0.len())
-                    .map(|i| (both[i] - ra[i] - rb[i] + r0[i]) / hab)
-                    .collect()
-            }
-        })
-        .collect();
-    DMatrix::from_fn(r0.len(), pairs.len(), |i, c| columns[c][i])
 }

@@ -31,12 +31,10 @@
 //! reductions in percent. The method is the project's own (see
 //! [`crate::diagnose::pipeline`] for the overview).
 
-use crate::diagnose::effects::{joined, set_of, EffectKind};
+use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
-use crate::diagnose::report::{
-    Confounded, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
-};
+use crate::diagnose::report::{Confounded, Lookalike, Lookalikes, Ranked, Refused, Screened};
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::pairs::{paired, Fallback, Simpler};
 use crate::diagnose::verdict::restricted::{screen_step, Step};
@@ -50,6 +48,9 @@ use crate::diagnose::verdict::score::{Context, Scored, Started};
 use crate::diagnose::verdict::screening::one_screened_row_per_set;
 use crate::diagnose::verdict::twins::simpler_twin;
 use rayon::prelude::*;
+use rows::{one_row_per_set, worse_than_subsets};
+
+mod rows;
 
 /// What the search for a verdict found.
 #[derive(Default)]
@@ -92,7 +93,7 @@ pub(crate) fn search(
     singles: &[Scored],
     (order, all): (&[usize], &[usize]),
     base: &Baseline,
-    (max_effects, screening): (usize, bool),
+    limits: (usize, bool),
 ) -> Search {
     let mut out = Search::default();
     // A single whose axles are no tyre cannot be the verdict, nor start
@@ -100,13 +101,7 @@ pub(crate) fn search(
     // alone on a banked oval is a tyre's once the bank is in), so the
     // greedy additions try every effect (`all`).
     let ranked: Vec<Candidate> = order.iter().map(|&i| base.candidate(&singles[i])).collect();
-    let usable: Vec<usize> = order
-        .iter()
-        .zip(&ranked)
-        .filter(|(_, c)| !c.degenerate)
-        .map(|(&i, _)| i)
-        .collect();
-    let (scales, jn) = (base.scales(), base.jn);
+    let jn = base.jn;
     // The best, or a simpler one that does as well where the best leaves a
     // parameter idle: a steer path whose lag stays off is a steer delay,
     // one with a sensor delay on runs whose every response comes from the
@@ -132,16 +127,60 @@ pub(crate) fn search(
         out.ended = Some(base.refused(best, None, None));
         return out;
     }
+    let usable: Vec<usize> = order
+        .iter()
+        .zip(&ranked)
+        .filter(|(_, c)| !c.degenerate)
+        .map(|(&i, _)| i)
+        .collect();
     out.lookalikes = lookalikes(singles, &usable, first, &r, base);
-    let limits = (max_effects, screening);
-    let (mut current, mut simpler) = greedy(ctx, singles, all, base, limits, best, &mut out);
+    let (current, mut simpler) = greedy(ctx, singles, all, base, limits, best, &mut out);
     simpler.splice(0..0, start_simpler);
-    // The best single can be a look-alike that mimics part of a pair and
-    // leads the greedy search away from it (a fast, lightly damped roll
-    // steering the axles looks like a yaw inertia and aero load together).
-    // While the set found leaves a significant gap, the search starts again
-    // from the look-alikes (at most ALTERNATIVE_STARTS), and a set that
-    // leaves clearly less of the gap replaces it.
+    let mut found = restarted(
+        ctx,
+        (singles, all),
+        base,
+        limits,
+        (current, simpler),
+        &mut out,
+    );
+    if let Some(k) = rules::degenerate_lead(&ranked, picked) {
+        let lead = &singles[order[k]];
+        if let Some(led) = led_by(
+            ctx,
+            (singles, all),
+            base,
+            limits,
+            (lead, &found.0),
+            &mut out,
+        ) {
+            out.start = Some(order[k]);
+            found = led;
+        }
+    }
+    let found = fallen_back(ctx, (singles, all), base, limits, found, &mut out);
+    concluded(ctx, (singles, all), base, found, &mut out);
+    out
+}
+
+/// The greedy searches again from the look-alikes of the best single. The
+/// best single can be a look-alike that mimics part of a pair and leads
+/// the greedy search away from it (a fast, lightly damped roll steering
+/// the axles looks like a yaw inertia and aero load together). While the
+/// set found (`found`, with the simpler sets passed over on its way)
+/// leaves a significant gap, the search starts again from the look-alikes
+/// (at most ALTERNATIVE_STARTS), and a set that leaves clearly less of the
+/// gap replaces it.
+fn restarted(
+    ctx: &Context,
+    (singles, all): (&[Scored], &[usize]),
+    base: &Baseline,
+    limits: (usize, bool),
+    found: (Scored, Vec<Simpler>),
+    out: &mut Search,
+) -> (Scored, Vec<Simpler>) {
+    let (scales, jn) = (base.scales(), base.jn);
+    let (mut current, mut simpler) = found;
     for &i in out
         .lookalikes
         .clone()
@@ -152,7 +191,7 @@ pub(crate) fn search(
         if !rules::significant(jc, jn) {
             break;
         }
-        let (other, other_simpler) = greedy(ctx, singles, all, base, limits, &singles[i], &mut out);
+        let (other, other_simpler) = greedy(ctx, singles, all, base, limits, &singles[i], out);
         let (g, g_other) = (
             gap_above(jc, jn),
             gap_above(other.heldout.combined(&scales), jn),
@@ -161,36 +200,53 @@ pub(crate) fn search(
             (current, simpler) = (other, other_simpler);
         }
     }
-    if let Some(k) = rules::degenerate_lead(&ranked, picked) {
-        let lead = &singles[order[k]];
-        if let Some(found) = led_by(
-            ctx,
-            (singles, all),
-            base,
-            limits,
-            (lead, &current),
-            &mut out,
-        ) {
-            out.start = Some(order[k]);
-            (current, simpler) = found;
-        }
+    (current, simpler)
+}
+
+/// Where the set `found` is no verdict, the greedy search from the best
+/// pair of singles in sample ([`paired`]), which replaces it: the truth
+/// can be a pair without the best single.
+fn fallen_back(
+    ctx: &Context,
+    (singles, all): (&[Scored], &[usize]),
+    base: &Baseline,
+    limits: (usize, bool),
+    found: (Scored, Vec<Simpler>),
+    out: &mut Search,
+) -> (Scored, Vec<Simpler>) {
+    let scales = base.scales();
+    let total = reduction(base.j0, found.0.heldout.combined(&scales), base.jn);
+    if rules::accepted(total, found.0.full.bic(), base.bic0()) {
+        return found;
     }
-    let mut total = reduction(base.j0, current.heldout.combined(&scales), jn);
-    // No verdict: the truth can be a pair without the best single.
-    if !rules::accepted(total, current.full.bic(), base.bic0()) {
-        let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
-        let rows = &mut out.combinations;
-        if let Some((pair, over, from)) = paired(ctx, (singles, all), base, rows, extend) {
-            out.fallback = Some(Fallback {
-                ended: current.clone(),
-                pair: pair.clone(),
-                from,
-            });
-            (current, simpler) = greedy(ctx, singles, all, base, limits, &pair, &mut out);
-            simpler.splice(0..0, over);
-            total = reduction(base.j0, current.heldout.combined(&scales), jn);
-        }
-    }
+    let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
+    let rows = &mut out.combinations;
+    let Some((pair, over, from)) = paired(ctx, (singles, all), base, rows, extend) else {
+        return found;
+    };
+    out.fallback = Some(Fallback {
+        ended: found.0.clone(),
+        pair: pair.clone(),
+        from,
+    });
+    let (current, mut simpler) = greedy(ctx, singles, all, base, limits, &pair, out);
+    simpler.splice(0..0, over);
+    (current, simpler)
+}
+
+/// The end of the search on the set `found` (with the simpler sets passed
+/// over on its way): accepted (or its simpler twin, [`simpler_twin`]), or
+/// refused; then the report rows tidied: one per set, warned where worse
+/// in sample than a subset, ordered by held-out error.
+fn concluded(
+    ctx: &Context,
+    (singles, all): (&[Scored], &[usize]),
+    base: &Baseline,
+    (current, simpler): (Scored, Vec<Simpler>),
+    out: &mut Search,
+) {
+    let scales = base.scales();
+    let total = reduction(base.j0, current.heldout.combined(&scales), base.jn);
     if rules::accepted(total, current.full.bic(), base.bic0()) {
         out.simpler = simpler;
         let rows = &mut out.combinations;
@@ -213,68 +269,6 @@ pub(crate) fn search(
     one_screened_row_per_set(&mut out.screened, &out.combinations);
     out.combinations
         .sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
-    out
-}
-
-/// Relative excess of a set's in-sample error over that of a set it
-/// contains past which it is warned of: above the stopping tolerance of
-/// the fits (their costs agree to about 1e-6), below what a parameter held
-/// at its off value may cost (up to χ²₁ = 3.84 residual variances).
-const WORSE_IN_SAMPLE: f64 = 1e-3;
-
-/// Warns of each set in `combinations` that fits the runs worse in sample
-/// than a set it contains (a single of `singles`, or another of the sets):
-/// it contains that set's optimum with its other effects off, so its fit
-/// stopped short of it, or held a parameter the smaller set fits, and its
-/// scores understate the set.
-fn worse_than_subsets(singles: &[&Scored], scales: &[f64; 3], combinations: &mut [Ranked]) {
-    let subsets: Vec<(Vec<EffectKind>, f64)> = singles
-        .iter()
-        .map(|s| (s.kinds.clone(), s.insample.combined(scales)))
-        .chain(
-            combinations
-                .iter()
-                .map(|c| (c.effects.clone(), c.insample_error_after)),
-        )
-        .collect();
-    for c in combinations.iter_mut() {
-        if let Some((k, e)) = better_subset(&c.effects, c.insample_error_after, &subsets) {
-            c.warnings.push(RankWarning::WorseThanSubset {
-                subset: joined(k, "+"),
-                subset_error: e,
-                error: c.insample_error_after,
-            });
-        }
-    }
-}
-
-/// Of `subsets` (sets and their in-sample errors), the one with the least
-/// error among those `set` strictly contains, where `set`'s own `error`
-/// exceeds it by more than [`WORSE_IN_SAMPLE`].
-fn better_subset<'a>(
-    set: &[EffectKind],
-    error: f64,
-    subsets: &'a [(Vec<EffectKind>, f64)],
-) -> Option<(&'a [EffectKind], f64)> {
-    subsets
-        .iter()
-        .filter(|(k, _)| k.len() < set.len() && k.iter().all(|e| set.contains(e)))
-        .min_by(|a, b| a.1.total_cmp(&b.1))
-        .filter(|(_, e)| error > e * (1.0 + WORSE_IN_SAMPLE))
-        .map(|(k, e)| (k.as_slice(), *e))
-}
-
-/// Keeps one row per set of effects: the greedy searches from the best
-/// single and from its look-alikes try a pair in both orders
-/// (`steer_path+sensor_delay`, `sensor_delay+steer_path`), and a set is one
-/// candidate whatever the order it was built in. The row kept is the
-/// chosen set's own (its order, the numbers the verdict states) where it
-/// is one of them, else the first tried.
-fn one_row_per_set(rows: &mut Vec<Ranked>, chosen: Option<&[EffectKind]>) {
-    // Stable: the chosen set's row moves ahead of its other orders only.
-    rows.sort_by_key(|r| Some(r.effects.as_slice()) != chosen);
-    let mut seen = std::collections::HashSet::new();
-    rows.retain(|r| seen.insert(set_of(&r.effects)));
 }
 
 /// Look-alikes of the first single (`first`, ranked as `r`): the other
@@ -498,7 +492,7 @@ pub(crate) fn lookalikes_alone(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use EffectKind::{RelaxationLength as R, SensorDelay as D, SteerPath as S};
+    use EffectKind::{SensorDelay as D, SteerPath as S};
 
     #[test]
     fn a_set_starts_too_from_the_added_effect_alone_the_current_set_off() {
@@ -543,25 +537,5 @@ mod tests {
         assert_eq!(start[set.roll()], single[camber.roll()]);
         assert_eq!(start[set.effect(1)], single[camber.effect(0)]);
         assert_eq!(start[set.effect(0)], off[current.effect(0)]);
-    }
-
-    #[test]
-    fn a_set_worse_in_sample_than_one_it_contains_is_found_with_the_best_such() {
-        let subsets = vec![
-            (vec![D], 2.0),
-            (vec![R], 1.5),
-            (vec![S], 0.5),
-            (vec![D, R], 1.2),
-        ];
-        // D+R+S contains S (0.5), the best of its subsets.
-        let found = better_subset(&[D, R, S], 0.9, &subsets).unwrap();
-        assert_eq!(found, (&[S][..], 0.5));
-        // D+R contains D and R, not itself nor S: 1.2 is better than both.
-        assert_eq!(better_subset(&[D, R], 1.2, &subsets), None);
-        assert_eq!(better_subset(&[R, D], 1.6, &subsets), Some((&[R][..], 1.5)));
-        // Within the fits' tolerance it is no worse.
-        assert_eq!(better_subset(&[D, R], 1.5 * (1.0 + 1e-4), &subsets), None);
-        // A single contains no smaller set.
-        assert_eq!(better_subset(&[S], 9.0, &subsets), None);
     }
 }

@@ -442,6 +442,7 @@ mod trips_s101_fix31b;
 mod trips_s101_fix31c;
 mod trips_s101_fix41f;
 mod trips_s101_reps40;
+mod trips_s102_fix32c;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

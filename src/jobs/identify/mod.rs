@@ -47,6 +47,7 @@ pub use two_stage::{TwoStageReport, Written};
 pub use unused_columns::Measured;
 mod staged_figure;
 mod staged_run;
+mod template_version;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
 use crate::identify::{start_tyre_of, Fit};

@@ -158,7 +158,7 @@ fn an_oversteering_cars_empty_box_is_explained_by_its_critical_speed() {
     // r = u·δ/(l + K u²).
     let r = 32.0 * 0.5_f64.to_radians() / (l + k * 32.0 * 32.0);
     let why = format!(
-        "the 3 conditions with no equilibrium in the box (speed 32 m/s, within {:.1} % of it)",
+        "the 3 conditions with no equilibrium in the box (speed 32 m/s, within {:.1} % of the critical speed {u_crit:.4} m/s)",
         100.0 * (32.0 - u_crit).abs() / u_crit
     );
     assert!(said.contains(&why), "no «{why}» in\n{said}");

@@ -24,24 +24,26 @@ fn linear_trim(model: &VehicleModel, c: &Condition) -> [f64; 2] {
 }
 
 /// The lines under the counts of equilibria in the box: the critical
-/// speed `critical` (m/s, None: no line), and why the conditions with no
-/// equilibrium in the box have none where every one's linear trim lies
-/// beyond it.
+/// speed `critical` (m/s, None: no line) unless a bifurcation along speed
+/// `located` it (its own line then says it, against the same closed form),
+/// and why the conditions with no equilibrium in the box have none where
+/// every one's linear trim lies beyond it.
 pub(super) fn lines(
     model: &VehicleModel,
-    critical: Option<f64>,
+    (critical, located): (Option<f64>, bool),
     res: &SweepResult,
     bx: &SearchBox,
 ) -> Vec<String> {
     let Some(c) = critical else {
         return Vec::new();
     };
-    let mut out = vec![format!(
+    let mut out = Vec::new();
+    out.extend((!located).then(|| format!(
         "  critical speed {c:.4} m/s ({:.2} km/h), closed form sqrt(-l/K) (K = {:.4e} rad per m/s², oversteer): \
          the linearised car runs straight stably below it, unstably above it",
         3.6 * c,
         model.understeer_gradient()
-    )];
+    )));
     let empty: Vec<&Condition> = res
         .points
         .iter()
@@ -64,7 +66,7 @@ pub(super) fn lines(
         .min_by(|a, b| outside(a.1, bx).total_cmp(&outside(b.1, bx)))
         .expect("conditions with none in the box");
     out.push(format!(
-        "    the {} with no equilibrium in the box (speed {} m/s, within {:.1} % of it): near the critical speed \
+        "    the {} with no equilibrium in the box (speed {} m/s, within {:.1} % of the critical speed {c:.4} m/s): near it \
          the steady yaw-rate gain u/(l + K u²) grows without bound and the trim leaves the box \
          (linear bicycle, nearest the box: steer {:.4} rad at {} m/s, β {:.3} rad, r {:.3} rad/s)",
         plural(empty.len(), "condition", "conditions"),

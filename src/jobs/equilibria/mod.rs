@@ -275,8 +275,14 @@ impl EquilibriaReport {
             ));
         }
         let critical = s.critical_speed_closed_form;
+        let located = (s.bifurcations.iter()).any(|b| critical_speed_line(&sw.model, b).is_some());
         let bx = &sw.search_box;
-        out.extend(critical::lines(&sw.model, critical, &self.result, bx));
+        out.extend(critical::lines(
+            &sw.model,
+            (critical, located),
+            &self.result,
+            bx,
+        ));
         for b in &s.bifurcations {
             out.push(bifurcation_line(b));
             out.extend(critical_speed_line(&self.sweep.model, b));

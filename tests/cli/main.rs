@@ -446,6 +446,7 @@ mod trips_s101_reps40;
 mod trips_s102_beta39b;
 mod trips_s102_fix32a;
 mod trips_s102_fix32b;
+mod trips_s102_fix32c;
 mod trips_s102_fix41g;
 mod trips_s62;
 mod trips_s62b;

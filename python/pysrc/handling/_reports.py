@@ -282,6 +282,14 @@ class EquilibriaSummary(_Report):
     """Conditions with a continuum of equilibria."""
     bifurcations: List[Dict[str, Any]]
     """The bifurcations found along the sweep."""
+    critical_speed_closed_form: Optional[float]
+    """The closed-form critical speed sqrt(-l/K) of the linear bicycle
+    model, m/s, where neither axle's tyre has a friction limit and the car
+    oversteers (K < 0); None otherwise."""
+    box: Dict[str, float]
+    """The search box: ``beta_max`` (rad) and ``yaw_rate_max`` (rad/s)."""
+    pso: Dict[str, Any]
+    """The swarm search's settings (seed, particles, iterations, fitness, …)."""
     _raw: Dict[str, Any] = _json_field()
 
     @classmethod

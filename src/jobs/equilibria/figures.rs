@@ -154,11 +154,13 @@ pub(super) fn branch_rows(res: &SweepResult, dg: &Diagram, bx: &SearchBox) -> Ve
 /// of diagram `dg` (`k` of `lines` along its axis): equilibria of one branch joined (nearest neighbours in
 /// the box-scaled plane, [`branches::link`]), each segment and point in the
 /// style of its stability ([`Class`]), folds joined to the branch ends that
-/// meet there.
+/// meet there; along speed, the closed-form `critical` speed (m/s) where
+/// it falls on the line ([`mark_critical_speed`]).
 pub(super) fn branch_diagram(
     res: &SweepResult,
     (dg, k, lines): (&Diagram, usize, usize),
     bx: &SearchBox,
+    critical: Option<f64>,
     path: &Path,
 ) -> Result<(), Error> {
     let (axis, line) = (dg.axis, &dg.line);
@@ -206,6 +208,9 @@ pub(super) fn branch_diagram(
         yaw.series.push(stability::equilibria(cl, &x, &r, 4));
     }
     mark_folds(&mut beta, &mut yaw, &folds, axis);
+    if axis == Axis::Speed {
+        mark_critical_speed([&mut beta, &mut yaw], critical, &params);
+    }
     for cl in Class::ALL.into_iter().filter(|c| present.contains(c)) {
         beta.series.push(stability::key(cl));
         yaw.series.push(stability::key(cl));
@@ -250,6 +255,45 @@ fn mark_folds(beta: &mut Panel, yaw: &mut Panel, folds: &[&Bifurcation], axis: A
             .push(Series::line(l, &fx, &deg(|b| b.beta), FOLD).styled(Style::Points(7)));
         yaw.series
             .push(Series::line(l, &fx, &deg(|b| b.yaw_rate), FOLD).styled(Style::Points(7)));
+    }
+}
+
+/// Palette index of the critical speed's line (purple, apart from the
+/// stability colours and the folds' grey).
+const CRITICAL: usize = 4;
+
+/// The closed-form critical speed `critical` (m/s) of an oversteering car
+/// as a dotted vertical line over the equilibria of both panels of a
+/// branch diagram along speed (`speeds` in km/h), where it falls among
+/// them: below it the linear car's trims are stable, above it saddles, and
+/// near it their β and r grow without bound (the yaw-rate gain
+/// u/(l + K·u²)), so that the branches leave the box there without a
+/// bifurcation located in it.
+fn mark_critical_speed(panels: [&mut Panel; 2], critical: Option<f64>, speeds: &[f64]) {
+    let Some(c) = critical.map(|c| display(Axis::Speed, c)) else {
+        return;
+    };
+    let (lo, hi) = speeds
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    if !(lo..=hi).contains(&c) {
+        return;
+    }
+    for panel in panels {
+        let ys = panel.series.iter().flat_map(|s| s.y.iter().copied());
+        let (y0, y1) = ys
+            .filter(|y| y.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        if y0 <= y1 {
+            let label = format!("critical speed {c:.1} km/h (closed form)");
+            panel
+                .series
+                .push(Series::line(&label, &[c, c], &[y0, y1], CRITICAL).styled(Style::Dotted));
+        }
     }
 }
 

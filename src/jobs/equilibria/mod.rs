@@ -4,6 +4,7 @@
 //! `equilibria.csv`, `bifurcations.csv`, `continua.csv`, `summary.json` and
 //! the figures (`figures.rs`).
 
+mod critical;
 mod figures;
 mod outputs;
 mod slices;
@@ -273,6 +274,15 @@ impl EquilibriaReport {
                 plural(*k, "equilibrium", "equilibria")
             ));
         }
+        let critical = s.critical_speed_closed_form;
+        let located = (s.bifurcations.iter()).any(|b| critical_speed_line(&sw.model, b).is_some());
+        let bx = &sw.search_box;
+        out.extend(critical::lines(
+            &sw.model,
+            (critical, located),
+            &self.result,
+            bx,
+        ));
         for b in &s.bifurcations {
             out.push(bifurcation_line(b));
             out.extend(critical_speed_line(&self.sweep.model, b));
@@ -339,7 +349,8 @@ impl EquilibriaReport {
                 let (diagrams, lines) = slices::diagrams(&sw.grid, axis);
                 for (k, d) in diagrams.iter().enumerate() {
                     let png = dir.join(format!("{}.png", d.stem));
-                    figures::branch_diagram(r, (d, k, lines), &sw.search_box, &png)?;
+                    let critical = self.summary.critical_speed_closed_form;
+                    figures::branch_diagram(r, (d, k, lines), &sw.search_box, critical, &png)?;
                     let rows = figures::branch_rows(r, d, &sw.search_box);
                     let header = branch_header(axis);
                     let header: Vec<&str> = header.iter().map(String::as_str).collect();

@@ -133,6 +133,13 @@ impl LinearWindow {
                 crate::format::plural(judged, "condition", "conditions"),
                 crate::format::readable(departure_percent, 2)
             ),
+            // Nothing left out: the window is not needed, said as where the
+            // points beyond it follow the line (one file said "fitted to
+            // |alpha| <= 2 deg only" binned and "not needed" unbinned).
+            Beyond::NoPointPast if self.points_left_out == 0 && self.loads_left_out.is_empty() => format!(
+                "{mark} linear window: not needed: no point lies beyond |alpha| = {WINDOW_DEG} deg, so all {} points are fitted",
+                self.points_fitted
+            ),
             Beyond::NotJudged | Beyond::NoPointPast => format!(
                 "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out{}{conditions})",
                 self.max_abs_alpha_deg,

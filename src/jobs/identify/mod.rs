@@ -49,6 +49,7 @@ pub use unused_columns::Measured;
 mod fit_key;
 mod staged_figure;
 mod staged_run;
+mod template_version;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
 use crate::identify::{start_tyre_of, Fit};

@@ -222,6 +222,10 @@ fn not_fitted(
         .and_then(super::written_checks::stiffness_branch_note)
         .into_iter()
         .collect();
+    // The version written, if not the template's, said first.
+    let version = settings.template.as_ref();
+    let version = version.and_then(|t| super::template_version::change_line(t, settings.version));
+    out.splice(0..0, version);
     let template = settings.template.is_some();
     out.extend(unfitted_blocks(report, template, written, combined));
     out

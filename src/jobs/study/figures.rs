@@ -1,29 +1,47 @@
-//! The study's figures: heat maps of six metrics over the (k1, k2) map, each
-//! with its colour bar, with the Er curves on the Er map (`maps.png`), and
-//! what Wang & Liang's RBF network learnt from their pairs (`rbf.png`).
-//! Stiffness in the file's unit.
+//! The study's figures: heat maps of every metric of `study.csv` over the
+//! (k1, k2) map, each with its colour bar, with each inverse target's curve
+//! on the map of its metric (`maps.png`), and what Wang & Liang's RBF
+//! network learnt from their pairs (`rbf.png`). Stiffness in the file's
+//! unit; each metric in its `study.csv` unit (SI: s, %, 1/s, rad, s·deg).
 
 use super::RbfReport;
 use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};
 use crate::study::inverse::Map;
 use crate::study::{Metric, Sample, StiffnessUnit};
 
-/// The metrics mapped, with their axis labels.
-const MAPPED: [(Metric, &str); 6] = [
-    (Metric::Er, "Er [s]"),
-    (Metric::YawRateTotalVariance, "E_r [s]"),
-    (Metric::AyTotalVariance, "E_ay [s]"),
-    (Metric::YawRateResponseTime, "yaw-rate response time [s]"),
-    (
-        Metric::YawRateOvershoot,
-        "yaw-rate overshoot [%] (grey: below the peak threshold)",
-    ),
-    (Metric::Tb, "TB [s·deg]"),
-];
+/// The title and the unit of a metric's map (every metric of `study.csv`
+/// has one, in its columns' order: a target's curve is drawn on the map of
+/// its metric, whichever it is).
+fn mapped(metric: Metric) -> (&'static str, &'static str, &'static str) {
+    match metric {
+        Metric::Er => ("Er", "s", ""),
+        Metric::YawRateTotalVariance => ("E_r", "s", ""),
+        Metric::AyTotalVariance => ("E_ay", "s", ""),
+        Metric::YawRateResponseTime => ("yaw-rate response time", "s", ""),
+        Metric::YawRatePeakTime => ("yaw-rate peak time", "s", " (grey: no peak)"),
+        Metric::YawRateOvershoot => (
+            "yaw-rate overshoot",
+            "%",
+            " (grey: below the peak threshold)",
+        ),
+        Metric::AyResponseTime => ("ay response time", "s", ""),
+        Metric::YawRateGain => ("yaw-rate gain", "1/s", ""),
+        Metric::BetaSteady => ("steady sideslip beta", "rad", ""),
+        Metric::Tb => ("TB", "s·deg", ""),
+    }
+}
 
-/// Heat maps of the mapped metrics; `curves` (target Er, points in the
-/// stiffness unit) are drawn on the Er map.
-pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 2]])]) -> Figure {
+/// A target's curve through the map: its metric, its value and its points
+/// (k1, k2) in the stiffness unit.
+pub(super) struct Curve<'a> {
+    pub metric: Metric,
+    pub target: f64,
+    pub points: &'a [[f64; 2]],
+}
+
+/// Heat maps of every metric of `study.csv`; each of `curves` is drawn on
+/// the map of its metric.
+pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[Curve]) -> Figure {
     let k = unit.to_si();
     let step = |v: &[f64]| {
         v.windows(2)
@@ -32,7 +50,9 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
     };
     let (dx, dy) = (step(&map.front), step(&map.rear));
     let mut panels = Vec::new();
-    for (metric, label) in MAPPED {
+    for metric in Metric::ALL {
+        let (name, metric_unit, note) = mapped(metric);
+        let label = format!("{name} [{metric_unit}]{note}");
         let (mut x, mut y, mut v) = (Vec::new(), Vec::new(), Vec::new());
         for (i, kf) in map.front.iter().enumerate() {
             for (j, kr) in map.rear.iter().enumerate() {
@@ -44,26 +64,33 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
             }
         }
         // The scale follows the values (log over decades, quantile where a
-        // few cells are extreme); cells without a value (TB's and the overshoot's
-        // without a peak) stay grey.
-        let mut series = vec![Series::heat(&x, &y, v, (dx, dy), label)];
-        if metric == Metric::Er {
-            for (n, (target, c)) in curves.iter().enumerate() {
-                let (cx, cy): (Vec<f64>, Vec<f64>) = c.iter().map(|p| (p[0], p[1])).unzip();
-                // One colour per target, none of them the map's.
-                // Rings, white inside, read on dark and light cells alike.
-                series.push(
-                    Series::line(&format!("Er = {target} s"), &cx, &cy, [1, 3, 6, 5][n % 4])
-                        .styled(Style::Points(4))
-                        .marked(Marker {
-                            shape: Shape::Ring,
-                            size: 4,
-                        }),
-                );
-            }
+        // few cells are extreme); cells without a value (TB's, the peak
+        // time's and the overshoot's without a peak) stay grey.
+        let mut series = vec![Series::heat(&x, &y, v, (dx, dy), &label)];
+        for (n, c) in curves
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c.metric == metric)
+        {
+            let (cx, cy): (Vec<f64>, Vec<f64>) = c.points.iter().map(|p| (p[0], p[1])).unzip();
+            // One colour per target, none of them the map's.
+            // Rings, white inside, read on dark and light cells alike.
+            series.push(
+                Series::line(
+                    &format!("{name} = {} {metric_unit}", c.target),
+                    &cx,
+                    &cy,
+                    [1, 3, 6, 5][n % 4],
+                )
+                .styled(Style::Points(4))
+                .marked(Marker {
+                    shape: Shape::Ring,
+                    size: 4,
+                }),
+            );
         }
         panels.push(Panel {
-            title: label.to_string(),
+            title: label,
             x_label: format!("front k1 [{unit}]"),
             y_label: format!("rear k2 [{unit}]"),
             series,

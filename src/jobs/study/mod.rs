@@ -485,11 +485,11 @@ impl StudyReport {
         let mut curves = Vec::new();
         if let Some(inv) = &self.inverse {
             write_json_sorted(&files[4], inv)?;
-            for t in &inv.targets {
-                if t.metric == Metric::Er {
-                    curves.push((t.target, &t.curve.curve[..]));
-                }
-            }
+            curves.extend(inv.targets.iter().map(|t| figures::Curve {
+                metric: t.metric,
+                target: t.target,
+                points: &t.curve.curve[..],
+            }));
         }
         if self.map.front.len() >= 2 && self.map.rear.len() >= 2 {
             figures::heat_maps(&self.map, u, &curves).save(&files[1])?;

@@ -5,7 +5,7 @@
 //! sideslip and the quasi-static extra states, every derivative vanishes
 //! and the run holds its initial state until the step (round 31: the roll
 //! was taken from u·r alone, so a banked trim rolled and yawed before it;
-//! round 41: a compliant front's lag state started at the kinematic slip,
+//! and after it: a compliant front's lag state started at the kinematic slip,
 //! not the kinematic slip less the compliance's share, and drifted).
 
 use super::{Integrator, Method};

@@ -47,7 +47,8 @@ fn seen(p: &ParameterReport) -> bool {
 /// Refuses `fit` (to `conditions`) where the data see none of its
 /// parameters and it explains none of them ([`FitError::NotSeen`]).
 pub(super) fn refuse_unseen(fit: &Fit, conditions: &[Condition]) -> Result<(), Error> {
-    let explains_nothing = !(fit.sigma_percent < NOTHING_EXPLAINED_PERCENT);
+    let explains_nothing =
+        fit.sigma_percent.is_nan() || fit.sigma_percent >= NOTHING_EXPLAINED_PERCENT;
     if !explains_nothing || fit.parameters.iter().any(seen) {
         return Ok(());
     }

@@ -5,12 +5,10 @@
 use crate::errors::py_err;
 use crate::tyre::PyTyre;
 use crate::{detached, json};
-use handling::error::Error;
 use handling::io::tir::read_tir_text;
 use handling::jobs;
 use handling::jobs::identify::{IdentifyModel, IdentifyReport, Options, Polish, StartArg};
 use handling::tyre::Tyre;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
@@ -37,9 +35,7 @@ pub(crate) fn identify(
 ) -> PyResult<(String, PyTyre)> {
     let model: IdentifyModel = model.parse().map_err(py_err)?;
     let local: Polish = local.parse().map_err(py_err)?;
-    let start: StartArg = start
-        .parse()
-        .map_err(|e: Error| PyValueError::new_err(e.to_string()))?;
+    let start: StartArg = start.parse().map_err(py_err)?;
     let write = out.is_some();
     let o = Options {
         data,

@@ -76,6 +76,12 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MetricsError", py.get_type::<MetricsError>())?;
     m.add("DiagnosisError", py.get_type::<DiagnosisError>())?;
     m.add("OutputError", py.get_type::<OutputError>())?;
+    // The angle columns `metrics` reads in degrees: the library's list, so
+    // the package checks `degrees=` against the same set as the CLI.
+    m.add(
+        "METRICS_ANGLES",
+        handling::io::AngleColumn::read_by_metrics_names().to_vec(),
+    )?;
     m.add_class::<tyre::PyTyre>()?;
     m.add_class::<sweeps::PyStudy>()?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;

@@ -9,10 +9,6 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
-/// The angle columns `metrics` reads in degrees (its CLI's `--degrees`
-/// takes these alone).
-pub(crate) const METRICS_ANGLES: [&str; 3] = ["steer", "yaw_rate", "beta"];
-
 /// `degrees`' names as the run's angle columns (the package refuses any
 /// other name first, as an `OptionsError` with `name` and `known`).
 pub(crate) fn angle_columns(degrees: &[String]) -> PyResult<Vec<handling::io::AngleColumn>> {
@@ -20,11 +16,11 @@ pub(crate) fn angle_columns(degrees: &[String]) -> PyResult<Vec<handling::io::An
         .iter()
         .map(|d| {
             handling::io::AngleColumn::from_name(d.trim())
-                .filter(|c| METRICS_ANGLES.contains(&c.name()))
+                .filter(|c| handling::io::AngleColumn::READ_BY_METRICS.contains(c))
                 .ok_or_else(|| {
                     PyValueError::new_err(format!(
                         "metrics: `{d}` is not an angle column metrics reads: one of {}",
-                        METRICS_ANGLES.join(", ")
+                        handling::io::AngleColumn::read_by_metrics_names().join(", ")
                     ))
                 })
         })

@@ -158,7 +158,7 @@ pub(crate) fn merge(
 ) -> PyResult<String> {
     let first = shards
         .first()
-        .ok_or_else(|| PyValueError::new_err("merge: no shard files"))?
+        .ok_or_else(|| py_err(Error::from(handling::error::OptionsError::NoShards)))?
         .clone();
     detached(py, || match shard_job(&first)? {
         ShardJob::Equilibria => {

@@ -61,20 +61,18 @@ pub struct MetricsArgs {
     degrees: Vec<handling::io::AngleColumn>,
 }
 
-/// The angle columns `metrics` reads (its `--degrees` takes no other).
-const METRICS_ANGLES: [&str; 3] = ["steer", "yaw_rate", "beta"];
-
 /// An angle column `metrics` reads: refused at its option, with those it
 /// reads (a run's other angle columns, `roll` and `bank`, it does not).
 fn angle_column(text: &str) -> Result<handling::io::AngleColumn, String> {
     use handling::io::AngleColumn;
+    let known = AngleColumn::read_by_metrics_names();
     AngleColumn::from_name(text.trim())
-        .filter(|c| METRICS_ANGLES.contains(&c.name()))
+        .filter(|c| AngleColumn::READ_BY_METRICS.contains(c))
         .ok_or_else(|| {
             format!(
                 "not an angle column `metrics` reads{}: one of {}",
-                handling::format::did_you_mean(text, &METRICS_ANGLES),
-                METRICS_ANGLES.join(", ")
+                handling::format::did_you_mean(text, &known),
+                known.join(", ")
             )
         })
 }

@@ -44,6 +44,17 @@ impl AngleColumn {
         AngleColumn::Bank,
     ];
 
+    /// The angle columns `metrics` reads in degrees when asked (a run's
+    /// `roll` and `bank` it does not read): one list for the command line
+    /// and the Python package alike.
+    pub const READ_BY_METRICS: [AngleColumn; 3] =
+        [AngleColumn::Steer, AngleColumn::YawRate, AngleColumn::Beta];
+
+    /// The names of [`AngleColumn::READ_BY_METRICS`].
+    pub fn read_by_metrics_names() -> [&'static str; 3] {
+        Self::READ_BY_METRICS.map(AngleColumn::name)
+    }
+
     /// The column named `name`, if it is an angle column.
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|c| c.name() == name)

@@ -759,7 +759,19 @@ class Study:
                 "Study.evaluate: give front_n_per_deg and rear_n_per_deg, "
                 "or front_n_per_rad and rear_n_per_rad"
             )
-        f, r = np.broadcast_arrays(f, r)
+        try:
+            f, r = np.broadcast_arrays(f, r)
+        except ValueError:
+            # Two keywords that contradict each other: an OptionsError, as
+            # the package's other contradicting options.
+            names = ("front_n_per_deg", "rear_n_per_deg") if unit == "N/deg" else ("front_n_per_rad", "rear_n_per_rad")
+            err = OptionsError(
+                f"Study.evaluate: `{names[0]}` has shape {f.shape} and `{names[1]}` {r.shape}: "
+                "give as many of each, or one value for either"
+            )
+            err.kind = "options"
+            err.name = names[1]
+            raise err from None
         text = self._s.evaluate_json(
             np.ascontiguousarray(f.ravel()), np.ascontiguousarray(r.ravel()), unit
         )
@@ -925,7 +937,7 @@ def metrics(
         raise TypeError("metrics: give a measured run (CSV), a Scenario or the scenario keywords")
     if isinstance(degrees, str):
         degrees = [degrees]
-    known = ["steer", "yaw_rate", "beta"]
+    known = list(_handling.METRICS_ANGLES)
     for d in degrees:
         if d not in known:
             err = OptionsError(
@@ -980,7 +992,9 @@ def run_shard(
 
 def merge(shards: Iterable[PathLike], out: Optional[PathLike] = None) -> Dict[str, Any]:
     """Merges every shard file of one run, as ``handling merge``: writes
-    the unsharded run's outputs (byte for byte) and returns its report."""
+    the unsharded run's outputs (byte for byte) and returns its report.
+    No shard file at all raises :class:`OptionsError`, as the CLI refuses
+    ``handling merge`` without one."""
     return json.loads(_handling.merge([_path(s) for s in shards], _opt_path(out)))
 
 

@@ -56,10 +56,11 @@ pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 /// degrees), wheel slip in a wheel-speed signal.
 pub const PLAUSIBLE_GRADE: f64 = 0.09967;
 
-/// Steepest bank an estimate is read as a road's, rad (35°; Talladega's
-/// 33° is the steepest racing bank): beyond it, a unit slip or a wrong
-/// sign in `a_y`, `u` or `r`; warned of, not used.
-pub const PLAUSIBLE_BANK: f64 = 0.6109;
+/// Steepest bank an estimate is read as a road's, rad: the one limit of
+/// every bank ([`crate::constants::STEEPEST_BANK`], 35°; Talladega's 33°
+/// is the steepest racing bank). Beyond it, a unit slip or a wrong sign in
+/// `a_y`, `u` or `r`; warned of, not used.
+pub const PLAUSIBLE_BANK: f64 = crate::constants::STEEPEST_BANK;
 
 /// Where a road angle comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

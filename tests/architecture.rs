@@ -557,22 +557,11 @@ fn python_extension_functions_stay_readable() {
     );
 }
 
-/// Long functions of `src/` not yet split, each named here so that no new
-/// one slips in: the fold refits' descent is being rewritten with a cheaper
-/// first pass, and is split with it.
-const SPLIT_ON_OTHER_BRANCHES: &[&str] = &["diagnose/fit/refit.rs::descend"];
-
 /// The library's and the binary's functions (tests included) stay under
 /// the guide's 80 lines: a reader holds one on a screen.
 #[test]
 fn source_functions_stay_readable() {
-    let long: Vec<String> = long_functions_under(&src(), 80)
-        .into_iter()
-        .filter(|f| {
-            let key = f.split(" (").next().unwrap();
-            !SPLIT_ON_OTHER_BRANCHES.contains(&key)
-        })
-        .collect();
+    let long = long_functions_under(&src(), 80);
     assert!(
         long.is_empty(),
         "functions over 80 lines (split them into named steps):\n{}",

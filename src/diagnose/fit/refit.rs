@@ -154,15 +154,41 @@ pub fn refit_checked<F: Fn(&[f64]) -> Augmented + Sync>(
     against_start(problem, full, start, descend(problem, full, rows))
 }
 
-/// [`refit`]'s descent, unchecked.
+/// [`refit`]'s descent, unchecked: on the fold's model ([`fold_model`],
+/// [`on_model`]), then Levenberg–Marquardt from where that got where it
+/// did not converge (its replays counted with the model's).
 pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     full: &FitOutcome,
     rows: &[std::ops::Range<usize>],
 ) -> FitOutcome {
-    let Some(linear) = full.linear.as_ref().filter(|_| !full.params.is_empty()) else {
+    let Some((mut model, mut at)) = fold_model(full, rows) else {
         return fit(problem, &full.params, None, Polish::Refit);
     };
+    if on_model(problem, &mut model, &mut at) {
+        return converged(problem, full, at);
+    }
+    let mut f = fit(problem, &at.p, None, Polish::Refit);
+    f.evaluations += at.evaluations;
+    f
+}
+
+/// Where a fold refit's descent on its model stands: the parameters, the
+/// training residuals there (replayed, or the linearisation's at the
+/// start), their cost, and the replays made so far.
+struct Descent {
+    p: Vec<f64>,
+    r: Vec<f64>,
+    cost: f64,
+    evaluations: usize,
+}
+
+/// The quadratic model of a fold built from the all-run fit `full` (None
+/// where `full` was not linearised, or has no parameters) on its rows
+/// `rows` of the Jacobian and second derivatives, the parameters it held
+/// kept out; and the descent's start there.
+fn fold_model(full: &FitOutcome, rows: &[std::ops::Range<usize>]) -> Option<(FoldModel, Descent)> {
+    let linear = full.linear.as_ref().filter(|_| !full.params.is_empty())?;
     let n = full.params.len();
     let picked: Vec<usize> = rows.iter().flat_map(|r| r.clone()).collect();
     let mut model = FoldModel {
@@ -174,14 +200,27 @@ pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
             .collect(),
     };
     model.hold();
-    let mut relinearised = 0;
-    let bounds = &problem.bounds;
-    let mut p = full.params.clone();
-    let mut r: Vec<f64> = picked.iter().map(|&i| linear.residuals[i]).collect();
-    let mut cost = 0.5 * r.iter().map(|e| e * e).sum::<f64>();
-    let mut trial = vec![0.0; r.len()];
-    let mut lambda = 0.0;
-    let mut evaluations = 0;
+    let r: Vec<f64> = picked.iter().map(|&i| linear.residuals[i]).collect();
+    let start = Descent {
+        p: full.params.clone(),
+        cost: 0.5 * r.iter().map(|e| e * e).sum::<f64>(),
+        r,
+        evaluations: 0,
+    };
+    Some((model, start))
+}
+
+/// Damped model steps of `problem` from `at` (see [`refit`]); true where
+/// the model converged there, false where it stopped (`at` is then the
+/// last accepted point, its replays kept).
+fn on_model<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    model: &mut FoldModel,
+    at: &mut Descent,
+) -> bool {
+    let n = at.p.len();
+    let mut trial = vec![0.0; at.r.len()];
+    let (mut lambda, mut relinearised) = (0.0, 0);
     // Damping raised without a replay when the model is not positive
     // definite: a bounded number of tries in all.
     let mut rejected = 0;
@@ -194,401 +233,95 @@ pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut doubted = false;
     for _ in 0..4 * REFIT_MODEL_STEPS {
         let can_relinearise = relinearised < REFIT_RELINEARISATIONS
-            && p != model.p0
-            && evaluations + n < REFIT_MODEL_STEPS;
+            && at.p != model.p0
+            && at.evaluations + n < REFIT_MODEL_STEPS;
         // Stalled or doubted after moving: the Jacobian no longer holds here.
         if (rejected == REFIT_MODEL_REJECTIONS || doubted) && can_relinearise {
-            model.relinearise(problem, &p, &r);
-            evaluations += problem.jacobian_evaluations(n);
+            model.relinearise(problem, &at.p, &at.r);
+            at.evaluations += problem.jacobian_evaluations(n);
             relinearised += 1;
             (rejected, lambda, trusted, doubted) = (0, 0.0, true, false);
         }
-        if doubted || evaluations >= REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
-            break;
+        if doubted || at.evaluations >= REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
+            return false;
         }
-        let Some((d, predicted)) = model.at(&p, &r, bounds).step(lambda) else {
+        let Some((d, predicted)) = model.at(&at.p, &at.r, &problem.bounds).step(lambda) else {
             lambda = (lambda * 10.0).max(1e-3);
             continue;
         };
-        if predicted <= REFIT_DECREASE * cost {
+        if predicted <= REFIT_DECREASE * at.cost {
             if trusted {
-                return FitOutcome {
-                    std_errors: vec![f64::NAN; n],
-                    cost: cost - problem.prior_cost(&p),
-                    params: p,
-                    residuals: problem.data_count(),
-                    evaluations,
-                    converged: true,
-                    global: GlobalSearch::None,
-                    unseen: Vec::new(),
-                    held: full.held.clone(),
-                    linear: None,
-                    robust_std_errors: Vec::new(),
-                    robust_covariance: None,
-                };
+                return true;
             }
             doubted = true;
             continue;
         }
-        let q: Vec<f64> = problem.clamp(&p.iter().zip(&d).map(|(p, d)| p + d).collect::<Vec<_>>());
-        // Only a step below the cost is taken: the replays may stop once
-        // they show it is not.
-        let below = problem.residuals_below(&q, &mut trial, cost);
-        evaluations += 1;
-        let c = if below {
-            0.5 * trial.iter().map(|e| e * e).sum::<f64>()
-        } else {
-            f64::INFINITY
-        };
-        if c.is_finite() && c < cost {
-            trusted = (0.5..=2.0).contains(&((cost - c) / predicted));
-            (p, cost) = (q, c);
-            std::mem::swap(&mut r, &mut trial);
-            // Its replays are kept: Levenberg–Marquardt, if it takes over
-            // from here, starts without integrating them again.
-            problem.keep_last();
-            lambda *= 0.1;
-            rejected = 0;
-        } else {
-            lambda = (lambda * 10.0).max(1e-3);
-            rejected += 1;
+        match trial_step(problem, at, &d, &mut trial) {
+            Some((q, c)) => {
+                trusted = (0.5..=2.0).contains(&((at.cost - c) / predicted));
+                (at.p, at.cost) = (q, c);
+                std::mem::swap(&mut at.r, &mut trial);
+                lambda *= 0.1;
+                rejected = 0;
+            }
+            None => {
+                lambda = (lambda * 10.0).max(1e-3);
+                rejected += 1;
+            }
         }
     }
-    let mut f = fit(problem, &p, None, Polish::Refit);
-    f.evaluations += evaluations;
-    f
+    false
+}
+
+/// Replays the step `d` from `at` into `trial`: its cost where it lowers
+/// `at`'s (its replays kept: Levenberg–Marquardt, if it takes over from
+/// there, starts without integrating them again) with the point, else None.
+fn trial_step<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    at: &mut Descent,
+    d: &[f64],
+    trial: &mut [f64],
+) -> Option<(Vec<f64>, f64)> {
+    let q: Vec<f64> = problem.clamp(&at.p.iter().zip(d).map(|(p, d)| p + d).collect::<Vec<_>>());
+    // Only a step below the cost is taken: the replays may stop once they
+    // show it is not.
+    let below = problem.residuals_below(&q, trial, at.cost);
+    at.evaluations += 1;
+    let c = if below {
+        0.5 * trial.iter().map(|e| e * e).sum::<f64>()
+    } else {
+        f64::INFINITY
+    };
+    (c.is_finite() && c < at.cost).then(|| {
+        problem.keep_last();
+        (q, c)
+    })
+}
+
+/// The refit that converged on its model at `at`: no standard errors (the
+/// folds report parameters and held-out errors only).
+fn converged<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    full: &FitOutcome,
+    at: Descent,
+) -> FitOutcome {
+    let n = at.p.len();
+    FitOutcome {
+        std_errors: vec![f64::NAN; n],
+        cost: at.cost - problem.prior_cost(&at.p),
+        params: at.p,
+        residuals: problem.data_count(),
+        evaluations: at.evaluations,
+        converged: true,
+        global: GlobalSearch::None,
+        unseen: Vec::new(),
+        held: full.held.clone(),
+        linear: None,
+        robust_std_errors: Vec::new(),
+        robust_covariance: None,
+    }
 }
 
 #[cfg(test)]
-pub(super) mod tests {
-    use super::*;
-    use crate::diagnose::fit::{hold_stands, linearise, pinned, to_hold};
-    use crate::diagnose::model::replay::tests::sine_run;
-    use crate::diagnose::model::replay::Prepared;
-    use crate::manoeuvre::SineSteer;
-    use crate::tyre::{Pac89, Tyre};
-    use crate::vehicle::{Vehicle, VehicleModel};
-
-    /// Axles of stiffness factors `B_f`, `B_r` and peak friction `D`.
-    pub(in crate::diagnose::fit) fn axle_model(p: &[f64]) -> Augmented {
-        let tyre = |b: f64| Tyre::MagicSimple(crate::tyre::MagicSimple { b, c: 1.3, d: p[2] });
-        Augmented::new(
-            VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
-            1.0,
-        )
-    }
-
-    /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
-    /// model-form gap far above the noise, as on a real log.
-    pub(in crate::diagnose::fit) fn runs() -> Vec<Prepared> {
-        let pac89 = Tyre::Pac89(Pac89::adams_example());
-        let truth = Augmented::new(
-            VehicleModel::new(Vehicle::compact_sedan(), pac89.clone(), pac89),
-            1.0,
-        );
-        (0..5)
-            .map(|k| {
-                let m = SineSteer {
-                    speed: 15.0 + 4.0 * k as f64,
-                    amplitude: 0.02 + 0.01 * k as f64,
-                    frequency: 0.3 + 0.15 * k as f64,
-                    start: 0.5,
-                    end: 8.0,
-                };
-                sine_run(&truth, k, m)
-            })
-            .collect()
-    }
-
-    /// The axle characteristics' box (B front, B rear, D) and the channel
-    /// scales of the fold-refit tests.
-    pub(in crate::diagnose::fit) const AXLES: [(f64, f64); 3] =
-        [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-    pub(in crate::diagnose::fit) const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
-
-    /// A refit lands on Levenberg–Marquardt's optimum: the cost to a few
-    /// times what the refit's stopping test leaves (REFIT_DECREASE,
-    /// predicted), the parameters to a small share of their standard errors.
-    fn assert_same_optimum(quick: &FitOutcome, slow: &FitOutcome, what: &str) {
-        assert!(
-            (quick.cost - slow.cost).abs() <= 3.0 * REFIT_DECREASE * slow.cost,
-            "{what}: {} against {}",
-            quick.cost,
-            slow.cost
-        );
-        for i in 0..3 {
-            assert!(
-                (quick.params[i] - slow.params[i]).abs() <= 0.1 * slow.std_errors[i],
-                "{what}: {:?} against {:?} ± {:?}",
-                quick.params,
-                slow.params,
-                slow.std_errors
-            );
-        }
-    }
-
-    #[test]
-    fn a_fold_refit_on_the_quadratic_model_lands_where_levenberg_marquardt_does() {
-        let runs = runs();
-        let all = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
-        let full = fit(&all, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
-        assert!(full.converged);
-        // Far above the noise: the term Gauss–Newton drops matters.
-        assert!(full.cost > 100.0 * full.residuals as f64, "{}", full.cost);
-        for held in 0..runs.len() {
-            let train: Vec<&Prepared> = (0..runs.len())
-                .filter(|&i| i != held)
-                .map(|i| &runs[i])
-                .collect();
-            let fold = Problem::new(axle_model, train, SCALES, AXLES.to_vec());
-            let quick = refit(&fold, &full, &training_rows(&runs, &[held], 0));
-            let slow = fit(&fold, &full.params, None, Polish::LevenbergMarquardt);
-            assert!(quick.converged);
-            assert!(
-                quick.evaluations <= 3,
-                "fold {held}: {} replays",
-                quick.evaluations
-            );
-            assert_same_optimum(&quick, &slow, &format!("fold {held}"));
-        }
-    }
-
-    /// Started from a point well off the fold's optimum (3 % above its
-    /// cost), where the start's quadratic model stops holding on the way,
-    /// a refit does not stop where that model sees a minimum: it takes a
-    /// fresh Jacobian and lands where Levenberg–Marquardt does. (Without
-    /// the trust test, the other limits as they are, it stopped at 726,179
-    /// against 703,075, parameters 6 standard errors off.)
-    #[test]
-    fn a_fold_refit_from_afar_does_not_stop_where_its_model_no_longer_holds() {
-        let runs = runs();
-        let all = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
-        let start = [12.0, 12.0, 1.3];
-        let far = FitOutcome {
-            params: start.to_vec(),
-            std_errors: vec![f64::NAN; 3],
-            cost: all.cost(&start),
-            residuals: all.data_count(),
-            evaluations: 0,
-            converged: false,
-            global: GlobalSearch::None,
-            unseen: Vec::new(),
-            held: Vec::new(),
-            linear: Some(linearise(&all, &start)),
-            robust_std_errors: Vec::new(),
-            robust_covariance: None,
-        };
-        let fold = Problem::new(
-            axle_model,
-            runs.iter().skip(1).collect(),
-            SCALES,
-            AXLES.to_vec(),
-        );
-        let rows = training_rows(&runs, &[0], 0);
-        let quick = refit(&fold, &far, &rows);
-        let slow = fit(&fold, &start, None, Polish::LevenbergMarquardt);
-        assert!(quick.converged && slow.converged);
-        assert_same_optimum(&quick, &slow, "from afar");
-    }
-
-    /// A fourth parameter no residual responds to (an offset of a channel
-    /// no run measures) is held at its off value, marked unseen, given no
-    /// standard error and not counted: the fit's BIC is that of the three
-    /// the data see.
-    #[test]
-    fn a_parameter_no_residual_responds_to_is_held_at_its_off_value_and_not_counted() {
-        let runs = runs();
-        let three = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
-        let mut bounds = AXLES.to_vec();
-        bounds.push((-1.0, 1.0));
-        let four = Problem::new(
-            |p: &[f64]| axle_model(&p[..3]),
-            runs.iter().collect(),
-            SCALES,
-            bounds,
-        );
-        let f3 = fit(&three, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
-        let start = [10.0, 10.0, 1.0, 0.7];
-        let off = [10.0, 10.0, 1.0, 0.0];
-        let f4 = fit(&four, &start, Some(&off), Polish::LevenbergMarquardt);
-        assert_eq!(f4.unseen, [false, false, false, true]);
-        assert_eq!(f4.params[3], 0.0);
-        assert!(f4.std_errors[3].is_nan() && f4.std_errors[..3].iter().all(|s| s.is_finite()));
-        assert_eq!((f4.free_count(), f3.free_count()), (3, 3));
-        assert!(f3.unseen.iter().all(|&u| !u));
-        assert!(
-            (f4.bic() - f3.bic()).abs() <= 1e-9 * f3.bic().abs(),
-            "{} against {}",
-            f4.bic(),
-            f3.bic()
-        );
-        // Counted, the idle parameter would have cost ln N.
-        let counted = FitOutcome {
-            unseen: Vec::new(),
-            ..f4.clone()
-        };
-        let ln_n = (f4.residuals as f64).ln();
-        assert!((counted.bic() - f4.bic() - ln_n).abs() < 1e-9 * ln_n);
-    }
-
-    /// Of the effect parameters whose standard error exceeds their box,
-    /// the one fewest standard errors from its off value is held first,
-    /// then the next; one unseen, on a bound, already held, determined or
-    /// among the axles (before `from`) is not.
-    #[test]
-    fn the_parameter_held_first_is_the_undetermined_one_cheapest_to_hold() {
-        let bounds = [
-            (2.0, 80.0),
-            (0.3, 3.5),
-            (-1.0, 1.0),
-            (0.0, 2.0),
-            (-1.0, 1.0),
-            (0.0, 1.0),
-        ];
-        let off = [10.0, 1.0, 0.0, 0.0, 0.0, 0.0];
-        let mut f = FitOutcome {
-            // An axle past its box (index 0), two undetermined (2: 0.06
-            // standard errors from off; 3: 0.17), one unseen (4), one on
-            // its bound (5).
-            params: vec![40.0, 1.0, 0.3, 0.5, 0.9, 1.0],
-            std_errors: vec![100.0, 0.01, 5.0, 3.0, 9.0, 9.0],
-            cost: 1.0,
-            residuals: 100,
-            evaluations: 0,
-            converged: true,
-            global: GlobalSearch::None,
-            unseen: vec![false, false, false, false, true, false],
-            held: Vec::new(),
-            linear: None,
-            robust_std_errors: Vec::new(),
-            robust_covariance: None,
-        };
-        assert_eq!(to_hold(&f, &bounds, &off, 1), Some(2));
-        f.held = vec![None, None, Some(5.0), None, None, None];
-        assert_eq!(to_hold(&f, &bounds, &off, 1), Some(3));
-        // The unseen one is not counted; the held one is (the effect's
-        // form has it).
-        assert_eq!(f.free_count(), 5);
-        f.std_errors[3] = 1.9;
-        assert_eq!(to_hold(&f, &bounds, &off, 1), None);
-        // From the axles on, the axle past its box would be held too.
-        assert_eq!(to_hold(&f, &bounds, &off, 0), Some(0));
-    }
-
-    /// A fourth parameter pinned (a box of no width) at its off value
-    /// stays there: it has no standard error and no curvature, the three
-    /// others fit as the three-parameter model's (the fourth enters only
-    /// through its sum with the third, as a steer path's lag with its
-    /// delay), and the hold stands against that fit.
-    #[test]
-    fn a_pinned_parameter_stays_at_its_value_without_standard_error_or_curvature() {
-        let runs = runs();
-        let three = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
-        let f3 = fit(&three, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
-        let mut bounds = AXLES.to_vec();
-        bounds.push((-1.0, 1.0));
-        let twin = |p: &[f64]| axle_model(&[p[0], p[1], p[2] + p[3]]);
-        let four = Problem::new(twin, runs.iter().collect(), SCALES, pinned(&bounds, 3, 0.0));
-        let off = [10.0, 10.0, 1.0, 0.0];
-        let held = fit(
-            &four,
-            &[10.0, 10.0, 1.0, 0.0],
-            Some(&off),
-            Polish::LevenbergMarquardt,
-        );
-        assert!(held.converged);
-        assert_eq!(held.params[3], 0.0);
-        assert!(held.std_errors[3].is_nan());
-        for i in 0..3 {
-            assert!(
-                (held.params[i] - f3.params[i]).abs() <= 0.1 * f3.std_errors[i],
-                "{:?} against {:?}",
-                held.params,
-                f3.params
-            );
-        }
-        assert!((held.cost - f3.cost).abs() <= 1e-6 * f3.cost);
-        assert!(hold_stands(&f3, &held));
-        let linear = held.linear.as_ref().unwrap();
-        for b in 0..4 {
-            let column = linear.curvature.column(pair_index(4, b, 3));
-            assert!(column.iter().all(|&c| c == 0.0), "pair ({b}, 3)");
-        }
-    }
-
-    /// The hold stands while the held fit's `2·cost` exceeds the free
-    /// fit's by at most 3.84 residual variances of the free fit.
-    #[test]
-    fn a_hold_the_data_reject_does_not_stand() {
-        // 1,002 residuals, 2 free parameters: s² = 2·500/1000 = 1.
-        let free = FitOutcome {
-            params: vec![0.0, 0.0],
-            std_errors: vec![1.0, 1.0],
-            cost: 500.0,
-            residuals: 1002,
-            evaluations: 0,
-            converged: true,
-            global: GlobalSearch::None,
-            unseen: Vec::new(),
-            held: Vec::new(),
-            linear: None,
-            robust_std_errors: Vec::new(),
-            robust_covariance: None,
-        };
-        let at = |cost: f64| FitOutcome {
-            cost,
-            ..free.clone()
-        };
-        assert!(hold_stands(&free, &at(500.0 + 1.9)));
-        assert!(!hold_stands(&free, &at(500.0 + 1.93)));
-    }
-
-    /// A parameter the all-run fit held because no residual responds to
-    /// it, whose second derivative is not zero (a relaxation length held
-    /// at 0, whose lag below a replay's resolution leaves its Jacobian
-    /// column zero but not its curvature): the fold refits keep it and
-    /// land where Levenberg–Marquardt does, not at the all-run optimum.
-    #[test]
-    fn a_fold_refit_keeps_a_held_parameter_out_of_its_model() {
-        let runs = runs();
-        let mut bounds = AXLES.to_vec();
-        bounds.push((0.0, 1.0));
-        let four = Problem::new(
-            |p: &[f64]| axle_model(&p[..3]),
-            runs.iter().collect(),
-            SCALES,
-            bounds.clone(),
-        );
-        let off = [10.0, 10.0, 1.0, 0.0];
-        let mut full = fit(
-            &four,
-            &[10.0, 10.0, 1.0, 0.0],
-            Some(&off),
-            Polish::LevenbergMarquardt,
-        );
-        assert_eq!(full.unseen, [false, false, false, true]);
-        // Its second derivative along the held parameter, against the
-        // residuals: Σ r·∇²r strongly negative there.
-        let linear = full.linear.as_mut().unwrap();
-        let r = DVector::from_column_slice(&linear.residuals);
-        linear
-            .curvature
-            .column_mut(pair_index(4, 3, 3))
-            .copy_from(&(-1e3 * &r));
-        let train: Vec<&Prepared> = runs.iter().skip(1).collect();
-        let fold = Problem::new(|p: &[f64]| axle_model(&p[..3]), train, SCALES, bounds);
-        let quick = refit(&fold, &full, &training_rows(&runs, &[0], 0));
-        let slow = fit(&fold, &full.params, Some(&off), Polish::LevenbergMarquardt);
-        assert_eq!(quick.params[3], 0.0);
-        assert!(
-            quick.params[..3] != full.params[..3],
-            "the fold did not move"
-        );
-        assert!(
-            (quick.cost - slow.cost).abs() <= 1e-6 * slow.cost,
-            "{} against {}",
-            quick.cost,
-            slow.cost
-        );
-    }
-}
+#[path = "refit_tests.rs"]
+pub(super) mod tests;

@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 /// The angle columns `metrics` reads in degrees (its CLI's `--degrees`
 /// takes these alone).
-pub(crate) const METRICS_ANGLES: [&str; 3] = ["steer", "yaw_rate", "beta"];
+pub(crate) const METRICS_ANGLES: [&str; 4] = ["steer", "yaw_rate", "beta", "roll"];
 
 /// `degrees`' names as the run's angle columns (the package refuses any
 /// other name first, as an `OptionsError` with `name` and `known`).

@@ -27,13 +27,13 @@ def test_unequal_stiffness_arrays_are_an_options_error_naming_both_keywords(root
 
 
 def test_metrics_reads_in_degrees_the_librarys_angle_columns(tmp_path):
-    assert list(handling._handling.METRICS_ANGLES) == ["steer", "yaw_rate", "beta"]
+    assert list(handling._handling.METRICS_ANGLES) == ["steer", "yaw_rate", "beta", "roll"]
     run = tmp_path / "run.csv"
     run.write_text("time,speed,steer,yaw_rate\n0,20,0,0\n")
     with pytest.raises(handling.OptionsError) as e:
-        handling.metrics(run, degrees=["roll"])
-    assert e.value.known == ["steer", "yaw_rate", "beta"]
-    assert e.value.name == "roll"
+        handling.metrics(run, degrees=["bank"])
+    assert e.value.known == ["steer", "yaw_rate", "beta", "roll"]
+    assert e.value.name == "bank"
 
 
 def test_an_unknown_start_of_the_staged_fit_is_an_options_error(tmp_path):

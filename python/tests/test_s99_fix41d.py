@@ -49,8 +49,8 @@ def test_metrics_reads_a_steer_in_degrees_and_names_unknown_columns(root, tmp_pa
     m = handling.metrics(degrees, degrees=["steer"]).metrics
     assert m.yaw_rate_gain == pytest.approx(handling.metrics(radians).metrics.yaw_rate_gain, rel=1e-6)
     with pytest.raises(handling.OptionsError) as e:
-        handling.metrics(degrees, degrees=["roll"])
-    assert e.value.name == "roll" and e.value.known == ["steer", "yaw_rate", "beta"]
+        handling.metrics(degrees, degrees=["bank"])
+    assert e.value.name == "bank" and e.value.known == ["steer", "yaw_rate", "beta", "roll"]
 
 
 def test_a_run_without_a_step_is_the_cli_s_input_error(tmp_path):

@@ -55,14 +55,14 @@ pub struct MetricsArgs {
     #[arg(long, default_value_t = handling::metrics::DEFAULT_MIN_OVERSHOOT, allow_negative_numbers = true, value_parser = percent)]
     min_overshoot: f64,
     /// A column the run gives in degrees (deg/s for `yaw_rate`), converted
-    /// to radians: `steer`, `yaw_rate` or `beta`, the angle columns the
-    /// metrics read (repeatable, or several after a comma).
+    /// to radians: `steer`, `yaw_rate`, `beta` or `roll`, the angle
+    /// columns the metrics read (repeatable, or several after a comma).
     #[arg(long, value_parser = angle_column, value_delimiter = ',')]
     degrees: Vec<handling::io::AngleColumn>,
 }
 
 /// An angle column `metrics` reads: refused at its option, with those it
-/// reads (a run's other angle columns, `roll` and `bank`, it does not).
+/// reads (a run's `bank` it does not).
 fn angle_column(text: &str) -> Result<handling::io::AngleColumn, String> {
     use handling::io::AngleColumn;
     let known = AngleColumn::read_by_metrics_names();

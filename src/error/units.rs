@@ -246,7 +246,7 @@ pub enum UnitSlip {
         samples: usize,
     },
     /// A body roll, road bank or sideslip column whose size says degrees.
-    #[error("column `{column}`: {} rad is beyond ±{:.0}°, and the run's 99th percentile of |{column}| is {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so: `degrees = [\"{column}\"]` under [runs] in a campaign or a replay's [manoeuvre]{}", Num(*value), limit.to_degrees(), significant(*p99, 3), if *column == "beta" { ", `--degrees beta` to `metrics`" } else { "; `metrics` does not read it" })]
+    #[error("column `{column}`: {} rad is beyond ±{:.0}°, and the run's 99th percentile of |{column}| is {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so: `degrees = [\"{column}\"]` under [runs] in a campaign or a replay's [manoeuvre]{}", Num(*value), limit.to_degrees(), significant(*p99, 3), if *column == "bank" { "; `metrics` does not read it" } else { match *column { "roll" => ", `--degrees roll` to `metrics`", _ => ", `--degrees beta` to `metrics`" } })]
     RollInDegrees {
         /// The column (`roll`, `bank`, `beta`).
         column: &'static str,

@@ -45,13 +45,17 @@ impl AngleColumn {
     ];
 
     /// The angle columns `metrics` reads in degrees when asked (a run's
-    /// `roll` and `bank` it does not read): one list for the command line
-    /// and the Python package alike.
-    pub const READ_BY_METRICS: [AngleColumn; 3] =
-        [AngleColumn::Steer, AngleColumn::YawRate, AngleColumn::Beta];
+    /// `bank` it does not read; `roll` levels `ay`): one list for the
+    /// command line and the Python package alike.
+    pub const READ_BY_METRICS: [AngleColumn; 4] = [
+        AngleColumn::Steer,
+        AngleColumn::YawRate,
+        AngleColumn::Beta,
+        AngleColumn::Roll,
+    ];
 
     /// The names of [`AngleColumn::READ_BY_METRICS`].
-    pub fn read_by_metrics_names() -> [&'static str; 3] {
+    pub fn read_by_metrics_names() -> [&'static str; 4] {
         Self::READ_BY_METRICS.map(AngleColumn::name)
     }
 

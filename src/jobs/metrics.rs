@@ -10,7 +10,7 @@ use crate::metrics::measured::{
     measured_step_metrics, AyCheck, MeasuredMetrics, AY_METRICS, NO_AY,
 };
 use crate::metrics::{MetricSettings, StepMetrics};
-pub use body_ay::AyColumn;
+pub use body_ay::{AyColumn, RollLevelling};
 use serde::Serialize;
 use std::path::Path;
 
@@ -29,10 +29,10 @@ pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_
                          yaw_rate_noise as a fraction of the step (the terminal's % / 100); \
                          tb in s·deg (GB/T 6323); total variances and er in s";
 
-/// The optional channels of a run that the step's metrics read: the
-/// others (roll, bank, ax) are left unread, so that a column the metrics do
-/// not use cannot refuse the run.
-const METRIC_CHANNELS: [&str; 2] = ["ay", "beta"];
+/// The optional channels of a run that the step's metrics read (`roll`
+/// levels `ay`, as `diagnose` levels it): the others (bank, ax) are left
+/// unread, so that a column the metrics do not use cannot refuse the run.
+const METRIC_CHANNELS: [&str; 3] = ["ay", "beta", "roll"];
 
 /// The report of `metrics` (`--json` prints it): the metrics, the piece
 /// measured and how the run was cleaned.
@@ -53,12 +53,15 @@ pub struct MeasuredMetricsReport {
     pub warnings: Vec<String>,
     /// How the run was cleaned.
     pub cleaning: CleaningReport,
-    /// The run's optional columns that the metrics do not use (roll, bank,
-    /// ax), left unread and unchecked.
+    /// The run's optional columns that the metrics do not use (bank, ax),
+    /// left unread and unchecked.
     pub unread_columns: Vec<&'static str>,
     /// The column the lateral acceleration was read from: `ay_body` where
-    /// a history of `simulate` with roll carries it.
+    /// a history of `simulate` with roll carries it, `ay` levelled by a
+    /// logged `roll` where the run has one.
     pub ay_column: AyColumn,
+    /// How `ay` was levelled by the logged roll (null where it was not).
+    pub roll_levelling: Option<RollLevelling>,
     /// The piece's first sample, s.
     #[serde(skip)]
     pub t_start: f64,
@@ -93,6 +96,7 @@ pub fn run_with_degrees(
     // Before a dead `ay` is left out: it is said as dead, not as absent.
     let unchecked = crate::io::unchecked_speed_unit(&run);
     let mut dead = leave_out_dead_channels(&mut run)?;
+    let ay_read = body_ay::level_by_roll(&mut run, ay_column);
     dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
         Ok(m) => (run, m),
@@ -138,7 +142,8 @@ pub fn run_with_degrees(
         warnings: m.warnings,
         cleaning: m.cleaning,
         unread_columns: header.unread,
-        ay_column,
+        ay_column: ay_read.column,
+        roll_levelling: ay_read.levelling,
         t_start: m.t_start,
         t_end: m.t_end,
     })
@@ -436,7 +441,11 @@ impl MeasuredMetricsReport {
                 METRIC_CHANNELS.join(", ")
             ));
         }
-        out.extend(self.ay_column.note());
+        let ay_read = body_ay::AyRead {
+            column: self.ay_column,
+            levelling: self.roll_levelling,
+        };
+        out.extend(ay_read.note());
         out.extend(self.warnings.iter().map(|w| format!("warning: {w}")));
         out
     }

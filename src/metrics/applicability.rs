@@ -104,13 +104,25 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
 /// slide on any road. A yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] is
 /// judged by the largest |β| of the run (`largest_sideslip`, rad, where it
 /// logs `beta`): a spinning car's sideslip grows past a slide's.
+///
+/// `speeds`: the speed at the yaw-rate peak and over the steady window
+/// (m/s), where the run has a peak; a speed that falls between them by as
+/// much as the overshoot explains it ([`speed_explains`]), and that is
+/// said instead of a spin or a lightly damped response.
 pub fn applicability_measured(
     m: &StepMetrics,
     speed: Option<f64>,
     largest_sideslip: Option<f64>,
+    speeds: Option<(f64, f64)>,
 ) -> Vec<String> {
     let crawl = speed.is_some_and(|u| u.abs() < CRAWL_SPEED);
-    let evidence = Some(largest_sideslip.map_or(Overshoot::NoSideslip, Overshoot::Sideslip));
+    let percent = m.yaw_rate_overshoot.unwrap_or(0.0);
+    let evidence = Some(
+        match speeds.filter(|&(peak, steady)| speed_explains(percent, peak, steady)) {
+            Some((at_peak, steady)) => Overshoot::SpeedFalls { at_peak, steady },
+            None => largest_sideslip.map_or(Overshoot::NoSideslip, Overshoot::Sideslip),
+        },
+    );
     applicability_with_grip(m, speed, crawl.then_some(Grip::PavedRoad), evidence)
 }
 
@@ -136,6 +148,29 @@ pub enum Overshoot {
     /// [`SLIDING_SIDESLIP`] is judged by them, not by itself (within
     /// [`LINEAR_SLIP`] it is the turn's geometry).
     LinearSlip([f64; 2]),
+    /// A measured run whose speed falls from `at_peak` (m/s, at the
+    /// yaw-rate peak) to `steady` (over the steady window) by more than
+    /// the overshoot: the peak and the steady value are read at two
+    /// speeds ([`speed_explains`]).
+    SpeedFalls {
+        /// The speed at the yaw-rate peak, m/s.
+        at_peak: f64,
+        /// The mean speed over the steady window, m/s.
+        steady: f64,
+    },
+}
+
+/// Whether a speed falling from `at_peak` to `steady` (m/s) between the
+/// yaw-rate peak and the steady window accounts for an overshoot of
+/// `percent`: a neutral car's steady yaw rate, `u·δ/l`, is `at_peak/steady`
+/// times as large at the peak's speed as over the window, and where that
+/// ratio reaches `1 + percent/100` the peak stands no higher above the
+/// steady value than the speed's change alone puts it (an understeering
+/// car's steady yaw rate falls less with the speed, so the ratio is the
+/// most the speed can account for, below its characteristic speed).
+pub fn speed_explains(percent: f64, at_peak: f64, steady: f64) -> bool {
+    let ratio = at_peak.abs() / steady.abs();
+    ratio.is_finite() && ratio >= 1.0 + percent / 100.0
 }
 
 /// The slip angle within which a linear tyre stands for a real one, rad
@@ -293,6 +328,13 @@ fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>
         ),
         Some(Overshoot::NoSideslip) => format!(
             "{spin}; or, at speed, a lightly damped response that never left the tyres' linear range: the run has no `beta` to tell them apart"
+        ),
+        Some(Overshoot::SpeedFalls { at_peak, steady }) => format!(
+            "the yaw rate overshoots its steady value by {percent:.0} %, but the speed falls from {} m/s at the peak to {} m/s over the steady window: a neutral car's steady yaw rate, u·δ/l, is {} times as large at the peak's speed, no less than the {} times the peak stands above the steady value: the overshoot compares the yaw rate at two speeds and measures neither a spin nor the damping; hold the speed through the step to measure them (GB/T 6323 and ISO 7401 do)",
+            crate::format::readable(at_peak.abs(), 3),
+            crate::format::readable(steady.abs(), 3),
+            crate::format::fixed(at_peak.abs() / steady.abs(), 2),
+            crate::format::fixed(1.0 + percent / 100.0, 2)
         ),
         _ => spin,
     }

@@ -140,6 +140,41 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     );
 }
 
+/// A measured step braked from 18.6 m/s at its yaw-rate peak to 7.27 m/s
+/// over its steady window (the tester's 20 → 2 m/s schedule): a neutral
+/// car's steady yaw rate is 2.56 times as large at the peak's speed, more
+/// than the 2.02 the 102 % overshoot puts the peak at, so the overshoot
+/// is the speed's change, not a lightly damped response. A speed falling
+/// by less than the overshoot leaves the judgement by the sideslip.
+#[test]
+fn an_overshoot_the_falling_speed_accounts_for_is_said_as_the_speeds_change() {
+    let braked = StepMetrics {
+        yaw_rate_overshoot: Some(102.14),
+        ..moderate()
+    };
+    let beta = Some(1.6_f64.to_radians());
+    let w = applicability_measured(&braked, Some(13.6), beta, Some((18.6, 7.27)));
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("the yaw rate overshoots its steady value by 102 %, but the speed falls from 18.6 m/s at the peak to 7.27 m/s over the steady window: a neutral car's steady yaw rate, u·δ/l, is 2.56 times as large at the peak's speed, no less than the 2.02 times"),
+        "{w:?}"
+    );
+    assert!(!w[0].contains("damped response"), "{w:?}");
+    // 20 → 12 m/s, a ratio of 1.67: short of 2.02, judged as before.
+    let w = applicability_measured(&braked, Some(16.0), beta, Some((20.0, 12.0)));
+    assert!(
+        w[0].contains("no spin, but a lightly damped response"),
+        "{w:?}"
+    );
+    // A rising speed lowers the peak against the steady value: as before.
+    let w = applicability_measured(&braked, Some(16.0), beta, Some((10.0, 25.0)));
+    assert!(
+        w[0].contains("no spin, but a lightly damped response"),
+        "{w:?}"
+    );
+    assert!(speed_explains(102.14, 18.6, 7.27) && !speed_explains(102.14, 20.0, 12.0));
+}
+
 #[test]
 fn a_sideslip_with_the_tyres_far_below_their_grip_is_said_as_a_kinematic_turn() {
     // 17.8° at 2 m/s after a 28.6° step, 0.78 m/s² steady.
@@ -279,7 +314,7 @@ fn a_leading_response_is_blamed_on_the_logger_only_where_there_is_one() {
         yaw_rate_response_time: -0.008,
         ..moderate()
     };
-    let measured = applicability_measured(&leading, Some(22.2), Some(0.01)).join("\n");
+    let measured = applicability_measured(&leading, Some(22.2), Some(0.01), None).join("\n");
     assert!(measured.contains("response time -0.0080 s"), "{measured}");
     assert!(measured.contains("not aligned in time"), "{measured}");
     for simulated in [

@@ -304,7 +304,8 @@ fn a_magic_formula_mode_for_a_toml_tyre_is_refused_with_why() {
 
 /// Putnam's `roll` is logged in degrees: 2° read as radians is a car at
 /// 115° of roll. A replay of it is refused at its cell, with the keys that
-/// say so; `metrics`, which does not use the roll, leaves it unread.
+/// say so; `metrics`, which levels `ay` by the roll as `diagnose` does,
+/// refuses it too, naming `--degrees roll`.
 #[test]
 fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it() {
     let mut s = String::from("t,speed,steer,yaw_rate,roll\n");
@@ -331,6 +332,10 @@ fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it
     );
     let o = run_in(dir.path(), &["metrics", "deg.csv"]);
     let e = stderr(&o);
-    assert!(o.status.success(), "{e}");
-    assert!(e.contains("not read: roll"), "{e}");
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±57°")
+            && e.contains("`--degrees roll` to `metrics`"),
+        "{e}"
+    );
 }

@@ -245,22 +245,27 @@ fn logged_with_roll_in_degrees(dir: &Path) -> PathBuf {
     p
 }
 
+/// `metrics` reads a logged roll to level `ay` by it, as `diagnose` does:
+/// one in degrees is refused as there, naming `--degrees roll`, which
+/// reads it (it was left unread before).
 #[test]
-fn metrics_leaves_a_roll_column_in_degrees_unread_and_says_so() {
+fn metrics_refuses_a_roll_column_in_degrees_and_reads_it_declared() {
     let dir = tempfile::tempdir().unwrap();
     let p = logged_with_roll_in_degrees(dir.path());
-    let (ok, out, e) = metrics(&p, &[]);
+    let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok);
+    assert!(
+        e.contains("column `roll`") && e.contains("`--degrees roll` to `metrics`"),
+        "{e}"
+    );
+    let (ok, out, e) = metrics(&p, &["--degrees", "roll"]);
     assert!(ok, "{e}");
     let said = format!("{out}{e}");
     assert!(
-        said.contains(
-            "not read: roll (the step's metrics use t, speed, steer, yaw_rate, ay, beta)"
-        ),
+        said.contains("roll: ay levelled by it before the metrics"),
         "{said}"
     );
-    // The same run measured as before the column was added.
-    let (_, plain, _) = metrics(&logged(dir.path(), |_| {}), &[]);
-    assert_eq!(out, plain);
+    assert!(!said.contains("not read: roll"), "{said}");
     assert!(out.contains("yaw-rate gain"), "{out}");
 }
 

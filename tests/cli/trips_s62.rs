@@ -201,29 +201,32 @@ fn run_with_roll() -> String {
 }
 
 /// `metrics --degrees roll` was taken without a word, though `metrics`
-/// reads no roll: the declaration converted nothing. Refused now, as a
-/// column the file lacks is, with the angle columns `metrics` reads.
+/// read no roll: the declaration converted nothing. A column `metrics`
+/// does not read (`bank`) is refused, as a column the file lacks is, with
+/// the angle columns `metrics` reads (`roll` among them since it levels
+/// `ay` by it).
 #[test]
 fn metrics_refuses_a_degrees_column_it_does_not_read_with_the_columns_it_reads() {
     let dir = scratch(&[("run.csv", &run_with_roll())]);
     let p = dir.path().join("run.csv");
-    for column in ["roll", "bank"] {
-        let (ok, _, e) = metrics(&p, &["--degrees", column]);
-        assert!(!ok);
-        assert!(
-            e.contains(&format!("invalid value '{column}' for '--degrees <DEGREES>': not an angle column `metrics` reads: one of steer, yaw_rate, beta")),
-            "{e}"
-        );
-    }
+    let (ok, _, e) = metrics(&p, &["--degrees", "bank"]);
+    assert!(!ok);
+    assert!(
+        e.contains("invalid value 'bank' for '--degrees <DEGREES>': not an angle column `metrics` reads: one of steer, yaw_rate, beta, roll"),
+        "{e}"
+    );
     // A misspelt one is offered only the columns metrics reads.
     let (ok, _, e) = metrics(&p, &["--degrees", "steeer"]);
     assert!(!ok);
     assert!(
-        e.contains("(did you mean `steer`?): one of steer, yaw_rate, beta"),
+        e.contains("(did you mean `steer`?): one of steer, yaw_rate, beta, roll"),
         "{e}"
     );
-    // A column it reads, the file has and gives in radians, as before.
+    // The roll it reads, 1.5 throughout: beyond ±57° read as radians,
+    // refused naming `--degrees roll`, which reads it.
     let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok && e.contains("`--degrees roll` to `metrics`"), "{e}");
+    let (ok, _, e) = metrics(&p, &["--degrees", "roll"]);
     assert!(ok, "{e}");
 }
 

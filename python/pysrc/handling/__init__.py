@@ -881,7 +881,8 @@ def metrics(
     (default 10; 0: unfiltered), ``min_overshoot`` the least yaw-rate
     overshoot that is a peak in % (default 1; 0: any maximum above the
     noise), ``degrees`` the run's columns in degrees (of ``steer``,
-    ``yaw_rate`` in deg/s, ``beta``; ``handling metrics --degrees``); a
+    ``yaw_rate`` in deg/s, ``beta``, ``roll``; ``handling metrics
+    --degrees``; a logged ``roll`` levels ``ay`` as ``diagnose`` does); a
     :class:`MeasuredMetrics` (its
     ``metrics`` a :class:`StepMetrics`, with the run's cleaning report).
     A run without a step steer raises :class:`InputError` with its ``path``,

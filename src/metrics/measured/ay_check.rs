@@ -5,6 +5,14 @@
 //! logging noise, a gain in g, a channel of another axis fail it; the ay
 //! metrics are then left out, not read from it.
 //!
+//! The speed is the steady window's own (its mean over the samples the
+//! yaw rate's steady value is read from): `ay = u·r` holds sample by
+//! sample, so the steady `ay` goes with the steady window's `u`. The
+//! piece's median speed was used before, and a step braked from 25 to
+//! 10 m/s, whose steady `ay` (0.724 m/s²) is its steady window's
+//! 11.3 m/s × 0.0633 rad/s to 2 %, was checked at 18.8 m/s and its
+//! accelerometer called wrong.
+//!
 //! Both changes are read from samples the logger measured: the initial
 //! window's samples before the step (its time zero), and the
 //! steady window's, none of them masked by the cleaning (a masked sample is
@@ -48,6 +56,8 @@ pub(crate) struct AyBasis {
     ay: f64,
     /// The steady change of the yaw rate, rad/s.
     yaw_rate: f64,
+    /// The mean speed over the steady window, m/s.
+    speed: f64,
     /// The initial window's measured samples before the step.
     before: usize,
     /// The steady window's measured samples.
@@ -105,9 +115,13 @@ pub(crate) fn ay_basis(
         .filter(|&i| !masked[i] && t[i] >= from)
         .collect();
     let change = |x: &[f64]| mean_over(x, &after).0 - mean_over(x, &before).0;
+    // The speed is an input, repaired by the cleaning, not masked: every
+    // sample of the window reads it.
+    let steady: Vec<usize> = (0..t.len()).filter(|&i| t[i] >= from).collect();
     Some(AyBasis {
         ay: change(ay),
         yaw_rate: change(&piece.yaw_rate),
+        speed: mean_over(&piece.speed, &steady).0,
         before: before.len(),
         after: after.len(),
         before_span: (first, window_end.min(onset)),
@@ -115,9 +129,10 @@ pub(crate) fn ay_basis(
     })
 }
 
-/// The verdict on the basis `b` of piece `piece` at median speed `u`
-/// (m/s).
-pub(crate) fn ay_check(b: &AyBasis, u: f64, piece: &str) -> AyCheck {
+/// The verdict on the basis `b` of piece `piece`, at the steady window's
+/// speed.
+pub(crate) fn ay_check(b: &AyBasis, piece: &str) -> AyCheck {
+    let u = b.speed;
     let expected = u * b.yaw_rate;
     let few = b.before < AY_CHECK_SAMPLES || b.after < AY_CHECK_SAMPLES;
     if !expected.is_finite() || expected.abs() < AY_CHECKED_FROM {
@@ -138,7 +153,7 @@ pub(crate) fn ay_check(b: &AyBasis, u: f64, piece: &str) -> AyCheck {
         return AyCheck::Agrees;
     }
     AyCheck::Disagrees(format!(
-        "{piece}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics ({AY_METRICS}) are left out (null in --json), not read from it",
+        "{piece}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} % (u is the speed over the steady window, where the steady values are read): at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics ({AY_METRICS}) are left out (null in --json), not read from it",
         crate::format::readable(b.ay, 3),
         crate::format::readable(u, 3),
         crate::format::readable(b.yaw_rate, 3),

@@ -411,10 +411,9 @@ fn head<const N: usize>(x: &StateVector) -> [f64; N] {
 impl Integrator {
     /// The full initial state of a simulation from `x0`: the extra states at
     /// their quasi-static values, a lagged compliant front's at its steady
-    /// slip `α_kin − c·Fyf` ([`VehicleModel::state_vector`], the one solve
-    /// of it: a replay in `diagnose` starts from the same state).
+    /// slip ([`VehicleModel::steady_state_vector`]).
     fn initial(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> StateVector {
-        model.state_vector(&x0, &self.inputs(manoeuvre, manoeuvre.start_time()))
+        model.steady_state_vector(&x0, &self.inputs(manoeuvre, manoeuvre.start_time()))
     }
 
     /// RK4 at the output step, rows recorded from the first stage of each

@@ -172,9 +172,7 @@ impl VehicleModel {
     /// tyres hold the bank's pull too, and the roll follows their force:
     /// a roll taken from u·r alone left a banked straight-running trim
     /// rolling, and steering through roll steer, before its step), the lag
-    /// states at the kinematic slip angles that roll gives, a compliant
-    /// front's less `c·Fyf` (the one solve of that slip: simulate's
-    /// initial state and diagnose's replays both start here).
+    /// states at the kinematic slip angles that roll gives.
     pub(crate) fn quasi_static_state(&self, x: &State, inp: &Inputs) -> StateVector {
         let sc = self.scalars(inp.friction);
         self.quasi_static_of(&sc, x.beta, x.yaw_rate, inp.speed, inp.steer)

@@ -5,6 +5,7 @@
 //! ay are (β, δ). A damped Newton iteration with a central-difference Jacobian
 //! solves it from the linear bicycle model's answer. Units: SI, rad.
 
+use super::rates::StateVector;
 use super::{Inputs, State, VehicleModel, MIN_SPEED};
 pub use crate::error::NoSteadyState;
 
@@ -146,6 +147,20 @@ impl VehicleModel {
         m
     }
 
+    /// The full state of a steady (β, r) state at inputs `inp`: the
+    /// quasi-static state ([`VehicleModel::state_vector`]) with a lagged,
+    /// compliant front's slip at its steady value `α = α_kin − c·Fyf(α)`
+    /// rather than `α_kin` (a trim on a bank, whose front carries force,
+    /// would otherwise start its lag state off its target and move).
+    pub(crate) fn steady_state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
+        let mut full = self.state_vector(x, inp);
+        let e = &self.options.effects;
+        if e.lagged() && e.steering_compliance != 0.0 {
+            full[2] = self.without_lag().evaluate(x, inp).alpha_front;
+        }
+        full
+    }
+
     /// The steady state at speed `u` with lateral acceleration `ay`: the
     /// steer angle that holds it and the sideslip (`None` beyond the
     /// friction limit, past 45° of either, or where Newton stalls).
@@ -205,12 +220,11 @@ impl VehicleModel {
     ) -> Result<SteadyState, NoSteadyState> {
         let e = &self.options.effects;
         if e.lagged() && e.steering_compliance != 0.0 {
-            // The lag-free model has the same steady states and solves the
-            // compliant front's slip α_kin − c·Fyf with the tyres' force at
-            // every iterate; the quasi-static lag state takes the force a
-            // steady state at that yaw rate would have, right at the root
-            // only. (With the lag state at the kinematic slip the step
-            // ignored the compliance: 3.47 m/s² reached for 4 asked.)
+            // The quasi-static lag states sit at the kinematic slip angles,
+            // which with compliance is not the front's steady slip
+            // (α_kin − c·Fyf): solved there, the step ignored the
+            // compliance (3.47 m/s² reached for 4 asked). The lag-free
+            // model has the same steady states and solves that slip.
             return self
                 .without_lag()
                 .steady_state_for_lateral_acceleration(speed, friction, ay);

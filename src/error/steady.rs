@@ -20,11 +20,13 @@ pub struct NoSteadyState {
 
 /// The sentence of [`NoSteadyState`]: the limit said where the bisection
 /// found one clearly below the asked value (else the solver's failure).
+/// The ay is said to six significant digits: on a bank it is the change
+/// asked plus g·sin θ, a sum of seventeen (the field keeps them all).
 fn no_steady_words(speed: f64, ay: f64, limit: Option<f64>) -> String {
     let head = format!(
         "no steady state at {} m/s with ay = {} m/s²",
         crate::format::exact(speed),
-        crate::format::exact(ay)
+        crate::format::carried(ay, 6)
     );
     match limit {
         Some(l) if l.abs() < 0.99 * ay.abs() => format!(

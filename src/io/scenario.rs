@@ -370,11 +370,7 @@ fn step_steer(
     let solve = |asked: f64, ay: f64| {
         model
             .steady_state_for_lateral_acceleration(s.speed, friction, ay)
-            .map_err(|mut m| {
-                // On a bank the tyres' ay is the change asked plus g·sin θ:
-                // said to six digits, not the sum's seventeen.
-                let digits = 10f64.powi(5 - m.ay.abs().max(1e-300).log10().floor() as i32);
-                m.ay = (m.ay * digits).round() / digits;
+            .map_err(|m| {
                 param_error(
                     src,
                     Some("manoeuvre"),

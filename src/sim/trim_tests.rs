@@ -10,7 +10,8 @@
 
 use super::{Integrator, Method};
 use crate::manoeuvre::{Manoeuvre, StepSteer};
-use crate::vehicle::{Inputs, LoadTransferSeed, State, VehicleModel};
+use crate::tyre::{Pac89, Tyre};
+use crate::vehicle::{Inputs, Kinematics, LoadTransferSeed, State, Vehicle, VehicleModel};
 
 /// The linear sedan on a road banked 0.05 rad with the effects `f` sets.
 fn banked(f: impl Fn(&mut VehicleModel)) -> VehicleModel {
@@ -190,4 +191,55 @@ fn a_steady_turn_with_lag_and_compliance_holds_every_state() {
             s0.steer
         );
     }
+}
+
+/// PAC89 axles with load transfer and exact kinematics on a bank of
+/// `bank` rad, a tyre lag and a compliant steer: a front force that is no
+/// multiple of its slip.
+fn pac89_compliant(bank: f64) -> VehicleModel {
+    let tyre = || Tyre::Pac89(Pac89::adams_example());
+    let mut m = VehicleModel::new(Vehicle::compact_sedan(), tyre(), tyre());
+    (m.options.kinematics, m.options.load_transfer) = (Kinematics::Exact, true);
+    let e = &mut m.options.effects;
+    (e.road_bank, e.relaxation_length, e.steering_compliance) = (bank, 0.4, 1e-6);
+    e.roll_steer = [0.1, -0.05];
+    m
+}
+
+#[test]
+fn the_quasi_static_compliant_slip_is_the_lag_free_models_at_every_steady_state() {
+    // The quasi-static front lag state (diagnose's replays start there)
+    // takes α_kin − c·Fyf with the force a steady state holds (m·ay·b/L
+    // over the wheel's cosine); simulate's start (`steady_state_vector`)
+    // solves α = α_kin − c·Fyf(α) with the tyres' force at the state. At a
+    // steady state they are one slip; away from one (a log replayed from
+    // mid-transient) only the second is the tyres' own, which is why
+    // simulate keeps it.
+    let mut models = combinations();
+    for bank in [0.0, 0.05, -0.1] {
+        models.push(("pac89, compliance, lag, roll steer", pac89_compliant(bank)));
+    }
+    let (mut compared, mut worst) = (0, 0.0f64);
+    for (name, m) in models {
+        let bank = m.bank_acceleration();
+        for ay in [0.0, 2.0, -4.0, 6.0] {
+            let s = m
+                .steady_state_for_lateral_acceleration(SPEED, 1.0, bank + ay)
+                .unwrap();
+            let x = State {
+                beta: s.beta,
+                yaw_rate: s.yaw_rate,
+            };
+            let inp = Inputs::steady(s.steer, SPEED, 1.0);
+            let quasi = m.state_vector(&x, &inp)[2];
+            let mut seed = LoadTransferSeed::default();
+            let solved = m.without_lag().evaluate_to(&x, &inp, &mut seed, 1e-13);
+            let gap = (quasi - solved.alpha_front).abs();
+            assert!(gap < 1e-12, "{name}, ay {ay}: {quasi} vs {solved:?}");
+            worst = worst.max(gap);
+            compared += usize::from(m.options.effects.steering_compliance != 0.0);
+        }
+    }
+    assert_eq!(compared, 5 * 4, "the compliant models compared");
+    println!("largest difference of the two front slips: {worst:e} rad");
 }

@@ -151,7 +151,11 @@ impl VehicleModel {
     /// quasi-static state ([`VehicleModel::state_vector`]) with a lagged,
     /// compliant front's slip at its steady value `α = α_kin − c·Fyf(α)`
     /// rather than `α_kin` (a trim on a bank, whose front carries force,
-    /// would otherwise start its lag state off its target and move).
+    /// would otherwise start its lag state off its target and move). The
+    /// slip is solved with the tyres' own force at the state, not the
+    /// steady-turn force [`VehicleModel::quasi_static_state`] assumes: the
+    /// two agree at a steady state (to 1e-13, `trim_tests`), and away from
+    /// one (a log replayed from mid-transient) only this one is the tyres'.
     pub(crate) fn steady_state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
         let mut full = self.state_vector(x, inp);
         let e = &self.options.effects;

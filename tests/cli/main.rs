@@ -236,6 +236,26 @@ pub(crate) const GIM: &str =
 pub(crate) const STEP: &str =
     "[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\n";
 
+/// The `[model]` table of the linear bicycle: small-angle kinematics and
+/// no load transfer, where its closed forms hold.
+pub(crate) const SMALL_ANGLE: &str =
+    "[model]\nkinematics = \"small-angle\"\nload_transfer = false\n";
+/// A linear tyre of 57 296 N/rad (1000 N/deg) per wheel.
+pub(crate) const LINEAR_1000_PER_DEG: &str = "model = \"linear\"\ncornering_stiffness = 57296.0\n";
+
+/// The sedan of [`VEHICLE`] on the tyre file `tyre` at both axles with
+/// [`SMALL_ANGLE`]: the head of a scenario, sweep or study file on the
+/// linear bicycle model.
+pub(crate) fn linear_sedan(tyre: &str) -> String {
+    format!("{VEHICLE}[tyres]\nfront = \"{tyre}\"\n{SMALL_ANGLE}")
+}
+
+/// [`linear_sedan`] with `a` and `b` swapped (1.67 m and 1.11 m): the
+/// same car with its mass rearward, oversteering.
+pub(crate) fn rearward_sedan(tyre: &str) -> String {
+    linear_sedan(tyre).replace("a = 1.11\nb = 1.67\n", "a = 1.67\nb = 1.11\n")
+}
+
 pub(crate) fn scenario(vehicle: &str, tyre: &str, manoeuvre: &str) -> tempfile::TempDir {
     let sc = format!("{vehicle}\n[tyres]\nfront = \"tyre.toml\"\n\n{manoeuvre}");
     scratch(&[("scenario.toml", &sc), ("tyre.toml", tyre)])
@@ -271,14 +291,74 @@ pub(crate) fn undetermined_holds(report: &serde_json::Value) -> Vec<&serde_json:
 
 /// Runs `identify rig --model model --out out`.
 pub(crate) fn identify_to(rig: &Path, model: &str, out: &Path) -> Output {
-    run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        model,
+    identify_with(rig, model, &[], out)
+}
+
+/// Runs `identify rig --model model <args> --out out` (`args` such as
+/// `--bin-deg 0`).
+pub(crate) fn identify_with(rig: &Path, model: &str, args: &[&str], out: &Path) -> Output {
+    let mut all = vec!["identify", rig.to_str().unwrap(), "--model", model];
+    all.extend_from_slice(args);
+    all.extend(["--out", out.to_str().unwrap()]);
+    run(&all)
+}
+
+/// MFeval's MF 6.1 sample file (the test fixtures').
+pub(crate) fn mf61_fixture() -> PathBuf {
+    root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir")
+}
+
+/// The forces and moments of [`mf61_fixture`] at the points of the CSV
+/// `points`, written by `tyre-eval` to `out` (a rig file `identify`
+/// reads): the run must succeed.
+pub(crate) fn mf61_evaluated(points: &Path, out: &Path) {
+    let tir = mf61_fixture();
+    succeeds(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        points.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
-    ])
+    ]);
+}
+
+/// Writes `text` to `dir/name`; its path.
+pub(crate) fn written(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// The linear car of [`scenarios::simulated_rows`] stepped 0.01 rad at
+/// 30 m/s from 1 s to `end` s, rows every 0.01 s, logged as
+/// `t,speed,steer,yaw_rate,ay,beta` with each row's errors
+/// `[yaw rate, ay, sideslip] = errors(noise)` added (drawn in the order
+/// the closure draws them, so a seed's log stays the same), and a
+/// scenario replaying it ([`replay_of`]): the scenario's path.
+pub(crate) fn noisy_step_replay(
+    dir: &Path,
+    end: f64,
+    mut noise: calibration::Noise,
+    mut errors: impl FnMut(&mut calibration::Noise) -> [f64; 3],
+) -> PathBuf {
+    let manoeuvre = format!(
+        "kind = \"step-steer\"\nspeed = 30.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = {end:.1}\n"
+    );
+    let rows = scenarios::simulated_rows(dir, "step", &manoeuvre);
+    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+    for c in rows.iter().filter(|c| c[0] < end - 0.005) {
+        let [r, ay, beta] = errors(&mut noise);
+        csv += &format!(
+            "{:.2},{:.6},{:.6},{:.6},{:.6},{:.7}\n",
+            c[0],
+            c[2],
+            c[1],
+            c[4] + r,
+            c[5] + ay,
+            c[3] + beta
+        );
+    }
+    replay_of(dir, &csv)
 }
 
 /// The public Hoosier cornering file fitted by `identify --model pac89`
@@ -449,6 +529,7 @@ mod trips_s102_fix32b;
 mod trips_s102_fix32c;
 mod trips_s102_fix41g;
 mod trips_s103_fix33a;
+mod trips_s103_mend33;
 mod trips_s103_putnam39;
 mod trips_s62;
 mod trips_s62b;

@@ -219,13 +219,7 @@ fn a_broken_campaign_in_a_batch_reads_as_it_does_alone() {
 /// degrees, in `dir`.
 fn steer_in_degrees(dir: &Path) -> PathBuf {
     let sim = dir.join("sim");
-    let o = run(&[
-        "simulate",
-        root().join("scenarios/sedan_step.toml").to_str().unwrap(),
-        "--out",
-        sim.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    super::scenarios::simulate_to(&root().join("scenarios/sedan_step.toml"), &sim);
     let text = fs::read_to_string(sim.join("history.csv")).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();
@@ -242,9 +236,7 @@ fn steer_in_degrees(dir: &Path) -> PathBuf {
             .collect();
         out += &(cells.join(",") + "\n");
     }
-    let path = dir.join("degrees.csv");
-    fs::write(&path, out).unwrap();
-    path
+    written(dir, "degrees.csv", &out)
 }
 
 #[test]

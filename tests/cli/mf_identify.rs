@@ -53,15 +53,8 @@ fn rig_points() -> String {
 /// Writes `rig.csv` (the truth's forces with 1 % multiplicative Gaussian
 /// noise, fixed seed) and `clean.csv` (without noise) into `dir`.
 fn synthesise(dir: &Path) {
-    fs::write(dir.join("points.csv"), rig_points()).unwrap();
-    let o = run(&[
-        "tyre-eval",
-        TRUTH,
-        dir.join("points.csv").to_str().unwrap(),
-        "--out",
-        dir.join("clean.csv").to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let points = written(dir, "points.csv", &rig_points());
+    mf61_evaluated(&points, &dir.join("clean.csv"));
     let (head, rows) = numeric_csv(&dir.join("clean.csv"));
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
     let mut s = String::from("fz,kappa,alpha,camber,speed,fx,fy,mz\n");

@@ -4,7 +4,7 @@
 //! `metrics` of a rolled history reading the accelerometer's `ay`.
 
 use super::calibration::Noise;
-use super::scenarios::{simulate_to, simulated_rows};
+use super::scenarios::simulate_to;
 use super::*;
 use std::fs;
 
@@ -15,28 +15,13 @@ use std::fs;
 /// wandering slower than a quarter second), seeded `seed`; with a scenario
 /// replaying it: the scenario's path.
 fn smooth_sideslip_replay(dir: &Path, seed: u64) -> PathBuf {
-    let rows = simulated_rows(
-        dir,
-        "step",
-        "kind = \"step-steer\"\nspeed = 30.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 40.0\n",
-    );
     let mut noise = Noise(seed);
     let rho = (-0.01_f64).exp();
     let mut wander = 0.0005 * noise.gauss();
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for c in rows.iter().filter(|c| c[0] < 39.995) {
-        wander = rho * wander + 0.0005 * (1.0 - rho * rho).sqrt() * noise.gauss();
-        csv += &format!(
-            "{:.2},{:.6},{:.6},{:.6},{:.6},{:.7}\n",
-            c[0],
-            c[2],
-            c[1],
-            c[4] + 0.0008 * noise.gauss(),
-            c[5] + 0.03 * noise.gauss(),
-            c[3] + wander
-        );
-    }
-    replay_of(dir, &csv)
+    noisy_step_replay(dir, 40.0, noise, |n| {
+        wander = rho * wander + 0.0005 * (1.0 - rho * rho).sqrt() * n.gauss();
+        [0.0008 * n.gauss(), 0.03 * n.gauss(), wander]
+    })
 }
 
 /// The effective samples a gap line counts its bias over.

@@ -5,7 +5,7 @@
 //! half-milliradian mean was "a bias" (Putnam: 19 of its 46 channels).
 
 use super::calibration::Noise;
-use super::scenarios::{simulate_to, simulated_rows};
+use super::scenarios::simulate_to;
 use super::*;
 
 /// The linear car stepped 0.01 rad at 30 m/s (1 s to 80 s, rows every
@@ -15,28 +15,13 @@ use super::*;
 /// plus `offset` (the measurement above the model's), seeded `seed`; with
 /// a scenario replaying it: the scenario's path.
 fn estimator_sideslip_replay(dir: &Path, seed: u64, offset: f64) -> PathBuf {
-    let rows = simulated_rows(
-        dir,
-        "step",
-        "kind = \"step-steer\"\nspeed = 30.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 80.0\n",
-    );
     let mut noise = Noise(seed);
     let rho = (-0.01_f64 / 3.0).exp();
     let mut wander = 0.001 * noise.gauss();
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for c in rows.iter().filter(|c| c[0] < 79.995) {
-        wander = rho * wander + 0.001 * (1.0 - rho * rho).sqrt() * noise.gauss();
-        csv += &format!(
-            "{:.2},{:.6},{:.6},{:.6},{:.6},{:.7}\n",
-            c[0],
-            c[2],
-            c[1],
-            c[4] + 0.0008 * noise.gauss(),
-            c[5] + 0.03 * noise.gauss(),
-            c[3] + wander + offset
-        );
-    }
-    replay_of(dir, &csv)
+    noisy_step_replay(dir, 80.0, noise, |n| {
+        wander = rho * wander + 0.001 * (1.0 - rho * rho).sqrt() * n.gauss();
+        [0.0008 * n.gauss(), 0.03 * n.gauss(), wander + offset]
+    })
 }
 
 /// The replay's line for `name` on the terminal and its entry in gap.json.

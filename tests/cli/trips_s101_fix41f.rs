@@ -21,24 +21,8 @@ fn png_height(path: &Path) -> u32 {
 fn a_staged_fit_writes_a_figure_per_stage_each_of_a_readable_height() {
     let dir = tempfile::tempdir().unwrap();
     let rig = dir.path().join("rig.csv");
-    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
-    let grid = root().join("docs/examples/mf_grid.csv");
-    succeeds(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        grid.to_str().unwrap(),
-        "--out",
-        rig.to_str().unwrap(),
-    ]);
-    let out = dir.path().join("fit.tir");
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    mf61_evaluated(&root().join("docs/examples/mf_grid.csv"), &rig);
+    let o = identify_to(&rig, "mf61", &dir.path().join("fit.tir"));
     let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
     assert!(o.status.success(), "{said}");
     let report = read_json(&dir.path().join("fit.report.json"));

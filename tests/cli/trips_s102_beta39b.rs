@@ -52,25 +52,14 @@ fn an_estimator_s_sideslip_two_floors_off_is_a_gap_in_no_window_and_no_bias() {
 #[test]
 fn a_quiet_white_sideslip_is_a_sensor_s_and_its_floor_counts_white() {
     let dir = tempfile::tempdir().unwrap();
-    let rows = super::scenarios::simulated_rows(
-        dir.path(),
-        "step",
-        "kind = \"step-steer\"\nspeed = 30.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 80.0\n",
-    );
-    let mut noise = super::calibration::Noise(3);
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for c in rows.iter().filter(|c| c[0] < 79.995) {
-        csv += &format!(
-            "{:.2},{:.6},{:.6},{:.6},{:.6},{:.7}\n",
-            c[0],
-            c[2],
-            c[1],
-            c[4] + 0.0008 * noise.gauss(),
-            c[5] + 0.03 * noise.gauss(),
-            c[3] + 0.0005 * noise.gauss() + 0.0075
-        );
-    }
-    let scenario = replay_of(dir.path(), &csv);
+    let noise = super::calibration::Noise(3);
+    let scenario = noisy_step_replay(dir.path(), 80.0, noise, |n| {
+        [
+            0.0008 * n.gauss(),
+            0.03 * n.gauss(),
+            0.0005 * n.gauss() + 0.0075,
+        ]
+    });
     let out = dir.path().join("out");
     let stdout = super::scenarios::simulate_to(&scenario, &out);
     let gap = read_json(&out.join("gap.json"));

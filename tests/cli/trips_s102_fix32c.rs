@@ -21,21 +21,11 @@ use handling::report::plot::palette;
 const LINEAR: &str = "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n";
 
 /// The round's `study_lin.toml`: a 4 × 4 map and a yaw-rate-gain target.
-const STUDY: &str = "name = \"study_lin\"
-[vehicle]
-mass = 1530.0
-yaw_inertia = 2315.0
-a = 1.11
-b = 1.67
-track_front = 1.55
-track_rear = 1.55
-cg_height = 0.55
-[tyres]
-front = \"lin.toml\"
-[model]
-kinematics = \"small-angle\"
-load_transfer = false
-[manoeuvre]
+fn study() -> String {
+    let sedan = linear_sedan("lin.toml");
+    format!(
+        "name = \"study_lin\"
+{sedan}[manoeuvre]
 kind = \"step-steer\"
 speed = 25.0
 steer = 0.01
@@ -44,12 +34,14 @@ rise_time = 0.1
 end = 8.0
 [stiffness]
 unit = \"N/rad\"
-front = { from = 40000.0, to = 100000.0, count = 4 }
-rear = { from = 40000.0, to = 100000.0, count = 4 }
+front = {{ from = 40000.0, to = 100000.0, count = 4 }}
+rear = {{ from = 40000.0, to = 100000.0, count = 4 }}
 [inverse]
-targets = [{ metric = \"yaw_rate_gain\", value = 6.0, tolerance = 0.2 }]
-reference = { front = 57296.0, rear = 57296.0 }
-";
+targets = [{{ metric = \"yaw_rate_gain\", value = 6.0, tolerance = 0.2 }}]
+reference = {{ front = 57296.0, rear = 57296.0 }}
+"
+    )
+}
 
 /// Before: maps.png held Er, E_r, E_ay, the yaw-rate response time, the
 /// overshoot and TB (3 rows of 2); the yaw_rate_gain = 6 curve ("a curve of
@@ -59,7 +51,7 @@ reference = { front = 57296.0, rear = 57296.0 }
 /// drawn on its metric's map and nowhere else.
 #[test]
 fn a_studys_target_curve_is_drawn_on_the_map_of_its_own_metric() {
-    let dir = scratch(&[("study_lin.toml", STUDY), ("lin.toml", LINEAR)]);
+    let dir = scratch(&[("study_lin.toml", &study()), ("lin.toml", LINEAR)]);
     let o = run_in(dir.path(), &["study", "study_lin.toml", "--out", "o"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(
@@ -105,27 +97,19 @@ fn a_studys_target_curve_is_drawn_on_the_map_of_its_own_metric() {
 
 /// The round's `eq_over.toml`: the sedan with a and b swapped
 /// (oversteering), linear tyres, speeds 20 to 44 m/s.
-const EQ_OVER: &str = "name = \"eq_over\"
-[vehicle]
-mass = 1530.0
-yaw_inertia = 2315.0
-a = 1.67
-b = 1.11
-track_front = 1.55
-track_rear = 1.55
-cg_height = 0.55
-[tyres]
-front = \"lin.toml\"
-[model]
-kinematics = \"small-angle\"
-load_transfer = false
-[sweep]
-steer = { values = [0.5, 1.0, 2.0], unit = \"deg\" }
+fn eq_over() -> String {
+    let sedan = rearward_sedan("lin.toml");
+    format!(
+        "name = \"eq_over\"
+{sedan}[sweep]
+steer = {{ values = [0.5, 1.0, 2.0], unit = \"deg\" }}
 friction = 1.0
-speed = { from = 20.0, to = 44.0, step = 4.0 }
+speed = {{ from = 20.0, to = 44.0, step = 4.0 }}
 [pso]
 seed = 1
-";
+"
+    )
+}
 
 /// Before: "3 conditions with 0 equilibria in the box" and nothing else,
 /// though summary.json held critical_speed_closed_form = 32.15 m/s; the
@@ -137,7 +121,7 @@ seed = 1
 /// figure draws the critical speed as a line in its own colour.
 #[test]
 fn an_oversteering_cars_empty_box_is_explained_by_its_critical_speed() {
-    let dir = scratch(&[("eq_over.toml", EQ_OVER), ("lin.toml", LINEAR)]);
+    let dir = scratch(&[("eq_over.toml", &eq_over()), ("lin.toml", LINEAR)]);
     let o = run_in(dir.path(), &["equilibria", "eq_over.toml", "--out", "o"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = stdout(&o);

@@ -25,9 +25,7 @@ fn near_zero_slip_rig(dir: &Path) -> PathBuf {
             text.push_str(&format!("{fz},{alpha:.6},{fy:.2}\n"));
         }
     }
-    let path = dir.join("near0.csv");
-    fs::write(&path, text).unwrap();
-    path
+    written(dir, "near0.csv", &text)
 }
 
 /// PAC89 on a slip angle near 0: the binned refusal says the slip angle is
@@ -42,16 +40,7 @@ fn pac89_on_a_slip_angle_near_zero_neither_advises_bin_deg_0_nor_writes_a_fit() 
     let rig = near_zero_slip_rig(dir.path());
     for bin in ["0.25", "0"] {
         let out = dir.path().join(format!("p{bin}.toml"));
-        let o = run(&[
-            "identify",
-            rig.to_str().unwrap(),
-            "--model",
-            "pac89",
-            "--bin-deg",
-            bin,
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = identify_with(&rig, "pac89", &["--bin-deg", bin], &out);
         let e = without_temp_names(&stderr(&o));
         assert!(!o.status.success(), "--bin-deg {bin}: {e}");
         assert!(!e.contains("--bin-deg 0 keeps every sample"), "{e}");
@@ -164,17 +153,8 @@ fn mf_lateral_rig(dir: &Path) -> PathBuf {
             points += &format!("{fz},0,{},0,16.7\n", f64::from(i).to_radians());
         }
     }
-    fs::write(dir.join("points.csv"), points).unwrap();
-    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
     let clean = dir.join("clean.csv");
-    let o = run(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        dir.join("points.csv").to_str().unwrap(),
-        "--out",
-        clean.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    mf61_evaluated(&written(dir, "points.csv", &points), &clean);
     let (head, rows) = numeric_csv(&clean);
     let mut text = String::from("fz,alpha,fy\n");
     for (i, r) in rows.iter().enumerate() {
@@ -186,9 +166,7 @@ fn mf_lateral_rig(dir: &Path) -> PathBuf {
         );
         text += &format!("{},{},{}\n", r[fz], r[alpha], r[fy] * scatter);
     }
-    let rig = dir.join("mfrig.csv");
-    fs::write(&rig, text).unwrap();
-    rig
+    written(dir, "mfrig.csv", &text)
 }
 
 /// A staged fit into a folder holding `X.png` (an earlier release's one
@@ -202,14 +180,7 @@ fn a_staged_fit_names_an_older_single_figure_beside_its_own_as_not_from_this_fit
     let out = dir.path().join("X.tir");
     let stale = dir.path().join("X.png");
     fs::write(&stale, b"an earlier release's figure").unwrap();
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = identify_to(&rig, "mf61", &out);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
@@ -229,14 +200,7 @@ fn a_staged_fit_names_an_older_single_figure_beside_its_own_as_not_from_this_fit
     );
     // Without a stale figure nothing is said and the report has no such key.
     let again = dir.path().join("Y.tir");
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        again.to_str().unwrap(),
-    ]);
+    let o = identify_to(&rig, "mf61", &again);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!String::from_utf8_lossy(&o.stdout).contains("not from this fit"));
     assert!(read_json(&again.with_extension("report.json"))

@@ -199,16 +199,7 @@ fn identify_never_thins_to_fewer_points_at_a_smaller_bin() {
     let rig = dir.path().join("rig.csv");
     for bin in ["0", "1e-20", "1e-300"] {
         let out = dir.path().join(format!("t{bin}.toml"));
-        let o = run(&[
-            "identify",
-            rig.to_str().unwrap(),
-            "--model",
-            "pac89",
-            "--bin-deg",
-            bin,
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = identify_with(&rig, "pac89", &["--bin-deg", bin], &out);
         assert!(o.status.success(), "{bin}: {}", stderr(&o));
         let text = String::from_utf8_lossy(&o.stdout).into_owned();
         assert!(text.contains("thinned to 63 points ("), "{bin}: {text}");
@@ -219,16 +210,12 @@ fn identify_never_thins_to_fewer_points_at_a_smaller_bin() {
             );
         }
     }
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
+    let o = identify_with(
+        &rig,
         "pac89",
-        "--bin-deg",
-        "5",
-        "--out",
-        dir.path().join("t5.toml").to_str().unwrap(),
-    ]);
+        &["--bin-deg", "5"],
+        &dir.path().join("t5.toml"),
+    );
     assert!(!o.status.success());
     assert!(
         stderr(&o).contains("`bin_deg` = 5: must lie in [0, 2]"),

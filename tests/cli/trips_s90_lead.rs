@@ -67,26 +67,9 @@ fn a_camber_column_of_small_degrees_outside_the_files_range_is_asked_as_degrees(
 #[test]
 fn the_papers_sigma_is_said_as_theirs_on_their_data() {
     let dir = scratch(&[]);
-    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
-    let grid = root().join("docs/examples/mf_grid.csv");
     let rig = dir.path().join("rig.csv");
-    let o = run(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        grid.to_str().unwrap(),
-        "--out",
-        rig.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let fit = dir.path().join("fit.tir");
-    let o = run(&[
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        fit.to_str().unwrap(),
-    ]);
+    mf61_evaluated(&root().join("docs/examples/mf_grid.csv"), &rig);
+    let o = identify_to(&rig, "mf61", &dir.path().join("fit.tir"));
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     let stage = said

@@ -4,26 +4,6 @@
 
 use super::*;
 
-/// The tester's linear sedan (m 1530 kg, Iz 2315 kg·m², a 1.11 m, b
-/// 1.67 m), small-angle kinematics, no load transfer: its closed forms hold.
-const SEDAN: &str = "[vehicle]
-mass = 1530.0
-yaw_inertia = 2315.0
-a = 1.11
-b = 1.67
-track_front = 1.55
-track_rear = 1.55
-cg_height = 0.55
-[tyres]
-front = \"tyre.toml\"
-[model]
-kinematics = \"small-angle\"
-load_transfer = false
-";
-
-/// A linear tyre of 57296 N/rad per wheel.
-const TYRE: &str = "model = \"linear\"\ncornering_stiffness = 57296.0\n";
-
 /// The steady yaw-rate gain u/(l·(1 + K·u²)) of the linear bicycle with
 /// cornering stiffness `kf`, `kr` per tyre (N/deg), at `u` m/s.
 fn closed_form_gain(kf: f64, kr: f64, u: f64) -> f64 {
@@ -40,8 +20,9 @@ fn closed_form_gain(kf: f64, kr: f64, u: f64) -> f64 {
 /// the best point re-simulates to the target, and the closed form agrees.
 #[test]
 fn a_yaw_rate_gain_target_is_traced_to_its_best_point() {
+    let sedan = linear_sedan("tyre.toml");
     let study = format!(
-        "name = \"gain\"\n{SEDAN}[manoeuvre]
+        "name = \"gain\"\n{sedan}[manoeuvre]
 kind = \"step-steer\"
 speed = 22.2222
 steer = 0.0174533
@@ -57,7 +38,7 @@ targets = [{{ metric = \"yaw_rate_gain\", value = 4.45, tolerance = 0.2 }}]
 reference = {{ front = 500.0, rear = 540.0 }}
 "
     );
-    let dir = scratch(&[("study.toml", &study), ("tyre.toml", TYRE)]);
+    let dir = scratch(&[("study.toml", &study), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let o = run_in(dir.path(), &["study", "study.toml", "--out", "out"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
@@ -95,15 +76,16 @@ reference = {{ front = 500.0, rear = 540.0 }}
 /// went beyond the road.
 #[test]
 fn linear_tyres_on_a_slippery_road_are_said_to_ignore_its_friction() {
+    let sedan = linear_sedan("tyre.toml");
     let sweep = format!(
-        "name = \"lin_fric\"\n{SEDAN}[sweep]
+        "name = \"lin_fric\"\n{sedan}[sweep]
 steer = 0.05
 friction = {{ values = [0.2, 0.5, 1.0] }}
 speed = 20.0
 "
     );
     let scenario = format!(
-        "name = \"lin_sim\"\n{SEDAN}[road]
+        "name = \"lin_sim\"\n{sedan}[road]
 friction = 0.2
 [manoeuvre]
 kind = \"step-steer\"
@@ -117,7 +99,7 @@ end = 6.5
     let dir = scratch(&[
         ("sweep.toml", &sweep),
         ("sim.toml", &scenario),
-        ("tyre.toml", TYRE),
+        ("tyre.toml", LINEAR_1000_PER_DEG),
     ]);
     let o = run_in(dir.path(), &["equilibria", "sweep.toml", "--out", "eq"]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -161,8 +143,9 @@ end = 6.5
 /// drawn as two dashed lines, half-way between the centre and the edges.
 #[test]
 fn the_phase_portrait_marks_the_search_box() {
+    let sedan = linear_sedan("tyre.toml");
     let sweep = format!(
-        "name = \"lin_steer\"\n{SEDAN}[sweep]
+        "name = \"lin_steer\"\n{sedan}[sweep]
 steer = {{ values = [0.0, 0.02] }}
 friction = 0.8
 speed = 20.0
@@ -170,7 +153,7 @@ speed = 20.0
 phase_portraits = [ {{ steer = 0.02, friction = 0.8, speed = 20.0 }} ]
 "
     );
-    let dir = scratch(&[("sweep.toml", &sweep), ("tyre.toml", TYRE)]);
+    let dir = scratch(&[("sweep.toml", &sweep), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let o = run_in(dir.path(), &["equilibria", "sweep.toml", "--out", "eq"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let png = dir.path().join("eq/phase_portrait_0.png");
@@ -204,13 +187,14 @@ phase_portraits = [ {{ steer = 0.02, friction = 0.8, speed = 20.0 }} ]
 /// which was valid. Now the refusal names the key that is wrong.
 #[test]
 fn a_backwards_sweep_range_is_refused_at_its_end() {
+    let sedan = linear_sedan("tyre.toml");
     let text = |range: &str| {
-        format!("name = \"r\"\n{SEDAN}[sweep]\nsteer = {range}\nfriction = 0.8\nspeed = 20.0\n")
+        format!("name = \"r\"\n{sedan}[sweep]\nsteer = {range}\nfriction = 0.8\nspeed = 20.0\n")
     };
     let dir = scratch(&[
         ("back.toml", &text("{ from = 0.04, to = 0.0, step = 0.01 }")),
         ("zero.toml", &text("{ from = 0.0, to = 0.04, step = 0 }")),
-        ("tyre.toml", TYRE),
+        ("tyre.toml", LINEAR_1000_PER_DEG),
     ]);
     let o = run_in(dir.path(), &["equilibria", "back.toml", "--out", "o1"]);
     assert!(!o.status.success());

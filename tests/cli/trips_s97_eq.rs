@@ -9,19 +9,16 @@
 use super::*;
 use std::fs;
 
-/// The tester's sedan with its CG rearward (a = 1.67 m, b = 1.11 m): on
-/// linear tyres of 57 296 N/rad a wheel it oversteers, critical speed
-/// √(−l/K) = 32.150 m/s.
-const REARWARD: &str = "[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.67\nb = 1.11\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n";
-const LINEAR: &str = "model = \"linear\"\ncornering_stiffness = 57296.0\n";
-const SMALL: &str = "[model]\nkinematics = \"small-angle\"\nload_transfer = false\n";
-
-/// A sweep file of `REARWARD` on `tyre.toml` with `sweep` as its table.
+/// A sweep file of the tester's sedan with its CG rearward
+/// ([`rearward_sedan`]) on `tyre.toml` with `sweep` as its table: on linear
+/// tyres of 57 296 N/rad a wheel it oversteers, critical speed √(−l/K) =
+/// 32.150 m/s.
 fn sweep_file(sweep: &str) -> String {
-    format!("name = \"s\"\n{REARWARD}[tyres]\nfront = \"tyre.toml\"\n{SMALL}[sweep]\n{sweep}[pso]\nseed = 1\n")
+    let sedan = rearward_sedan("tyre.toml");
+    format!("name = \"s\"\n{sedan}[sweep]\n{sweep}[pso]\nseed = 1\n")
 }
 
-/// √(−l/K) of `REARWARD` on `LINEAR`: K = (m/l)(b/Cf − a/Cr).
+/// √(−l/K) of [`rearward_sedan`] on [`LINEAR_1000_PER_DEG`]: K = (m/l)(b/Cf − a/Cr).
 fn critical_speed() -> f64 {
     let (m, a, b, c): (f64, f64, f64, f64) = (1530.0, 1.67, 1.11, 2.0 * 57296.0);
     let l = a + b;
@@ -38,7 +35,7 @@ fn critical_speed() -> f64 {
 fn an_unsorted_sweep_list_is_refused_and_sorted_it_reports_the_critical_speed_once() {
     let unsorted =
         sweep_file("steer = 0.0\nfriction = 0.8\nspeed = [80.0, 20.0, 50.0, 35.0, 65.0, 25.0]\n");
-    let dir = scratch(&[("s.toml", &unsorted), ("tyre.toml", LINEAR)]);
+    let dir = scratch(&[("s.toml", &unsorted), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let e = fails_cleanly("equilibria", &dir.path().join("s.toml"), dir.path());
     assert!(
         e.contains("s.toml:18:")
@@ -83,7 +80,7 @@ fn an_unsorted_sweep_list_is_refused_and_sorted_it_reports_the_critical_speed_on
 #[test]
 fn a_repeated_sweep_value_is_refused() {
     let text = sweep_file("steer = [0.0, 0.05, 0.05]\nfriction = 0.8\nspeed = 20.0\n");
-    let dir = scratch(&[("s.toml", &text), ("tyre.toml", LINEAR)]);
+    let dir = scratch(&[("s.toml", &text), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let e = fails_cleanly("equilibria", &dir.path().join("s.toml"), dir.path());
     assert!(
         e.contains("`sweep.steer[2]` = 0.05") && e.contains("given twice"),
@@ -94,8 +91,9 @@ fn a_repeated_sweep_value_is_refused() {
 /// A study with linear tyres at 80 km/h, 1° step for 7.5 s, `stiffness`
 /// and `inverse` as given.
 fn study_file(stiffness: &str, target: &str) -> String {
+    let sedan = linear_sedan("tyre.toml");
     format!(
-        "name = \"st\"\n{VEHICLE}[tyres]\nfront = \"tyre.toml\"\n{SMALL}[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\nstart = 0.5\nrise_time = 0.1\nend = 8.0\n[simulation]\nmethod = \"rk4\"\nstep = 0.002\n[stiffness]\nunit = \"N/deg\"\n{stiffness}[inverse]\ntargets = [{target}]\nreference = {{ front = 500.0, rear = 540.0 }}\n"
+        "name = \"st\"\n{sedan}[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\nstart = 0.5\nrise_time = 0.1\nend = 8.0\n[simulation]\nmethod = \"rk4\"\nstep = 0.002\n[stiffness]\nunit = \"N/deg\"\n{stiffness}[inverse]\ntargets = [{target}]\nreference = {{ front = 500.0, rear = 540.0 }}\n"
     )
 }
 
@@ -108,7 +106,7 @@ fn an_unsorted_stiffness_list_is_refused_at_its_value() {
         "front = [700.0, 200.0, 500.0, 300.0, 600.0, 400.0]\nrear = { from = 220.0, to = 720.0, step = 100.0 }\n",
         "{ metric = \"yaw_rate_gain\", value = 4.0, tolerance = 0.05 }",
     );
-    let dir = scratch(&[("st.toml", &text), ("tyre.toml", LINEAR)]);
+    let dir = scratch(&[("st.toml", &text), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let e = fails_cleanly("study", &dir.path().join("st.toml"), dir.path());
     assert!(
         e.contains("`stiffness.front[1]` = 200") && e.contains("below the value before it (700)"),
@@ -138,7 +136,7 @@ fn a_sideslip_still_moving_is_not_called_steady_and_a_target_in_degrees_is_named
         "front = { from = 200.0, to = 700.0, step = 100.0 }\nrear = { from = 220.0, to = 720.0, step = 100.0 }\n",
         "{ metric = \"beta_steady\", value = -0.5, tolerance = 0.01 }",
     );
-    let dir = scratch(&[("st.toml", &text), ("tyre.toml", LINEAR)]);
+    let dir = scratch(&[("st.toml", &text), ("tyre.toml", LINEAR_1000_PER_DEG)]);
     let o = run_in(dir.path(), &["study", "st.toml", "--out", "o"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let csv = fs::read_to_string(dir.path().join("o/study.csv")).unwrap();
@@ -197,7 +195,7 @@ fn a_hopf_point_in_a_folds_interval_is_found() {
     let soft = "model = \"magic-simple\"\nb = 8.0\nc = 1.3\nd = 1.0\n";
     let ms = "model = \"magic-simple\"\nb = 10.0\nc = 1.3\nd = 1.0\n";
     let file = |steer: &str| {
-        format!("name = \"soft\"\n{VEHICLE}[tyres]\nfront = \"ms.toml\"\nrear = \"soft.toml\"\n{SMALL}[sweep]\nsteer = {steer}\nfriction = 0.8\nspeed = {{ values = [70.0], unit = \"km/h\" }}\n[pso]\nseed = 1\n")
+        format!("name = \"soft\"\n{VEHICLE}[tyres]\nfront = \"ms.toml\"\nrear = \"soft.toml\"\n{SMALL_ANGLE}[sweep]\nsteer = {steer}\nfriction = 0.8\nspeed = {{ values = [70.0], unit = \"km/h\" }}\n[pso]\nseed = 1\n")
     };
     let dir = scratch(&[
         (
@@ -246,7 +244,7 @@ fn a_swept_range_is_written_as_its_decimals() {
 fn portrait_sweep(report: &str) -> String {
     let ms = root().join("tyres/magic_simple.toml");
     format!(
-        "name = \"p\"\n{VEHICLE}[tyres]\nfront = \"{}\"\n{SMALL}[sweep]\nsteer = {{ from = 0.0, to = 0.2, step = 0.02 }}\nfriction = 0.8\nspeed = {{ values = [70.0], unit = \"km/h\" }}\n[pso]\nseed = 1\n{report}",
+        "name = \"p\"\n{VEHICLE}[tyres]\nfront = \"{}\"\n{SMALL_ANGLE}[sweep]\nsteer = {{ from = 0.0, to = 0.2, step = 0.02 }}\nfriction = 0.8\nspeed = {{ values = [70.0], unit = \"km/h\" }}\n[pso]\nseed = 1\n{report}",
         ms.display()
     )
 }

@@ -121,3 +121,52 @@ pub(super) fn steady_ay(ay: f64, model: &VehicleModel) -> Result<(), ParamError>
         false => Ok(()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::error::{InputError, ParamReason};
+    use std::path::Path;
+
+    /// The bundled PAC89 step on a road banked 0.05 rad, asked for 12 m/s²
+    /// (the tyres' 12 + g·sin θ is past their limit, short of rollover).
+    fn banked_step_past_the_limit() -> InputError {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(root.join("scenarios/step_gbt6323_pac89.toml"))
+            .unwrap()
+            .replace("\"../tyres/", &format!("\"{}/tyres/", root.display()))
+            .replace(
+                "load_transfer = true",
+                "load_transfer = true\neffects = { road_bank = 0.05 }",
+            )
+            .replace(
+                "lateral_acceleration = 2.0 ",
+                "lateral_acceleration = 12.0 ",
+            );
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("banked.toml");
+        std::fs::write(&path, text).unwrap();
+        match crate::io::load_scenario(&path) {
+            Ok(_) => panic!("a step past the limit was read"),
+            Err(e) => e,
+        }
+    }
+
+    #[test]
+    fn a_banked_steps_refusal_keeps_the_tyres_ay_whole_and_says_it_to_six_digits() {
+        let e = banked_step_past_the_limit();
+        let InputError::Value { source, .. } = &e else {
+            panic!("{e}")
+        };
+        let ParamReason::NoSteadyState(m) = &source.reason else {
+            panic!("{e}")
+        };
+        // The data: the change asked plus the bank's pull, every digit.
+        let ay = 12.0 + 9.80665 * 0.05f64.sin();
+        assert!((m.ay - ay).abs() < 1e-12, "{} vs {ay}", m.ay);
+        assert_ne!(m.ay, 12.4901, "the field rounded");
+        // The sentence: six significant digits.
+        let said = e.to_string();
+        assert!(said.contains("with ay = 12.4901 m/s²:"), "{said}");
+        assert!(m.to_string().contains("with ay = 12.4901 m/s²:"), "{m}");
+    }
+}

@@ -100,6 +100,14 @@ fn derivative<T: Scalar>(t: &[f64], y: &[T]) -> Vec<T> {
 const SIDESLIP_MIN_SPEED: f64 = 1.0;
 
 impl<T: Scalar> Sensors<T> {
+    /// Whether the body's roll enters the accelerometer: not where the
+    /// roll gradient is +0 in plain numbers, whose `ay·cos φ + g·sin φ` is
+    /// `ay` to the bit (a −0 gradient or a dual one, whose derivative
+    /// parts would move, takes the general path).
+    fn rolls(&self) -> bool {
+        !(T::PLAIN && self.roll_gradient.re().to_bits() == 0)
+    }
+
     /// What a sideslip measured at the inertial unit adds to the centre of
     /// gravity's at yaw rate `r` and speed `u`: `x·r/u`.
     pub fn sideslip_offset(&self, r: T, u: f64) -> T {
@@ -131,12 +139,22 @@ impl<T: Scalar> Sensors<T> {
         beta: &[T],
     ) -> [Vec<T>; 3] {
         let yaw_acc = derivative(t, yaw_rate);
+        let flat = !self.rolls();
         let mut ay_seen: Vec<T> = ay
             .iter()
             .zip(&yaw_acc)
             .map(|(&ay, &ra)| {
-                let phi = self.roll_gradient * ay;
-                ay * phi.cos() + phi.sin() * G + self.accelerometer_x * ra
+                // φ = +0·ay is a zero of ay's sign: `ay·cos φ + g·sin φ` is
+                // a finite ay to the bit (signed zeros too), without a sine
+                // and a cosine a sample (a profiled twentieth of a sedan
+                // log's diagnosis); an infinite one gives NaN, as it did.
+                let tilted = if flat && ay.re().is_finite() {
+                    ay
+                } else {
+                    let phi = self.roll_gradient * ay;
+                    ay * phi.cos() + phi.sin() * G
+                };
+                tilted + self.accelerometer_x * ra
             })
             .collect();
         if self.reads_ax() {
@@ -150,19 +168,20 @@ impl<T: Scalar> Sensors<T> {
             *a += self.ay_bias;
         }
         let yaw_seen: Vec<T> = yaw_rate.iter().map(|&r| r + self.yaw_rate_bias).collect();
-        let late = |y: &[T]| -> Vec<T> {
+        // Without a delay a channel is handed on as it is, not copied.
+        let late = |y: Vec<T>| -> Vec<T> {
             if off(self.delay) {
-                y.to_vec()
+                y
             } else {
                 let mut nodes = Interpolator::new(t);
                 t.iter()
-                    .map(|&s| nodes.at(y, T::from(s) - self.delay))
+                    .map(|&s| nodes.at(&y, T::from(s) - self.delay))
                     .collect()
             }
         };
         let at_cg = self.beta_at.map_or(off(self.accelerometer_x), |x| x == 0.0);
         let beta_seen = if off(self.beta_bias) && at_cg {
-            late(beta)
+            late(beta.to_vec())
         } else {
             let b: Vec<T> = beta
                 .iter()
@@ -170,9 +189,9 @@ impl<T: Scalar> Sensors<T> {
                 .zip(speed)
                 .map(|((&b, &r), &u)| b + self.sideslip_offset(r, u) + self.beta_bias)
                 .collect();
-            late(&b)
+            late(b)
         };
-        [late(&yaw_seen), late(&ay_seen), beta_seen]
+        [late(yaw_seen), late(ay_seen), beta_seen]
     }
 }
 
@@ -249,6 +268,40 @@ mod tests {
         // true acceleration.
         let j = 100;
         assert!(ay[j] > 0.0 && rolled[1][j] > ay[j]);
+    }
+
+    // A zero roll gradient skips the tilt's sine and cosine
+    // (`Sensors::rolls`): the record must be the tilt formula's to the bit,
+    // signed zeros and a diverged (infinite, NaN) ay included.
+    #[test]
+    fn a_zero_roll_gradient_reads_the_tilt_formula_to_the_bit() {
+        let t: Vec<f64> = (0..8).map(|i| i as f64 * 0.01).collect();
+        let u = vec![20.0; t.len()];
+        let r = vec![0.1, -0.2, 0.0, 0.3, 0.05, -0.1, 0.2, 0.0];
+        let ay = vec![
+            4.0,
+            -0.0,
+            0.0,
+            -7.5e-300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            1e-3,
+        ];
+        for x in [0.0, 0.7] {
+            let s = Sensors {
+                accelerometer_x: x,
+                ..Default::default()
+            };
+            let [_, seen, _] = s.seen(&t, &u, &[], &r, &ay, &r);
+            let ra = derivative(&t, &r);
+            for i in 0..t.len() {
+                let phi = 0.0 * ay[i];
+                // The default bias, +0, added after as `seen` adds it.
+                let want = ay[i] * phi.cos() + phi.sin() * G + x * ra[i] + 0.0;
+                assert_eq!(seen[i].to_bits(), want.to_bits(), "{i}: x {x}");
+            }
+        }
     }
 
     #[test]

@@ -356,7 +356,6 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
                 .flat_map(|f| later_fit_notes(r, f)),
         )
         .chain(sigma_notes(&r.fit, &r.level_names()))
-        .chain(super::offset::offset_note(&r.fit, &r.conditions))
         .chain(super::condition_values::own_values_note(r).map(Note::said))
         .chain(super::local_scope::local_note(r).map(Note::said))
         .chain(r.lifted.map(|l| Note::said(l.line())))

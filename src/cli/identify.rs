@@ -2,7 +2,7 @@
 
 use anyhow::Result;
 use clap::Args;
-use handling::jobs::identify::{self, IdentifyModel, Options, Polish, StartArg};
+use handling::jobs::identify::{self, FitOption, IdentifyModel, Options, Polish, StartArg};
 use std::path::PathBuf;
 
 /// `handling identify`'s arguments.
@@ -15,9 +15,9 @@ pub struct IdentifyArgs {
     /// .tir).
     #[arg(long, value_parser = super::named::<IdentifyModel>(IdentifyModel::names))]
     model: IdentifyModel,
-    /// Random seed of the swarm (a whole number of 0 or more).
-    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number)]
-    seed: u64,
+    /// Random seed of the swarm (a whole number of 0 or more; default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::whole_number)]
+    seed: Option<u64>,
     /// Tyre file to write (default: out/<data>_<model>.toml).
     #[arg(long)]
     out: Option<PathBuf>,
@@ -34,31 +34,34 @@ pub struct IdentifyArgs {
     /// an error when the file has no camber column or no level near it).
     #[arg(long, allow_hyphen_values = true)]
     camber: Option<f64>,
-    /// Local polish: lm, gn (Zhang & Li's (2017) modified Gauss-Newton) or none.
-    #[arg(long, default_value = "lm", value_parser = super::named::<Polish>(|| Polish::ALL.map(Polish::as_str).to_vec()))]
-    local: Polish,
+    /// Local polish: lm (the default), gn (Zhang & Li's (2017) modified
+    /// Gauss-Newton) or none.
+    #[arg(long, value_parser = super::named::<Polish>(|| Polish::ALL.map(Polish::as_str).to_vec()))]
+    local: Option<Polish>,
     /// Slip-angle bin for thinning, degrees (0: no thinning): the
     /// samples of one condition in one bin are averaged; a lone sample is
     /// kept as it is.
     #[arg(long, default_value_t = 0.25, allow_hyphen_values = true)]
     bin_deg: f64,
-    /// Slip-ratio bin for thinning longitudinal data (0: no thinning).
-    #[arg(long, default_value_t = 0.0025, allow_hyphen_values = true)]
-    bin_kappa: f64,
+    /// Slip-ratio bin for thinning longitudinal data (0: no thinning;
+    /// default 0.0025).
+    #[arg(long, allow_hyphen_values = true)]
+    bin_kappa: Option<f64>,
     /// mf61/mf62: where the parameters start — `template` (the template's values), `data` (estimates from
     /// the data, then MINPACK's LM) or `paper` (all 1, Wei et al.'s LM
-    /// with μ = 0.1, β = 5).
-    #[arg(long, default_value = "data", value_parser = super::named::<StartArg>(|| StartArg::ALL.map(StartArg::as_str).to_vec()))]
-    start: StartArg,
+    /// with μ = 0.1, β = 5); default `data`.
+    #[arg(long, value_parser = super::named::<StartArg>(|| StartArg::ALL.map(StartArg::as_str).to_vec()))]
+    start: Option<StartArg>,
     /// mf61/mf62: a .tir whose constants (FNOMIN, UNLOADED_RADIUS,
     /// NOMPRES, side) and unfitted coefficients are kept, and whose
     /// layout the written file follows.
     #[arg(long)]
     template: Option<PathBuf>,
     /// mf61/mf62: Levenberg–Marquardt iterations per step at most
-    /// (`--start paper` runs at least 500, the paper's scheme).
-    #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
-    max_iterations: usize,
+    /// (`--start paper` runs at least 500, the paper's scheme; default
+    /// 150).
+    #[arg(long)]
+    max_iterations: Option<usize>,
     /// Hold a parameter at a value, NAME=VALUE (repeatable): for mf61/mf62
     /// a .tir coefficient in the file's SI units in every stage, e.g.
     /// --hold PKY4=2 (without it, a parameter the data do not determine is
@@ -68,6 +71,26 @@ pub struct IdentifyArgs {
     /// (PAC89's two-stage identification is then not run).
     #[arg(long, value_parser = hold_value)]
     hold: Vec<(String, f64)>,
+}
+
+/// The options given that only some fits read, in the order of
+/// `identify --help` (`identify/taken.rs` says which fit reads which).
+fn given(a: &IdentifyArgs) -> Vec<FitOption> {
+    [
+        (FitOption::Seed, a.seed.is_some()),
+        (FitOption::Load, a.load.is_some()),
+        (FitOption::Pressure, a.pressure.is_some()),
+        (FitOption::Camber, a.camber.is_some()),
+        (FitOption::Local, a.local.is_some()),
+        (FitOption::BinKappa, a.bin_kappa.is_some()),
+        (FitOption::Start, a.start.is_some()),
+        (FitOption::Template, a.template.is_some()),
+        (FitOption::MaxIterations, a.max_iterations.is_some()),
+    ]
+    .into_iter()
+    .filter(|(_, given)| *given)
+    .map(|(o, _)| o)
+    .collect()
 }
 
 /// `NAME=VALUE` of `--hold`.
@@ -81,20 +104,23 @@ fn hold_value(s: &str) -> Result<(String, f64), String> {
 /// `handling identify`.
 pub fn identify(a: IdentifyArgs) -> Result<()> {
     let hold = a.hold.clone();
+    identify::check_given(a.model, &given(&a))?;
     let r = identify::run(&Options {
         data: a.data,
         model: a.model,
-        seed: a.seed,
+        seed: a.seed.unwrap_or(1),
         out: a.out,
         load: a.load,
         pressure: a.pressure,
         camber: a.camber,
-        local: a.local,
+        local: a.local.unwrap_or(Polish::Lm),
         alpha_bin_deg: a.bin_deg,
-        kappa_bin: a.bin_kappa,
-        start: a.start,
+        kappa_bin: a.bin_kappa.unwrap_or(0.0025),
+        start: a.start.unwrap_or(StartArg::Data),
         template: a.template,
-        max_iterations: a.max_iterations,
+        max_iterations: a
+            .max_iterations
+            .unwrap_or(handling::identify::mf_staged::LM_ITERATIONS),
         hold: a.hold,
     })
     .map_err(|e| named_hold(e, &hold))?;

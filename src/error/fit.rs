@@ -221,6 +221,24 @@ pub enum FitError {
         /// The smallest |α| among them, degrees.
         smallest_deg: f64,
     },
+    /// A swarm fit's tyre the tyre readers would refuse: a fitted value
+    /// said as the fit's (no key the user wrote, no hint at its unit), the
+    /// reader's limit and the likely cause.
+    #[error("{}: the fitted tyre is not written, as the tyre readers (tyre-eval, simulate) would refuse it: the fit took `{key}` to {}, which a tyre file may not hold ({limit}){}; {cause}", data.display(), super::Num(*value), if *holding { ", with the values given with --hold, which may have driven it there" } else { "" })]
+    FittedRefused {
+        /// The rig data.
+        data: PathBuf,
+        /// The fitted parameter.
+        key: String,
+        /// Its fitted value.
+        value: f64,
+        /// What the reader asks of it (`must lie in (0, 1]`).
+        limit: String,
+        /// Whether values were given with `--hold`.
+        holding: bool,
+        /// The likely cause, in words.
+        cause: String,
+    },
     /// A fit to rig data that failed: the data and, where several channels
     /// are fitted, the channel.
     #[error("{}: {}{source}", data.display(), prefix(channel))]

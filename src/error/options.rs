@@ -279,6 +279,16 @@ pub enum OptionsError {
         /// The model.
         model: String,
     },
+    /// An option the model's fit does not read (`identify/taken.rs`).
+    #[error("--{option} is not taken by --model {model}: {why}; drop --{option}")]
+    OptionNotTaken {
+        /// The option given, without its dashes.
+        option: &'static str,
+        /// The model.
+        model: String,
+        /// Why the fit does not read it.
+        why: &'static str,
+    },
     /// `--hold` of a name that is none of the model's fitted parameters.
     #[error(
         "--hold `{given}`: not a parameter of the {model} model{}: its parameters are {}",

@@ -33,6 +33,7 @@ pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
 pub mod pure;
+mod reach;
 mod spare;
 mod undetermined;
 pub(crate) use undetermined::hold_undetermined;
@@ -519,8 +520,13 @@ fn within_box(
     if beyond.is_empty() {
         return l;
     }
-    // A tyre the model refuses is polished within the box as it is.
-    let asked = if problem.tyre(&l.params).validate().is_ok() {
+    // A tyre the model or the tyre file refuses is polished within the
+    // box as it is (a GIM contact length of 1.17 m, which the aligning
+    // moment of a file with its `fy` in lbf asked for, lost the fit); so is
+    // a fit to a sweep short of the peak (`reach.rs`).
+    let t = problem.tyre(&l.params);
+    let valid = t.validate().and_then(|()| t.check_sizes()).is_ok();
+    let asked = if valid && !reach::short_of_peak(problem) {
         asked_past(problem, &l.params, &beyond, bounds)
     } else {
         Vec::new()

@@ -225,13 +225,14 @@ impl FittedRanges {
         parts.join(", ")
     }
 
-    /// Ok when every range is finite with its upper end above its lower.
+    /// Ok when every range is finite with its upper end not below its
+    /// lower (`[4000, 4000]`: data at one load).
     fn check(&self) -> Result<(), ParamError> {
         for (name, _, r) in self.named() {
             let Some([lo, hi]) = r else { continue };
             ParamError::finite(&format!("{name}[0]"), lo)?;
             ParamError::finite(&format!("{name}[1]"), hi)?;
-            if hi <= lo {
+            if hi < lo {
                 let reason = ParamReason::RangeReversed { lo };
                 return Err(ParamError::new(&format!("{name}[1]"), hi, reason));
             }

@@ -41,6 +41,12 @@ pub struct LinearWindow {
     pub points_left_out: usize,
     /// The pneumatic trail fitted in the window, m (`None`: no `mz`, held at 0).
     pub pneumatic_trail: Option<f64>,
+    /// The σ of the aligning moment `t_p·Fy` against the measured `mz`
+    /// over the window's points with one, % (`None`: no `mz`), as the
+    /// figure's aligning panel gives it.
+    pub trail_sigma_percent: Option<f64>,
+    /// The window's points with a measured `mz`.
+    pub trail_points: usize,
     /// The loads of the conditions left with fewer than two points in the
     /// window, so not fitted, N.
     pub loads_left_out: Vec<f64>,
@@ -101,7 +107,10 @@ impl LinearWindow {
     pub(crate) fn lines(&self, mark: &str) -> Vec<String> {
         let trail = match self.pneumatic_trail {
             Some(t) => format!(
-                "pneumatic_trail = {t:.5} m fitted to mz on the same points (the ratio of the slopes of mz and fy on alpha)"
+                "pneumatic_trail = {t:.5} m fitted to mz on the same points (the ratio of the slopes of mz and fy on alpha): aligning moment σ {} % over {}{}",
+                crate::format::fixed(self.trail_sigma_percent.unwrap_or(f64::NAN), 3),
+                crate::format::plural(self.trail_points, "point", "points"),
+                self.trail_warning()
             ),
             None => "pneumatic_trail held at 0 (no mz data)".into(),
         };
@@ -170,6 +179,8 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
             points_fitted: total,
             points_left_out: 0,
             pneumatic_trail: None,
+            trail_sigma_percent: None,
+            trail_points: 0,
             loads_left_out: Vec::new(),
             beyond,
         };
@@ -188,6 +199,8 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
         points_fitted: fitted,
         points_left_out: total - fitted,
         pneumatic_trail: None,
+        trail_sigma_percent: None,
+        trail_points: 0,
         loads_left_out: left.iter().map(|c| c.fz).collect(),
         beyond,
     };
@@ -296,6 +309,37 @@ pub(crate) fn trail(conditions: &[Condition]) -> Option<f64> {
         }
     }
     (afy != 0.0 && amz.is_finite()).then(|| amz / afy)
+}
+
+impl LinearWindow {
+    /// Sets the trail fitted to `conditions` on `tyre` (0 without `mz`),
+    /// with the σ of its aligning moment there and the points it has.
+    pub(crate) fn fit_trail(&mut self, tyre: &mut Tyre, conditions: &[Condition]) {
+        use crate::identify::{sigma_of, Channel};
+        self.pneumatic_trail = trail(conditions);
+        set_trail(tyre, self.pneumatic_trail.unwrap_or(0.0));
+        let points: Vec<_> = conditions
+            .iter()
+            .flat_map(|c| c.points.iter().cloned())
+            .filter(|p| p.mz().is_finite())
+            .collect();
+        self.trail_points = points.len();
+        self.trail_sigma_percent = self
+            .pneumatic_trail
+            .map(|_| sigma_of(Channel::AligningMoment, tyre, &points).0);
+    }
+
+    /// The warning a trail whose σ passes the swarm fits' bound adds, as
+    /// theirs say it (`notes.rs`).
+    fn trail_warning(&self) -> String {
+        let large = super::notes::LARGE_SIGMA_PERCENT;
+        match self.trail_sigma_percent {
+            Some(s) if s > large => format!(
+                "; warning: a σ above {large} % misses by more than a fifth of the measured values: Mz = t_p·Fy does not follow these data; do not rely on its aligning moment"
+            ),
+            _ => String::new(),
+        }
+    }
 }
 
 /// Sets the trail of a linear `tyre` to `t`.

@@ -25,6 +25,7 @@ mod nompres;
 pub use linear_window::LinearWindow;
 mod notes;
 pub use notes::Note;
+mod offset;
 mod outputs;
 mod pure_rows;
 mod ranges;
@@ -40,10 +41,12 @@ mod holds;
 pub use holds::Held;
 mod staged;
 mod standstill;
+mod taken;
 mod two_stage;
 mod unseen;
 mod unused_columns;
 mod written_checks;
+pub use taken::{check_given, FitOption};
 pub use two_stage::{TwoStageReport, Written};
 pub use unused_columns::Measured;
 mod fit_key;
@@ -143,22 +146,17 @@ impl Options {
     /// level (the staged Magic Formula): silently fitting all samples when
     /// one level was asked for would write a tyre of other conditions.
     fn validate_levels(&self) -> Result<(), Error> {
-        if self.model.swarm_model().is_some() {
-            return Ok(());
-        }
         let given = [
-            ("load", self.load),
-            ("pressure", self.pressure),
-            ("camber", self.camber),
+            (FitOption::Load, self.load),
+            (FitOption::Pressure, self.pressure),
+            (FitOption::Camber, self.camber),
         ];
-        match given.iter().find(|(_, v)| v.is_some()) {
-            Some((option, _)) => Err(OptionsError::LevelSelectionNotTaken {
-                option,
-                model: self.model.to_string(),
-            }
-            .into()),
-            None => Ok(()),
-        }
+        let given: Vec<FitOption> = given
+            .iter()
+            .filter(|(_, v)| v.is_some())
+            .map(|(o, _)| *o)
+            .collect();
+        taken::check_given(self.model, &given)
     }
 
     /// Checks the `--hold` names: coefficients of a `.tir` for the staged

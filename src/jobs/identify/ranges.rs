@@ -3,8 +3,10 @@
 //! validity ranges (`FZMIN`…`PRESMAX`, so that `tyre-eval` saturates past
 //! the data instead of extrapolating silently) with a `$` comment, and a
 //! `#` comment in a TOML tyre. A variable the rows hold at one value has
-//! no range written (a slip-ratio range of 0 to 0 would cut every
-//! longitudinal force off), and the comment says so.
+//! no `.tir` range written (a slip-ratio range of 0 to 0 would cut every
+//! longitudinal force off), and the comment says so; a TOML tyre's
+//! `[fitted_ranges]` states a load, camber or pressure at one value as
+//! `[v, v]`, which `tyre-eval` counts points past.
 
 use crate::format::readable;
 use crate::identify::data::{Condition, RigData, Sweep};
@@ -360,10 +362,14 @@ pub(crate) fn widened_to_reached_levels(mut spans: Vec<Span>, levels: &[Levels])
 }
 
 /// The `[fitted_ranges]` of `spans`: each that is not one value (a
-/// slip-ratio range of 0 to 0 would count every longitudinal point).
+/// slip-ratio range of 0 to 0 would count every longitudinal point), and
+/// a load, camber or pressure the data hold at one value as `[v, v]`: a
+/// fit at one load is no fit at another (`--model linear --load 4000`
+/// stated no load, and `tyre-eval` at 2000 N said nothing).
 pub(crate) fn fitted_ranges(spans: &[Span]) -> FittedRanges {
     let mut r = FittedRanges::default();
-    for s in spans.iter().filter(|s| s.lo < s.hi) {
+    let level = |s: &Span| ["fz", "camber", "pressure"].contains(&s.name);
+    for s in spans.iter().filter(|s| s.lo < s.hi || level(s)) {
         let range = Some([s.lo, s.hi]);
         match s.name {
             "fz" => r.fz = range,

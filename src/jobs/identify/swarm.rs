@@ -331,8 +331,7 @@ fn fitted_conditions(
 /// reversal of its curve, the notes and the tyre file's text.
 fn finish(o: &Options, r: &mut SwarmReport) -> Result<(), Error> {
     if let Some(w) = r.linear_window.as_mut() {
-        w.pneumatic_trail = linear_window::trail(&r.conditions);
-        linear_window::set_trail(&mut r.tyre, w.pneumatic_trail.unwrap_or(0.0));
+        w.fit_trail(&mut r.tyre, &r.conditions);
     }
     let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
         .into_iter()
@@ -354,6 +353,7 @@ fn finish(o: &Options, r: &mut SwarmReport) -> Result<(), Error> {
     };
     r.notes = notes::notes(r)
         .into_iter()
+        .chain(super::offset::offset_note(&r.fit, &r.conditions))
         .chain(r.warning_notes())
         .collect();
     r.file = written::tyre_file_text(r, &o.output_path())?;

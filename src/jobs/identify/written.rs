@@ -7,7 +7,7 @@
 use super::holds::held_file_lines;
 use super::ranges;
 use super::SwarmReport;
-use crate::error::{Error, FitError, OutputError, ParamError};
+use crate::error::{range, Error, FitError, OutputError, ParamError, ParamReason};
 use crate::io::{fitted_ranges, TomlSource};
 use crate::tyre::Tyre;
 use std::path::Path;
@@ -51,7 +51,35 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
     let text = format!("{header}# {ranges}\n{held}{notes}{tyre}{table}");
     match read_back(path, &text)? {
         Ok(()) => Ok(text),
-        Err(e) => Err(FitError::InData {
+        Err(e) => Err(refused(r, e)),
+    }
+}
+
+/// The error of a fitted tyre the reader refuses with `e`: the value said
+/// as the fit's, the reader's limit without the words it gives a user's
+/// key (a unit hint: "is the value in millimetres?" of a contact length
+/// no user wrote), and the likely cause: the rig's forces far too small
+/// for their loads where they are (`force_scale.rs`), said first.
+fn refused(r: &SwarmReport, e: ParamError) -> Error {
+    let limit = match e.reason {
+        ParamReason::OutOfRange { lo, hi, .. } => format!("it must {}", range(lo, hi)),
+        ref other => format!("it {other}"),
+    };
+    let cause = match r.small_forces.first() {
+        Some(w) => format!("the likely cause: {w}"),
+        None => "check that the data are in the units FORMATS.md gives (forces in N, moments in N·m, angles in rad), or hold the parameter at a value of your own with --hold NAME=VALUE".into(),
+    };
+    match e.value.number() {
+        Some(value) => FitError::FittedRefused {
+            data: r.options.data.clone(),
+            key: e.key.clone(),
+            value,
+            limit,
+            holding: !r.options.hold.is_empty(),
+            cause,
+        }
+        .into(),
+        None => FitError::InData {
             data: r.options.data.clone(),
             channel: Some(if r.options.hold.is_empty() {
                 REFUSED
@@ -60,7 +88,7 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
             }),
             source: Box::new(Error::Param(e)),
         }
-        .into()),
+        .into(),
     }
 }
 

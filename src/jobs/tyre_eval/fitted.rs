@@ -51,11 +51,14 @@ pub fn past_end(key: &str, [lo, hi]: [f64; 2], v: f64, unit: &str) -> String {
     )
 }
 
-/// Whether the range `[lo, hi]` of `key` is one level of the data.
+/// Whether the range `[lo, hi]` of `key` is one level of the data: any
+/// range of one value (`identify` at one load writes `fz = [4000, 4000]`,
+/// whose span no distance is a share of).
 pub fn one_level(key: &str, [lo, hi]: [f64; 2]) -> bool {
-    ONE_LEVEL
-        .iter()
-        .any(|(k, width)| *k == key && hi - lo < *width)
+    hi <= lo
+        || ONE_LEVEL
+            .iter()
+            .any(|(k, width)| *k == key && hi - lo < *width)
 }
 
 /// One side of one fitted range some points lie past.

@@ -61,6 +61,14 @@ fn decimal_comma(cell: &str) -> Option<String> {
     (digits(unsigned) && digits(fraction) && !thousands).then(|| format!("{whole}.{fraction}"))
 }
 
+/// The hint after a `.tir` value that is not a number where it reads as
+/// one written with a decimal comma, as the CSV and TOML readers give it.
+pub(super) fn tir_comma(text: &str) -> String {
+    decimal_comma(text).map_or(String::new(), |point| {
+        format!(": a decimal comma? write {point} (a .tir number takes a decimal point)")
+    })
+}
+
 impl CellProblem {
     fn describe(self, cell: &str) -> String {
         match self {

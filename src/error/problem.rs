@@ -127,7 +127,7 @@ pub enum InputProblem {
     },
     /// A `.tir` value that should be a number and is not (a decimal comma
     /// said as the CSV and TOML readers say it).
-    #[error("`{key}`: `{text}` is not a number{}", super::input::tir_comma(text))]
+    #[error("`{key}`: `{text}` is not a number{}", super::decimal::tir_comma(text))]
     TirNotANumber {
         /// The key.
         key: String,

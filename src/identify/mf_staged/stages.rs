@@ -262,7 +262,8 @@ fn continued(
         return r;
     }
     let more = bounded(problem, &r.params, bounds, cap - run.max_iterations);
-    if !(more.cost <= r.cost) {
+    // A continuation that ends worse, or at no number, is dropped.
+    if more.cost.is_nan() || more.cost > r.cost {
         return r;
     }
     LocalResult {

@@ -2,6 +2,7 @@
 //! located in the file (path, 1-based line and column) where a place is
 //! known.
 
+use super::decimal::decimal_comma;
 use super::param::ParamError;
 use super::problem::InputProblem;
 use std::path::PathBuf;
@@ -47,18 +48,6 @@ pub enum CellProblem {
         /// The first such byte.
         byte: u8,
     },
-}
-
-/// `cell` with its one comma made a point, where that reads as a number
-/// and the comma is a decimal one (digits on both sides: `0,05`, `-1,5`;
-/// not a thousands separator's `1,000`, which a decimal point would make
-/// one, not a thousand).
-fn decimal_comma(cell: &str) -> Option<String> {
-    let (whole, fraction) = cell.split_once(',')?;
-    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    let unsigned = whole.strip_prefix(['-', '+']).unwrap_or(whole);
-    let thousands = fraction.len() == 3 && unsigned != "0";
-    (digits(unsigned) && digits(fraction) && !thousands).then(|| format!("{whole}.{fraction}"))
 }
 
 impl CellProblem {

@@ -12,6 +12,7 @@ mod bank_reversed;
 mod beta_sign;
 mod campaign_file;
 mod carried;
+mod decimal;
 mod duplicate;
 mod effect_limit;
 mod file_kind;

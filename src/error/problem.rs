@@ -125,8 +125,9 @@ pub enum InputProblem {
         /// The value read.
         value: f64,
     },
-    /// A `.tir` value that should be a number and is not.
-    #[error("`{key}`: `{text}` is not a number")]
+    /// A `.tir` value that should be a number and is not (a decimal comma
+    /// said as the CSV and TOML readers say it).
+    #[error("`{key}`: `{text}` is not a number{}", super::decimal::tir_comma(text))]
     TirNotANumber {
         /// The key.
         key: String,

@@ -37,7 +37,7 @@
 
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
-use super::uncertainty::{uncertainty, Uncertainty};
+use super::uncertainty::{uncertainty, Uncertainty, ABSURD_EFFECT_PERCENT};
 use crate::format::{exact, readable};
 use crate::identify::spare::{
     candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
@@ -119,7 +119,19 @@ pub enum HoldReason {
         /// mean nothing (PKY4 at 0.1001 of 0.1..5 on the Hoosier file was
         /// said to move the fit by 723 %).
         at_bound: Option<(f64, (f64, f64))>,
+        /// The stage's σ (%) with it held and the rest refitted, and
+        /// fitted free just before (`None`: not measured).
+        sigma_held_free: Option<[f64; 2]>,
     },
+}
+
+/// `sigma` (%) to the digits that tell it from `other`: three decimals,
+/// more where the two agree to them (up to six).
+fn sigma_digits(sigma: f64, other: f64) -> String {
+    let decimals = (3..6)
+        .find(|&d| format!("{sigma:.d$}") != format!("{other:.d$}"))
+        .unwrap_or(6);
+    format!("{sigma:.decimals$}")
 }
 
 /// The bound of `(lo, hi)` that `v` stands at, within 1e-3 of the box's
@@ -143,10 +155,16 @@ impl HoldReason {
                 stated,
                 held_at,
                 standard_errors_away,
+                sigma_held_free,
                 ..
             } => format!(
-                "{self}{}",
-                lean_clause(name, *stated, *held_at, *standard_errors_away)
+                "{self}{}{}",
+                lean_clause(name, *stated, *held_at, *standard_errors_away),
+                sigma_held_free.map_or(String::new(), |[held, free]| format!(
+                    "; σ {} % held against {} % free",
+                    sigma_digits(held, free),
+                    sigma_digits(free, held)
+                ))
             ),
             _ => self.to_string(),
         }
@@ -252,11 +270,6 @@ fn lacking_levels(need: &[u8; 3], have: &[usize; 3]) -> String {
         .collect();
     why.join(", ")
 }
-
-/// The effect of one standard error, % of the channel's RMS, past which
-/// its digits say nothing (PKX3's "0.23756 ± 27256 … 196581.1 %" on
-/// combined-slip data): the parameter is said not determined at all.
-const ABSURD_EFFECT_PERCENT: f64 = 1000.0;
 
 /// Whether the standard error of a parameter, whose effect on the fit is
 /// `effect_percent`, is beyond any meaning: past
@@ -462,17 +475,29 @@ pub(super) fn hold_undetermined(
             }
             continue;
         };
-        let name = fit.problem.names[tried.k];
-        let why = not_identifiable(fit, &u, tried.k, stated(name), tried.value);
-        held.push((name, tried.value, why));
+        let (name, value) = (fit.problem.names[tried.k], tried.value);
+        let mut why = not_identifiable(fit, &u, tried.k, stated(name), value);
+        let free = fit.problem.sigma_percent(&fit.p);
         keep(fit, tried, refit, evaluations);
+        if let HoldReason::NotIdentifiable {
+            sigma_held_free, ..
+        } = &mut why
+        {
+            *sigma_held_free = Some([fit.problem.sigma_percent(&fit.p), free]);
+        }
+        held.push((name, value, why));
     }
     held
 }
 
 /// The stage's `problem` at `p` with its `k`-th parameter held at
 /// `value`: the tyre with it set, and the rest free.
-fn held_out<'a>(problem: &StageProblem<'a>, p: &[f64], k: usize, value: f64) -> StageProblem<'a> {
+pub(super) fn held_out<'a>(
+    problem: &StageProblem<'a>,
+    p: &[f64],
+    k: usize,
+    value: f64,
+) -> StageProblem<'a> {
     let mut base = problem.tyre(p);
     base.coefficients.set(problem.names[k], value);
     let mut names = problem.names.clone();
@@ -519,6 +544,7 @@ fn not_identifiable(
         held_at,
         standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
         at_bound,
+        sigma_held_free: None,
     }
 }
 

@@ -56,6 +56,7 @@ fn a_hold_reason_reads_as_a_sentence() {
         held_at: 0.0,
         standard_errors_away: Some(0.049),
         at_bound: None,
+        sigma_held_free: None,
     };
     assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 standard errors the data allow)");
     // PKY4 of the Hoosier fit at 0.10014 of its box 0.1..5: said at
@@ -71,6 +72,7 @@ fn a_hold_reason_reads_as_a_sentence() {
         held_at: 2.0,
         standard_errors_away: Some(0.9),
         at_bound: near_bound(0.10014, (0.1, 5.0)),
+        sigma_held_free: None,
     };
     assert_eq!(at.to_string(), "stopped at its lower bound 0.1 when fitted (0.10014; its physical box 0.1 to 5): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing: held at the Pacejka 2012 book default 2");
 }
@@ -94,6 +96,7 @@ fn a_held_line_says_the_value_held_and_the_stated_one() {
             held_at: held_value(stated, fitted, se, (-1.0, 1.0)),
             standard_errors_away: standard_errors_away(stated, fitted, se),
             at_bound: None,
+            sigma_held_free: None,
         }
     };
     let far = rule(0.084).said("QDZ1");

@@ -107,6 +107,7 @@ mod paper_lm;
 pub use fit_warnings::{LARGE_SIGMA_PERCENT, MIN_POINTS_PER_PARAMETER};
 mod params;
 mod problem;
+mod release;
 mod sigma;
 mod spread;
 mod stages;
@@ -124,10 +125,11 @@ pub use spread::{sweeps_slip_angle, ErrorSpread, LoadSigma};
 use super::data::RigData;
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::error::{FitError, InputError, SkipReason, StageSkip};
-use crate::tyre::mf::{MagicFormula, MfInput, MfVersion};
+use crate::tyre::mf::{MagicFormula, MfCoefficients, MfInput, MfVersion};
 use params::EVEN;
+use release::sigma;
 use serde::Serialize;
-use stages::{run_stage, sigma, StageRun};
+use stages::{run_stage, StageRun};
 use start::base_tyre;
 use std::path::Path;
 use std::time::Instant;
@@ -461,7 +463,6 @@ pub fn identify_with(
     if let Some(e) = none_fitted(rows, &reports) {
         return Err(e);
     }
-    conventional_signs(&mut tyre, &mut reports);
     // Each stage's σ and RMS of the final tyre (a later stage may move a
     // channel an earlier one fitted: `SSZ*` the pure rows' `Mz` through
     // their small `Fx`), so that the written file reproduces them.
@@ -536,25 +537,19 @@ fn none_fitted(rows: &[MfRow], reports: &[StageReport]) -> Option<FitError> {
     })
 }
 
-/// The sign-blind coefficients of `tyre` (`EVEN`, and `RVY5`, `RVY6`
-/// together) in one conventional sign, as the stages' `reports` give them.
-fn conventional_signs(tyre: &mut MagicFormula, reports: &mut [StageReport]) {
-    let c = &mut tyre.coefficients;
+/// The sign-blind coefficients of `c` (`EVEN`, and `RVY5`, `RVY6`
+/// together) in one conventional sign. Set after each stage, before its
+/// report is made, so that its warnings, its held lines and the written
+/// file give each the same sign (`--start paper`'s summary said
+/// `RBX2 = -303` where the file had 302.99).
+pub(super) fn conventional_signs(c: &mut MfCoefficients) {
     for name in EVEN {
         c.set(name, c.get(name).unwrap_or(0.0).abs());
     }
     // sin(RVY5·atan(RVY6·κ)) is unchanged when both flip.
-    let flip_rvy = c.RVY5 < 0.0;
-    if flip_rvy {
+    if c.RVY5 < 0.0 {
         c.RVY5 = -c.RVY5;
         c.RVY6 = -c.RVY6;
-    }
-    for r in reports {
-        for p in &mut r.parameters {
-            if EVEN.contains(&p.name) || (flip_rvy && (p.name == "RVY5" || p.name == "RVY6")) {
-                p.value = tyre.coefficients.get(p.name).unwrap_or(p.value);
-            }
-        }
     }
 }
 

@@ -90,6 +90,20 @@ impl<'a> StageProblem<'a> {
         }
     }
 
+    /// σ of the stage's channel at `p`, % (`sqrt(Σe²/ΣF²)`, as the
+    /// stage's line gives it).
+    pub(super) fn sigma_percent(&self, p: &[f64]) -> f64 {
+        let mut e = vec![0.0; self.rows.len()];
+        self.residuals(p, &mut e);
+        let e2: f64 = e.iter().map(|x| x * x).sum();
+        let y2: f64 = self
+            .rows
+            .iter()
+            .map(|r| self.stage.measured(r).powi(2))
+            .sum();
+        100.0 * (e2 / y2).sqrt()
+    }
+
     pub(super) fn tyre(&self, p: &[f64]) -> MagicFormula {
         let mut t = self.base.clone();
         for (k, v) in self.names.iter().zip(p) {

@@ -6,179 +6,18 @@
 
 use super::holds::{held_reason, hold_undetermined, HoldReason, Holding, StageFit};
 use super::paper_lm::paper_lm;
-use super::params::{names_of, physical_bounds, Need, Stage, ANY};
+use super::params::{names_of, physical_bounds, Need, Stage};
 use super::problem::{unbounded, Derivatives, StageProblem};
+use super::release::{
+    at_bound, bounded, no_slip_angle, only_pure_longitudinal, profiled, released_fit, sigma,
+    skip_reason,
+};
 use super::start::{data_start, level_counts, template_value};
 use super::uncertainty::{uncertainty, Uncertainty};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
-use crate::error::{SkipReason, StageRows};
-use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{LocalResult, Residuals};
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
 use std::time::Instant;
-
-/// σ (%) and RMS of a stage's channel over rows.
-pub(super) fn sigma(stage: Stage, t: &MagicFormula, rows: &[&MfRow]) -> (f64, f64, f64, f64) {
-    let (mut e2, mut y2) = (0.0, 0.0);
-    for r in rows {
-        let e = stage.model(t, r) - stage.measured(r);
-        e2 += e * e;
-        y2 += stage.measured(r).powi(2);
-    }
-    (
-        100.0 * (e2 / y2).sqrt(),
-        (e2 / rows.len().max(1) as f64).sqrt(),
-        e2,
-        y2,
-    )
-}
-
-/// Projected Levenberg–Marquardt within `bounds`, converged on a relative
-/// cost decrease (or a step relative to the bounds' width) below 1e-12, or
-/// when no damped step lowers the cost; at most `iterations` Jacobians.
-fn bounded(
-    problem: &StageProblem,
-    p0: &[f64],
-    bounds: &[(f64, f64)],
-    iterations: usize,
-) -> LocalResult {
-    BoundedLm {
-        iterations,
-        tolerance: 1e-12,
-        ..BoundedLm::default()
-    }
-    .minimize(problem, p0, bounds)
-}
-
-/// The staged release of a stage's parameters, each step within the
-/// physical bounds and stopped by tolerance: the terms without conditions
-/// (from three curvature starts, E = 0, −1, 0.5: a curvature started on
-/// the wrong side of a kink — E is clipped at 1 — or of a flat trail curve
-/// can stall LM in a local minimum), then with the load terms, then all
-/// (camber and pressure terms too). The result counts the residual
-/// evaluations of every step and start.
-fn released_fit(
-    problem: &StageProblem,
-    free: &[(&'static str, Need)],
-    starts: &[f64],
-    bounds: &[(f64, f64)],
-    iterations: usize,
-) -> LocalResult {
-    let mut evaluations = 0;
-    let mut converged = true;
-    let mut p: Vec<f64> = starts
-        .iter()
-        .zip(bounds)
-        .map(|(v, (lo, hi))| v.clamp(*lo, *hi))
-        .collect();
-    let steps: [&dyn Fn(Need) -> bool; 3] = [
-        &|n: Need| n == ANY,
-        &|n: Need| n.cambers == 1 && n.pressures == 1,
-        &|_| true,
-    ];
-    let mut last = None;
-    for (s, takes) in steps.iter().enumerate() {
-        let idx: Vec<usize> = (0..free.len()).filter(|&i| takes(free[i].1)).collect();
-        if idx.is_empty() || (s > 0 && last == Some(idx.len())) {
-            continue;
-        }
-        last = Some(idx.len());
-        let sub = StageProblem::new(
-            problem.tyre(&p),
-            problem.stage,
-            idx.iter().map(|&i| problem.names[i]).collect(),
-            problem.rows.clone(),
-            problem.derivatives,
-        );
-        let b: Vec<(f64, f64)> = idx.iter().map(|&i| bounds[i]).collect();
-        let q0: Vec<f64> = idx.iter().map(|&i| p[i]).collect();
-        let curvature = sub
-            .names
-            .iter()
-            .position(|k| matches!(*k, "PEX1" | "PEY1" | "QEZ1" | "REX1" | "REY1"));
-        let e0s: &[f64] = match (s, curvature) {
-            (0, Some(_)) => &[0.0, -1.0, 0.5],
-            _ => &[f64::NAN],
-        };
-        let mut best = (sub.cost(&q0), q0.clone(), true);
-        for &e0 in e0s {
-            let mut q = q0.clone();
-            if let (Some(k), false) = (curvature, e0.is_nan()) {
-                q[k] = e0;
-            }
-            let r = bounded(&sub, &q, &b, iterations);
-            evaluations += r.evaluations;
-            if r.cost.is_finite() && r.cost < best.0 {
-                best = (r.cost, r.params, r.converged);
-            }
-        }
-        converged &= best.2;
-        for (k, &i) in idx.iter().enumerate() {
-            p[i] = best.1[k];
-        }
-    }
-    let cost = problem.cost(&p);
-    LocalResult {
-        cost,
-        params: p,
-        evaluations,
-        converged,
-    }
-}
-
-/// Why a stage with `rows` rows and `free` parameters is not fitted.
-fn skip_reason(stage: Stage, rows: usize, free: usize) -> SkipReason {
-    if rows > 0 {
-        return SkipReason::TooFewRows { rows, free };
-    }
-    SkipReason::NoRows(match stage {
-        Stage::PureFx => StageRows::PureLongitudinal,
-        Stage::PureFy => StageRows::PureLateral,
-        Stage::PureMz => StageRows::PureLateralMz,
-        Stage::CombinedFx => StageRows::CombinedFx,
-        Stage::CombinedFy => StageRows::LongitudinalSlipFy,
-        Stage::CombinedMz => StageRows::LongitudinalSlipMz,
-        Stage::Mx => StageRows::Mx,
-        Stage::My => StageRows::My,
-    })
-}
-
-/// Why a combined `Fy` or `Mz` stage is not fitted whose rows with
-/// longitudinal slip are all at α = 0 (pure braking and driving): there
-/// `Gyκ·Fy0(0) + SVyκ` is all the stage sees, and a fit of its fifteen
-/// coefficients to it wrote `RBY1` = 27386 from an `fy` of zeros. Those
-/// rows pin `SVyκ` beside combined rows; without any they are no
-/// combined-slip test.
-fn only_pure_longitudinal(stage: Stage, rows: &[&MfRow]) -> Option<SkipReason> {
-    let column = match stage {
-        Stage::CombinedFy => "fy",
-        Stage::CombinedMz => "mz",
-        _ => return None,
-    };
-    let combined = rows.iter().any(|r| r.alpha.abs() > super::PURE_TOL);
-    (!rows.is_empty() && !combined).then_some(SkipReason::NoRows(StageRows::OnlyPureLongitudinal {
-        column,
-    }))
-}
-
-/// Why a pure `Fy` or `Mz` stage is not fitted whose rows are all at
-/// α = 0 (a braking or driving sweep with `fy` and `mz` logged): a stage
-/// fitted there wrote a lateral block from its rows' offsets alone
-/// (σ 4.7 % "fitted" on 36 rows of a longitudinal-only rig file, and a
-/// car that steered on it), where `--model pac89` says there is no
-/// lateral slip to fit.
-fn no_slip_angle(stage: Stage, rows: &[&MfRow]) -> Option<SkipReason> {
-    let column = match stage {
-        Stage::PureFy => "fy",
-        Stage::PureMz => "mz",
-        _ => return None,
-    };
-    let flat = rows.iter().all(|r| r.alpha.abs() <= super::PURE_TOL);
-    (!rows.is_empty() && flat).then_some(SkipReason::NoRows(StageRows::NoSlipAngle {
-        column,
-        rows: rows.len(),
-    }))
-}
 
 /// The base tyre with the free parameters at their start values, and
 /// those values.
@@ -280,12 +119,7 @@ pub(super) fn run_stage(
     );
     let (sigma_start, ..) = sigma(stage, &base, rows);
     let bounds = start_bounds(run.start, &names, &starts);
-    let result = match run.start {
-        StartScheme::Paper => paper_lm(&problem, &starts, 1.0, run.paper_cap()),
-        StartScheme::Data | StartScheme::Template => {
-            released_fit(&problem, &free, &starts, &bounds, run.max_iterations)
-        }
-    };
+    let (result, starts, restart) = stage_fit(&problem, &free, starts, &bounds, run);
     let mut evaluations = result.evaluations;
     let mut fit = StageFit {
         problem,
@@ -296,6 +130,7 @@ pub(super) fn run_stage(
     };
     let held = held_undetermined(&mut fit, run, &mut evaluations);
     *tyre = fit.problem.tyre(&fit.p);
+    super::conventional_signs(&mut tyre.coefficients);
     let (sigma_end, rms, ..) = sigma(stage, tyre, rows);
     let u = uncertainty(&fit.problem, &fit.p);
     // Stopped on its cap at a point a Gauss–Newton step would barely
@@ -320,11 +155,120 @@ pub(super) fn run_stage(
         warnings: u
             .near_singular
             .into_iter()
-            .chain(not_converged(converged, run))
+            .chain(restart)
+            .chain(not_converged(converged, run, free.len()))
             .chain(paper_unheld(run.start, &parameters))
             .collect(),
         parameters,
         error_spread: None,
+    }
+}
+
+/// The stage's fit of `problem` from `starts` by its scheme, the starts
+/// of the fit kept, and what a second start found. A fit of the data or
+/// template scheme that ends with a parameter on its physical bound is
+/// fitted again with that parameter held inside its box first (at its
+/// stated value, and a curvature at −1 too), then released (`profiled`):
+/// on noise-free MF 6.1 data the combined-Fx fit from the data's
+/// estimates stopped with `REX1` on its bound 1 at σ 0.70 %, where the
+/// generating tyre's `REX1` is −1.39 and σ 0. The better cost is kept,
+/// and said.
+fn stage_fit(
+    problem: &StageProblem,
+    free: &[(&'static str, Need)],
+    starts: Vec<f64>,
+    bounds: &[(f64, f64)],
+    run: &StageRun,
+) -> (LocalResult, Vec<f64>, Option<String>) {
+    if run.start == StartScheme::Paper {
+        let r = paper_lm(problem, &starts, 1.0, run.paper_cap());
+        return (r, starts, None);
+    }
+    let first = released_fit(problem, free, &starts, bounds, run.max_iterations);
+    let first = continued(problem, first, bounds, run);
+    let Some(k) = (0..starts.len()).find(|&k| at_bound(first.params[k], bounds[k]).is_some())
+    else {
+        return (first, starts, None);
+    };
+    let name = problem.names[k];
+    let template = run.template.and_then(|t| template_value(t, name));
+    let stated = run.holding.stated(name, template).0;
+    let Some((second, held, from)) = profiled(
+        problem,
+        &first.params,
+        k,
+        (bounds, stated),
+        run.max_iterations,
+    ) else {
+        return (first, starts, None);
+    };
+    let second = continued(problem, second, bounds, run);
+    let evaluations = first.evaluations + second.evaluations;
+    let sigma_of = |p: &[f64]| problem.sigma_percent(p);
+    let (was, now) = (sigma_of(&first.params), sigma_of(&second.params));
+    let better = second.cost < first.cost;
+    let said = format!(
+        "a second start: the fit from the {} ended with {name} on its physical bound (σ {was:.3} %); \
+         refitted with {name} held at {} and then released, it reached σ {now:.3} %: {}",
+        if run.start == StartScheme::Data { "data's estimates" } else { "template's values" },
+        crate::format::exact(held),
+        if better { "kept" } else { "no better, the first kept" }
+    );
+    if better {
+        (
+            LocalResult {
+                evaluations,
+                ..second
+            },
+            from,
+            Some(said),
+        )
+    } else {
+        (
+            LocalResult {
+                evaluations,
+                ..first
+            },
+            starts,
+            Some(said),
+        )
+    }
+}
+
+/// Iterations per free parameter a stage's last step may take where it
+/// stops on `--max-iterations` short of its optimum: the Hoosier file's
+/// pure Fy (26 free) stopped on the default 150 at every run, and
+/// converged with 1000 at the same σ.
+pub(super) const ITERATIONS_PER_FREE: usize = 50;
+
+/// The last step's cap of a stage of `free` parameters: at least
+/// `--max-iterations`, and [`ITERATIONS_PER_FREE`] for each.
+pub(super) fn continued_cap(free: usize, run: &StageRun) -> usize {
+    (ITERATIONS_PER_FREE * free).max(run.max_iterations)
+}
+
+/// The fit `r`, continued from where it stopped on its cap up to
+/// [`continued_cap`] where it is short of its optimum (not converged, and
+/// a Gauss–Newton step would still lower the cost by more than the data
+/// tell apart: `Uncertainty::at_optimum`).
+fn continued(
+    problem: &StageProblem,
+    r: LocalResult,
+    bounds: &[(f64, f64)],
+    run: &StageRun,
+) -> LocalResult {
+    let cap = continued_cap(r.params.len(), run);
+    if r.converged || cap <= run.max_iterations || uncertainty(problem, &r.params).at_optimum() {
+        return r;
+    }
+    let more = bounded(problem, &r.params, bounds, cap - run.max_iterations);
+    // A continuation that ends worse, or at no number, is dropped.
+    if more.cost.is_nan() || more.cost > r.cost {
+        return r;
+    }
+    LocalResult {
+        evaluations: r.evaluations + more.evaluations,
+        ..more
     }
 }
 
@@ -369,13 +313,13 @@ fn held_undetermined(
     // along a direction the data barely see (PKY1 against PKY4) does not
     // converge because of it, and the holds are its remedy; the stage's
     // warning says the judgement is taken where it stopped.
+    let stated = |name: &str| {
+        let template = run.template.and_then(|t| template_value(t, name));
+        run.holding.stated(name, template)
+    };
     match run.start {
-        StartScheme::Paper => Vec::new(),
+        StartScheme::Paper => hold_insensitive(fit, &stated),
         StartScheme::Data | StartScheme::Template => {
-            let stated = |name: &str| {
-                let template = run.template.and_then(|t| template_value(t, name));
-                run.holding.stated(name, template)
-            };
             let refit =
                 |problem: &StageProblem, needs: &[Need], starts: &[f64], bounds: &[(f64, f64)]| {
                     let free: Vec<(&'static str, Need)> = problem
@@ -389,6 +333,69 @@ fn held_undetermined(
             hold_undetermined(fit, &stated, &refit, run.max_iterations, evaluations)
         }
     }
+}
+
+/// The parameters of the paper's scheme's `fit` the data do not move at
+/// all (a zero column of the Jacobian: `RVY4` at 6.7e-233, where
+/// `cos(atan(RVY4·α))` is flat in it), each held at its `stated` value
+/// where that leaves the stage's cost as it is (within 1e-9 of itself):
+/// a value the optimiser left there is no fit, and one of −233 decades
+/// reads as a misprint in the written file. The scheme holds nothing
+/// else, as the paper does not; one whose stated value would move the
+/// fit stays free, with its warning.
+fn hold_insensitive(
+    fit: &mut StageFit,
+    stated: &dyn Fn(&str) -> (f64, super::holds::HoldSource),
+) -> Vec<(&'static str, f64, HoldReason)> {
+    let mut held = Vec::new();
+    let cost = |problem: &StageProblem, p: &[f64]| {
+        let mut r = vec![0.0; problem.count()];
+        problem.residuals(p, &mut r);
+        r.iter().map(|e| e * e).sum::<f64>()
+    };
+    let mut k = 0;
+    while k < fit.p.len() && fit.p.len() > 1 {
+        let u = uncertainty(&fit.problem, &fit.p);
+        let name = fit.problem.names[k];
+        let (value, source) = stated(name);
+        let before = cost(&fit.problem, &fit.p);
+        let without = super::holds::held_out(&fit.problem, &fit.p, k, value);
+        let mut rest = fit.p.clone();
+        rest.remove(k);
+        let same = |problem: &StageProblem, p: &[f64]| cost(problem, p) <= before * (1.0 + 1e-9);
+        if u.std_error[k].is_some() || !same(&without, &rest) {
+            // Where its stated value moves the fit, a value of no size
+            // (`RVY4` = 6.7e-233) is written as the 0 it is to the fit.
+            let mut zero = fit.p.clone();
+            zero[k] = 0.0;
+            if u.std_error[k].is_none() && fit.p[k].abs() < 1e-12 && same(&fit.problem, &zero) {
+                fit.p = zero;
+            }
+            k += 1;
+            continue;
+        }
+        held.push((
+            name,
+            value,
+            HoldReason::NotIdentifiable {
+                fitted: fit.p[k],
+                std_error: None,
+                effect_percent: 0.0,
+                source,
+                stated: value,
+                held_at: value,
+                standard_errors_away: None,
+                at_bound: None,
+                sigma_held_free: None,
+            },
+        ));
+        fit.needs.remove(k);
+        fit.starts.remove(k);
+        fit.bounds.remove(k);
+        fit.problem = without;
+        fit.p = rest;
+    }
+    held
 }
 
 /// The report of each parameter of the stage's `table` in the fitted
@@ -433,14 +440,6 @@ fn stage_parameters(
         .collect()
 }
 
-/// The bound of `(lo, hi)` that `v` ends on (within 1e-6 of the box's
-/// width, or of the bound's size for a box open on one side), if any.
-fn at_bound(v: f64, (lo, hi): (f64, f64)) -> Option<f64> {
-    let width = if (hi - lo).is_finite() { hi - lo } else { 0.0 };
-    let near = |b: f64| b.is_finite() && (v - b).abs() <= 1e-6 * width.max(b.abs()).max(1e-9);
-    [lo, hi].into_iter().find(|b| near(*b))
-}
-
 /// The warning of a parameter on a bound of `(lo, hi)`.
 fn bound_warning((lo, hi): (f64, f64)) -> String {
     format!(
@@ -465,18 +464,23 @@ fn paper_unheld(start: StartScheme, parameters: &[StageParameter]) -> Option<Str
         .filter(|p| p.free && p.warning.is_some())
         .map(|p| format!("{} = {}", p.name, crate::format::rounded(p.value, 4)))
         .collect();
+    // What the data do not move at all is held even here (`hold_insensitive`).
+    let inert = parameters
+        .iter()
+        .any(|p| matches!(p.held, Some(HoldReason::NotIdentifiable { .. })));
     (start == StartScheme::Paper && !unheld.is_empty()).then(|| {
         format!(
-            "the paper's scheme (--start paper) holds nothing: {} of its parameters, which these data do not determine ({}), are written where its unbounded Levenberg–Marquardt left them, not at a stated value; do not rely on this stage's channel beyond the points; --start data (the default) holds such parameters at the template's or Pacejka's (2012) book values and says so",
+            "the paper's scheme (--start paper) holds nothing: {} of its parameters, which these data do not determine ({}), are written where its unbounded Levenberg–Marquardt left them, not at a stated value{}; do not rely on this stage's channel beyond the points; --start data (the default) holds such parameters at the template's or Pacejka's (2012) book values and says so",
             unheld.len(),
-            unheld.join(", ")
+            unheld.join(", "),
+            if inert { " (only what the data do not move at all, where its stated value leaves the fit as it is, is held, as said below)" } else { "" }
         )
     })
 }
 
 /// The warning of a stage whose Levenberg–Marquardt stopped before its
 /// convergence test (its iteration cap), `None` when it converged.
-fn not_converged(converged: bool, run: &StageRun) -> Option<String> {
+fn not_converged(converged: bool, run: &StageRun, free: usize) -> Option<String> {
     // The paper's scheme runs at least 500 iterations per step whatever
     // `--max-iterations` (150 by default) says below that: said, as a cap
     // of 500 beside a default of 150 read as a misprint.
@@ -497,11 +501,18 @@ fn not_converged(converged: bool, run: &StageRun) -> Option<String> {
              where it stopped, not at an optimum: with more iterations they may differ"
         }
     };
+    let last = continued_cap(free, run);
+    let more = match run.start {
+        StartScheme::Data | StartScheme::Template if last > cap => format!(
+            ", and continued on its last step to {last} ({ITERATIONS_PER_FREE} per free parameter), short of it still"
+        ),
+        _ => String::new(),
+    };
     (!converged).then(|| {
         format!(
             "not converged: Levenberg–Marquardt stopped at its cap of {cap} iterations per step \
              before its convergence test (its cost still falling by more than 1e-12 of itself \
-             per iteration): the values are where it stopped ({why}){judged}"
+             per iteration){more}: the values are where it stopped ({why}){judged}"
         )
     })
 }

@@ -217,11 +217,30 @@ pub(super) fn identifiability_warning(value: f64, se: f64, effect: f64) -> Optio
     }
     (se >= value.abs() && effect >= EFFECT_FLOOR).then(|| {
         format!(
-            "not identifiable from these data (standard error {} ≥ |value|; one standard error moves the fit by {:.1} % of the channel's RMS)",
+            "not identifiable from these data (standard error {} ≥ |value|; one standard error moves the fit by {})",
             crate::format::readable(se, 4),
-            100.0 * effect
+            effect_words(100.0 * effect)
         )
     })
+}
+
+/// The effect of one standard error, % of the channel's RMS, past which
+/// its digits say nothing (PKX3's "0.23756 ± 27256 … 196581.1 %" on
+/// combined-slip data, RHY1's 5505749.1 % under `--start paper`): said as
+/// more than ten times the channel's RMS.
+pub(super) const ABSURD_EFFECT_PERCENT: f64 = 1000.0;
+
+/// One standard error's effect, `percent` of the channel's RMS, in words:
+/// its digits up to [`ABSURD_EFFECT_PERCENT`], a bound past it.
+fn effect_words(percent: f64) -> String {
+    if percent < ABSURD_EFFECT_PERCENT {
+        format!("{percent:.1} % of the channel's RMS")
+    } else {
+        format!(
+            "more than {} times the channel's RMS",
+            ABSURD_EFFECT_PERCENT / 100.0
+        )
+    }
 }
 
 #[cfg(test)]
@@ -243,5 +262,13 @@ mod tests {
         assert_eq!(identifiability_warning(-2.0, 1.9, 0.5), None);
         assert!(identifiability_warning(1.0, 1.0, EFFECT_FLOOR).is_some());
         assert!(identifiability_warning(1.0, f64::INFINITY, 0.0).is_some());
+        // RHY1 under --start paper: 152.1 ± 30427, 5505749.1 % in digits.
+        let w = identifiability_warning(152.1, 30427.0, 55057.491).unwrap();
+        assert!(
+            w.ends_with("moves the fit by more than 10 times the channel's RMS)"),
+            "{w}"
+        );
+        let w = identifiability_warning(1.0, 2.0, 9.99).unwrap();
+        assert!(w.contains("by 999.0 % of the channel's RMS"), "{w}");
     }
 }

@@ -448,6 +448,7 @@ mod trips_s102_fix32a;
 mod trips_s102_fix32b;
 mod trips_s102_fix32c;
 mod trips_s102_fix41g;
+mod trips_s103_fix33d;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

@@ -404,10 +404,17 @@ impl Default for CalibrationReport {
     }
 }
 
-/// Decimals that show `error` to its first significant digit.
+/// Decimals that show `error` to its first significant digit, or its
+/// first two where that digit is 1 or 2 (the Particle Data Group's rule,
+/// Tanabashi et al. 2018, in short: a 1.4e-4 said as 0.0001 loses a
+/// third of itself, and a 7.3e-5 offset beside it read "0.0001 ± 0.0001"
+/// where the road line said 7.3e-5).
 fn digits(error: f64) -> usize {
     if error > 0.0 && error.is_finite() {
-        (-error.log10().floor()).clamp(1.0, 8.0) as usize
+        let first = -error.log10().floor();
+        let leading = error * 10f64.powf(first);
+        let two = f64::from(u8::from(leading < 2.95));
+        (first + two).clamp(1.0, 8.0) as usize
     } else {
         6
     }
@@ -555,5 +562,20 @@ impl CalibrationReport {
     /// The calibration of `channel`, when measured.
     pub fn channel(&self, channel: RunChannel) -> Option<&ChannelCalibration> {
         self.channels.iter().find(|c| c.channel == channel)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::plus_minus;
+
+    #[test]
+    fn an_error_led_by_1_or_2_keeps_two_digits_and_the_value_its_place() {
+        assert_eq!(plus_minus(7.3e-5, 1.2e-4), "0.00007 ± 0.00012");
+        assert_eq!(plus_minus(-4.6e-5, 1.4e-4), "-0.00005 ± 0.00014");
+        assert_eq!(plus_minus(0.00401, 0.00004), "0.00401 ± 0.00004");
+        assert_eq!(plus_minus(-0.0085, 0.0003), "-0.0085 ± 0.0003");
+        // Zero at the error's digit is said without a sign.
+        assert_eq!(plus_minus(-4e-6, 1.4e-4), "0.00000 ± 0.00014");
     }
 }

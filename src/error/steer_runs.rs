@@ -86,13 +86,13 @@ impl SteerInDegreesRuns {
         .into_iter()
         .flatten()
         .collect();
+        let other = match self.others.len() {
+            1 => "the other run".to_string(),
+            n => format!("the other {n} runs"),
+        };
         match said.is_empty() {
             true => String::new(),
-            false => format!(
-                "; of the other {}: {}",
-                crate::format::plural(self.others.len(), "run", "runs"),
-                said.join("; ")
-            ),
+            false => format!("; {other}: {}", said.join("; ")),
         }
     }
 }
@@ -113,7 +113,7 @@ mod tests {
         assert!(s.contains("in 1 of the 8 runs: step.csv"), "{s}");
         assert!(s.contains("6 runs do not"), "{s}");
         assert!(
-            s.ends_with("; of the other run: sweep.csv reads in radians by its swept steer against the lagged yaw rate"),
+            s.ends_with("; the other run: sweep.csv reads in radians by its swept steer against the lagged yaw rate"),
             "{s}"
         );
         let none = SteerInDegreesRuns {

@@ -77,7 +77,7 @@ fn a_run_in_degrees_among_runs_in_radians_accounts_for_every_run() {
         "{err}"
     );
     assert!(
-        err.contains("; of the other run: ")
+        err.contains("; the other run: ")
             && err.contains(
                 "sweep_080kph.csv reads in radians by its swept steer against the lagged yaw rate"
             ),

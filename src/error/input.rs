@@ -206,10 +206,12 @@ pub enum InputError {
         path: PathBuf,
     },
     /// A fleet folder that holds no campaign.
-    #[error("{path}: no campaign in the folder (sub-folders or .toml files)")]
+    #[error("{path}: no campaign in the folder (sub-folders or .toml files){}", match skipped.len() { 0 => String::from(": it is empty"), n => format!(": its {} {} not a campaign: {}", crate::format::plural(n, "entry", "entries"), if n == 1 { "is" } else { "are" }, skipped.join(", ")) })]
     NoCampaign {
         /// The folder.
         path: PathBuf,
+        /// The names of its entries, none a campaign.
+        skipped: Vec<String>,
     },
     /// Two campaigns of a batch folder whose output folders would be one:
     /// a folder and a `.toml` file of the same stem.
@@ -353,7 +355,7 @@ impl InputError {
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
             | InputError::TooFewRbfPairs { path, .. }
-            | InputError::NoCampaign { path }
+            | InputError::NoCampaign { path, .. }
             | InputError::CampaignStemTwice { path, .. }
             | InputError::Several { path, .. }
             | InputError::RunsRefused { path, .. } => path,

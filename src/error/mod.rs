@@ -103,7 +103,7 @@ pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};
 pub use steady::NoSteadyState;
-pub use steer_runs::SteerInDegreesRuns;
+pub use steer_runs::{OtherRun, SteerInDegreesRuns};
 pub use stiffness_unit::{
     argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
     MOST_LOAD_STIFFNESS,

@@ -69,22 +69,31 @@ fn fleet_lock(out_dir: &Path) -> Result<OutputLock, Error> {
     OutputLock::acquire_outputs(out_dir, "fleet")
 }
 
-/// The campaigns of a batch folder: its sub-folders and `.toml` files, in
-/// name order.
-pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
+/// The campaigns of a batch folder: its sub-folders and `.toml` files (the
+/// extension in any case, as a runs folder's `.csv`), in name order; and
+/// the names of its other entries, skipped (each said: a campaign saved
+/// as `.toml.txt` must not vanish from the fleet without a word).
+pub fn campaigns(dir: &Path) -> Result<(Vec<PathBuf>, Vec<String>), Error> {
     let entries = std::fs::read_dir(dir).map_err(|source| InputError::Io {
         path: dir.to_path_buf(),
         source,
     })?;
-    let mut out: Vec<PathBuf> = entries
+    let is_campaign = |p: &Path| {
+        p.is_dir()
+            || p.extension()
+                .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
+    };
+    let (mut out, skipped): (Vec<PathBuf>, Vec<PathBuf>) = entries
         .filter_map(Result::ok)
         .map(|e| e.path())
-        .filter(|p| p.is_dir() || p.extension().is_some_and(|x| x == "toml"))
-        .collect();
+        .partition(|p| is_campaign(p));
     out.sort();
+    let mut skipped: Vec<String> = skipped.iter().map(|p| name_of(p)).collect();
+    skipped.sort();
     if out.is_empty() {
         return Err(InputError::NoCampaign {
             path: dir.to_path_buf(),
+            skipped,
         }
         .into());
     }
@@ -100,7 +109,19 @@ pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
         }
         .into());
     }
-    Ok(out)
+    Ok((out, skipped))
+}
+
+/// The note of a batch folder's entries that are not campaigns (None:
+/// every entry is one).
+fn skipped_note(skipped: &[String]) -> Option<String> {
+    (!skipped.is_empty()).then(|| {
+        format!(
+            "{} of the batch folder skipped, not a campaign (neither a sub-folder nor a .toml file): {}",
+            plural(skipped.len(), "entry", "entries"),
+            skipped.join(", ")
+        )
+    })
 }
 
 /// Refuses a file or a campaign folder given as the batch folder: it
@@ -150,7 +171,7 @@ pub fn run_batch(
     shard: Option<Shard>,
 ) -> Result<(Vec<DiagnoseReport>, BatchOutcome), Error> {
     refuse_one_campaign(dir)?;
-    let all = campaigns(dir)?;
+    let (all, skipped) = campaigns(dir)?;
     let out_dir = out.map_or_else(
         || PathBuf::from("out").join(name_of(dir)),
         Path::to_path_buf,
@@ -169,7 +190,8 @@ pub fn run_batch(
     let mut reports = Vec::new();
     let mut rows = Vec::new();
     for &i in &owned {
-        let name = name_of(&all[i]);
+        // Named as its output folder is (`carB`, not `carB.toml`).
+        let name = stem_of(&all[i]);
         let to = out_dir.join(stem_of(&all[i]));
         let done = diagnose::run(&all[i], Some(&to)).and_then(|r| r.write().map(|()| r));
         match done {
@@ -191,7 +213,8 @@ pub fn run_batch(
         }
     }
     if whole {
-        let report = fleet(rows, out_dir, lock);
+        let mut report = fleet(rows, out_dir, lock);
+        report.notes.extend(skipped_note(&skipped));
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));
     }
@@ -231,7 +254,7 @@ fn shard_outcome(
     rows: Vec<FleetRow>,
 ) -> Result<BatchOutcome, Error> {
     let file = out_dir.join(shard.file_name());
-    let names: Vec<String> = all.iter().map(|p| name_of(p)).collect();
+    let names: Vec<String> = all.iter().map(|p| stem_of(p)).collect();
     write_shard(
         &file,
         &ShardFile {
@@ -271,7 +294,8 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
     let read = read_shards::<FleetRow>(ShardJob::Diagnose, shards)?;
     let note = read.note();
     let (dir, rows) = (read.input, read.results);
-    let now: Vec<String> = campaigns(&dir)?.iter().map(|p| name_of(p)).collect();
+    let (now, skipped) = campaigns(&dir)?;
+    let now: Vec<String> = now.iter().map(|p| stem_of(p)).collect();
     let listed: Vec<&String> = rows.iter().map(|r| &r.campaign).collect();
     if now.iter().collect::<Vec<_>>() != listed {
         return Err(OptionsError::CampaignsChanged { path: dir }.into());
@@ -283,6 +307,7 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
     let lock = fleet_lock(&out_dir)?;
     let mut report = fleet(rows, out_dir, lock);
     report.notes.extend(note);
+    report.notes.extend(skipped_note(&skipped));
     report.write()?;
     Ok(report)
 }

@@ -13,11 +13,13 @@ pub(super) fn removed(ay: f64, yaw_rate: f64, beta: f64) -> String {
     }
     if yaw_rate != 0.0 {
         // Four decimals, as the calibration's line; a smaller offset to
-        // two significant digits, not as 0.0000.
+        // two significant digits in plain decimals as the calibration's
+        // line writes it (0.000073, not 0.0000, nor 7.3e-5 beside its
+        // "0.00007 ± 0.00012").
         let r = if yaw_rate.abs() >= 1e-3 {
             format!("{yaw_rate:.4}")
         } else {
-            crate::format::readable(yaw_rate, 2)
+            crate::format::significant(yaw_rate, 2)
         };
         parts.push(format!("yaw rate {r} rad/s"));
     }
@@ -33,4 +35,15 @@ pub(super) fn removed(ay: f64, yaw_rate: f64, beta: f64) -> String {
         " less the {what} the calibration measured ({})",
         parts.join(", ")
     )
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_small_yaw_rate_offset_reads_in_plain_decimals() {
+        assert_eq!(
+            super::removed(0.0, 7.3e-5, 0.0),
+            " less the offset the calibration measured (yaw rate 0.000073 rad/s)"
+        );
+    }
 }

@@ -357,7 +357,10 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     // A verdict of no effects at most, or a swarm of no particles.
     for (setting, key) in [
         ("max_effects = 0", "`diagnose.max_effects` = 0"),
-        ("particles = 0", "`diagnose.particles` = 0"),
+        (
+            "particles = 0",
+            "`diagnose.particles`: invalid value: integer `0`, expected a whole number from 1 to 1000",
+        ),
     ] {
         let e = settings_err(setting);
         assert!(e.contains("vehicle.toml:") && e.contains(key), "{e}");

@@ -531,6 +531,7 @@ mod trips_s102_fix41g;
 mod trips_s103_fix33a;
 mod trips_s103_fix33b;
 mod trips_s103_fix33c;
+mod trips_s103_fix33d;
 mod trips_s103_mend33;
 mod trips_s103_putnam39;
 mod trips_s62;

@@ -73,7 +73,7 @@ fn a_fleet_links_each_report_and_says_a_confounded_verdict_everywhere() {
     assert!(!page.contains("c_broken.toml/report.html"), "{page}");
     assert!(!page.contains("c_broken/report.html"), "{page}");
     assert!(
-        page.contains("<td>c_broken.toml: FAILED: ") && page.contains("yaw_inertia"),
+        page.contains("<td>c_broken: FAILED: ") && page.contains("yaw_inertia"),
         "{page}"
     );
     // The look-alike is in its own column of fleet.csv and fleet.json.
@@ -82,7 +82,8 @@ fn a_fleet_links_each_report_and_says_a_confounded_verdict_everywhere() {
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     let row: Vec<&str> = lines.next().unwrap().split(',').collect();
     let at = |name: &str| head.iter().position(|h| *h == name).unwrap();
-    assert_eq!(row[at("campaign")], "a_sc.toml", "{csv}");
+    // Named as its output folder, `a_sc/` (session 103).
+    assert_eq!(row[at("campaign")], "a_sc", "{csv}");
     assert_eq!(row[at("verdict")], "steering_compliance", "{csv}");
     assert_eq!(row[at("confounded_with")], "cornering_stiffness", "{csv}");
     let fleet = read_json(&out.join("fleet.json"));

@@ -7,6 +7,7 @@
 //! Units: SI, rad.
 
 pub mod prior;
+pub mod swarm;
 
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
@@ -34,9 +35,12 @@ pub struct DiagnoseSettings {
     pub sample_rate: f64,
     /// Largest number of effects combined.
     pub max_effects: usize,
-    /// PSO swarm size and iterations of each effect fit.
+    /// PSO swarm size and iterations of each effect fit (1 to
+    /// [`swarm::MAX_SWARM`]).
+    #[serde(deserialize_with = "swarm::swarm_size")]
     pub particles: usize,
-    /// PSO iterations.
+    /// PSO iterations (1 to [`swarm::MAX_SWARM`]).
+    #[serde(deserialize_with = "swarm::swarm_size")]
     pub iterations: usize,
     /// Lowest speed replayed and scored, m/s (standstills and crawling
     /// below it are excluded).

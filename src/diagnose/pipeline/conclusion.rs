@@ -8,8 +8,8 @@
 use crate::diagnose::campaign::{Campaign, StatedFriction};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::{
-    Confounded, Evidence, InSet, MassAlike, NotIdentifiable, OutsideLibrary, ParameterValue,
-    Ranked, Shrinkage, Verdict,
+    Confounded, Evidence, InSet, MassAlike, Narrowed, NotIdentifiable, OutsideLibrary,
+    ParameterValue, Ranked, Shrinkage, Verdict,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::class::class_mismatch;
@@ -63,12 +63,7 @@ pub(super) fn conclude(
         &base_no_tyre,
         &ctx.calibrated,
     );
-    if let Verdict::NotIdentifiable(n) = &mut verdict {
-        n.road_friction = c.friction_at.map(|line| StatedFriction {
-            value: c.friction,
-            line,
-        });
-    }
+    from_campaign(&mut verdict, c);
     // Axles outside the stated tyre class but inside another's: the class
     // to check, not a model-form error outside the library.
     if let Verdict::NotIdentifiable(NotIdentifiable { tyre_class, .. })
@@ -108,6 +103,26 @@ pub(super) fn conclude(
         verdict,
         confounded,
         swapped,
+    }
+}
+
+/// What of the campaign a verdict without an accepted effect names: the
+/// stated road friction (a base that is no tyre) and the candidates
+/// `[diagnose] effects` narrowed the library to. Apart from [`conclude`]
+/// so that it reads on a screen.
+fn from_campaign(verdict: &mut Verdict, c: &Campaign) {
+    if let Verdict::NotIdentifiable(n) = verdict {
+        n.road_friction = c.friction_at.map(|line| StatedFriction {
+            value: c.friction,
+            line,
+        });
+    }
+    // A campaign that names its candidates tried only those: a gap none
+    // of them explains is no model-form error outside the library.
+    if let Verdict::NotIdentifiable(NotIdentifiable { narrowed, .. })
+    | Verdict::OutsideLibrary(OutsideLibrary { narrowed, .. }) = verdict
+    {
+        *narrowed = Narrowed::of(c.settings.effects.as_ref().map(|_| &c.effects[..]));
     }
 }
 

@@ -10,8 +10,8 @@ use crate::diagnose::base::TyreSource;
 use crate::diagnose::campaign::StatedFriction;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
-    ClassMismatch, Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind,
-    VerdictWarning,
+    ClassMismatch, Closest, Evidence, GapFinding, Narrowed, Note, RankWarning, Refused, Verdict,
+    VerdictKind, VerdictWarning,
 };
 use crate::diagnose::report::{
     words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Shrinkage,
@@ -47,11 +47,13 @@ enum Details<'a> {
         closest: &'a [Closest],
         road_friction: Option<&'a StatedFriction>,
         tyre_class: Option<&'a ClassMismatch>,
+        narrowed: Option<&'a Narrowed>,
     },
     OutsideLibrary {
         refused: Option<&'a Refused>,
         threshold_percent: f64,
         tyre_class: Option<&'a ClassMismatch>,
+        narrowed: Option<&'a Narrowed>,
     },
 }
 
@@ -109,6 +111,7 @@ impl Serialize for Verdict {
                     closest: &n.closest,
                     road_friction: n.road_friction.as_ref(),
                     tyre_class: n.tyre_class.as_ref(),
+                    narrowed: n.narrowed.as_ref(),
                 },
             ),
             Verdict::OutsideLibrary(o) => (
@@ -118,6 +121,7 @@ impl Serialize for Verdict {
                     refused: o.refused.as_ref(),
                     threshold_percent: o.threshold_percent,
                     tyre_class: o.tyre_class.as_ref(),
+                    narrowed: o.narrowed.as_ref(),
                 },
             ),
         };

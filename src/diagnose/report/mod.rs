@@ -9,6 +9,7 @@ mod evidence;
 pub(crate) mod gap;
 mod json;
 mod lookalike;
+mod narrowed;
 pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
@@ -34,9 +35,9 @@ use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelChange, ChannelLeft,
     ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet,
-    Lookalike, Lookalikes, MassAlike, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary,
-    PairsFallback, Parsimony, RankWarning, Refusal, Refused, Searched, SetAside, StandstillBank,
-    ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
+    Lookalike, Lookalikes, MassAlike, Narrowed, NoSignificantGap, NotIdentifiable, Note,
+    OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused, Searched, SetAside,
+    StandstillBank, ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

@@ -23,6 +23,7 @@ pub use crate::diagnose::report::evidence::{
 pub use crate::diagnose::report::lookalike::{
     InSet, Lookalike, Lookalikes, SetAside, StandstillBank, Window,
 };
+pub use crate::diagnose::report::narrowed::Narrowed;
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 pub use crate::diagnose::report::tyre_class::ClassMismatch;
@@ -39,7 +40,9 @@ pub enum VerdictKind {
     NoSignificantGap,
     /// The base model is no tyre and no candidate makes it one.
     NotIdentifiable,
-    /// A gap no candidate of the library is accepted for.
+    /// A gap no candidate of the library is accepted for (or, where the
+    /// campaign narrowed the candidates, none of those it names:
+    /// [`OutsideLibrary::narrowed`]).
     OutsideLibrary,
 }
 
@@ -269,6 +272,9 @@ pub struct NotIdentifiable {
     pub road_friction: Option<crate::diagnose::campaign::StatedFriction>,
     /// Axles another tyre class's ranges hold (None: none does).
     pub tyre_class: Option<ClassMismatch>,
+    /// The campaign's `[diagnose] effects` where it left effects of the
+    /// library untried (None: the whole library was tried).
+    pub narrowed: Option<Narrowed>,
 }
 
 /// A candidate whose jointly fitted axles are a tyre, and the share of the
@@ -295,6 +301,9 @@ pub struct OutsideLibrary {
     pub threshold_percent: f64,
     /// Axles another tyre class's ranges hold (None: none does).
     pub tyre_class: Option<ClassMismatch>,
+    /// The campaign's `[diagnose] effects` where it left effects of the
+    /// library untried (None: the whole library was tried).
+    pub narrowed: Option<Narrowed>,
 }
 
 /// A candidate that is not the verdict, and why.

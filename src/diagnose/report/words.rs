@@ -100,6 +100,11 @@ pub fn statement(v: &Verdict) -> String {
 fn not_identifiable(n: &NotIdentifiable) -> String {
     let closest = if let Some(c) = &n.tyre_class {
         class::class_mismatch(c)
+    } else if let (true, Some(narrowed)) = (n.closest.is_empty(), &n.narrowed) {
+        format!(
+            "no candidate fitted with it makes the axles a tyre{}",
+            class::untried(narrowed)
+        )
     } else if n.closest.is_empty() {
         "no candidate fitted with it makes the axles a tyre: what bent them is outside the library"
             .to_string()
@@ -160,7 +165,11 @@ fn removal(percent: f64) -> String {
 /// other rule it fails. Where it removes enough but fails another rule,
 /// the sentence says which, and never that nothing explains the gap.
 fn outside(o: &OutsideLibrary) -> String {
-    class::with_class(outside_alone(o), o.tyre_class.as_ref())
+    let s = class::with_class(outside_alone(o), o.tyre_class.as_ref());
+    match &o.narrowed {
+        Some(n) => class::narrowed(s, n),
+        None => s,
+    }
 }
 
 fn outside_alone(o: &OutsideLibrary) -> String {

@@ -74,6 +74,8 @@ pub(crate) fn verdict(
             road_friction: None,
             // Named by the pipeline, which has the campaign's prior.
             tyre_class: None,
+            // Named by the pipeline, which has the campaign's effects.
+            narrowed: None,
             closest: closest(
                 order
                     .iter()
@@ -87,6 +89,7 @@ pub(crate) fn verdict(
             refused: order.first().map(|&i| refused(found, singles, base, i)),
             threshold_percent: 100.0 * ACCEPT,
             tyre_class: None,
+            narrowed: None,
         }),
     }
 }

@@ -59,9 +59,6 @@ pub enum Limit {
     /// A prior's peak friction beyond what the axle identification represents.
     #[error("the axles identified from the runs have a peak friction of 0.11–9")]
     PriorFriction,
-    /// The particles of each effect fit's swarm.
-    #[error("each effect fit's swarm needs a particle")]
-    Particles,
     /// The length of a run's segment, s.
     #[error("a segment must be longer than {min} s")]
     Segment {

@@ -288,15 +288,6 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
                 Limit::MaxEffects,
             )
         })
-        .and_then(|_| {
-            ParamError::in_range(
-                "particles",
-                s.particles as f64,
-                0.0,
-                f64::INFINITY,
-                Limit::Particles,
-            )
-        })
         .map_err(|e| param_error(src, Some("diagnose"), e))?;
     if let Some(seg) = f.runs.as_ref().and_then(|r| r.segment) {
         ParamError::in_range(

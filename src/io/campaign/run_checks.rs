@@ -5,7 +5,8 @@
 //! so that every refused run is said at once, runs in degrees among runs
 //! in radians as one refusal naming them all.
 
-use crate::error::{CampaignFileProblem, InputError, InputProblem};
+use super::swept::swept_per_neutral;
+use crate::error::{CampaignFileProblem, InputError, InputProblem, OtherRun};
 use crate::io::{read_run_declared, AngleColumn};
 use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::measured::MeasuredRun;
@@ -57,9 +58,10 @@ pub(super) struct SteerInDegrees {
 type Lacking = Vec<(AngleColumn, InputError)>;
 
 /// A run taken: the run, the declared columns it lacks, its notes and
-/// whether its steer was judged against its yaw rate (held steered
-/// samples) and read as radians.
-pub(super) type Checked = (MeasuredRun, Lacking, Vec<String>, bool);
+/// how its steer was judged against its yaw rate (`None`: on held
+/// steered samples, read as radians; else what the campaign's refusal of
+/// runs in degrees says of it).
+pub(super) type Checked = (MeasuredRun, Lacking, Vec<String>, Option<OtherRun>);
 
 /// Run `i` of `ctx.files` read and checked against the runs taken before it
 /// (`raw`, for copies; `copied(earlier, i)` words one).
@@ -104,13 +106,19 @@ pub(super) fn checked_run(
             None => RunRefusal::Run(e),
         })?,
     };
-    let radians = yaw_per_neutral(&run, wheelbase, min_speed).is_some();
+    let judged = match yaw_per_neutral(&run, wheelbase, min_speed) {
+        Some(_) => None,
+        None => Some(match swept_per_neutral(&run, wheelbase, min_speed) {
+            Some(_) => OtherRun::Swept,
+            None => OtherRun::Unjudged,
+        }),
+    };
     let mut notes: Vec<String> = Vec::new();
     notes.extend(note);
     notes.extend(crate::io::unchecked_speed_unit(&run));
     notes.extend(crate::io::steep_bank(&run));
     notes.extend(super::ax_check::ax_note(&run));
-    Ok((run, lacks, notes, radians))
+    Ok((run, lacks, notes, judged))
 }
 
 /// The refusals of a campaign's runs in run order (`refused`, each with
@@ -123,7 +131,7 @@ pub(super) fn checked_run(
 pub(super) fn in_degrees_refusal(
     mut refused: Vec<(usize, InputError)>,
     in_degrees: Vec<(usize, Box<SteerInDegrees>)>,
-    judged_radians: usize,
+    (judged_radians, others): (usize, Vec<(String, OtherRun)>),
     of: usize,
 ) -> (Vec<InputError>, usize) {
     let runs = refused.len() + in_degrees.len();
@@ -141,6 +149,7 @@ pub(super) fn in_degrees_refusal(
                 runs,
                 of,
                 radians: judged_radians,
+                others,
             };
             let e = file_error(
                 &path,

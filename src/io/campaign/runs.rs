@@ -9,7 +9,7 @@
 use super::run_checks::{
     checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal, SteerInDegrees,
 };
-use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
+use crate::error::{CampaignFileProblem, InputError, InputProblem, OtherRun, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
 use crate::io::AngleColumn;
@@ -232,19 +232,41 @@ fn folder_runs(d: &Path, file: &Path, notes: &mut Vec<String>) -> Result<Vec<Pat
 /// counting in `radians` a run whose steer was judged to read in radians.
 /// Apart from [`read_runs`] so that it reads on a screen.
 fn file_refusal(
-    i: usize,
+    (i, file): (usize, &Path),
     refusal: RunRefusal,
     refused: &mut Vec<(usize, InputError)>,
     in_degrees: &mut Vec<(usize, Box<SteerInDegrees>)>,
-    radians: &mut usize,
+    judged: &mut Judged,
 ) {
     match refusal {
-        RunRefusal::Run(e) => refused.push((i, e)),
+        RunRefusal::Run(e) => {
+            refused.push((i, e));
+            judged.taken(file, Some(OtherRun::Refused));
+        }
         RunRefusal::Judged(e) => {
             refused.push((i, e));
-            *radians += 1;
+            judged.taken(file, None);
         }
         RunRefusal::InDegrees(d) => in_degrees.push((i, d)),
+    }
+}
+
+/// The runs whose held steer reads in radians, and the others not in
+/// degrees with what judged them ([`OtherRun`]).
+type Judged = (usize, Vec<(String, OtherRun)>);
+
+/// Counting a run in [`Judged`].
+trait Taken {
+    /// Run file `p` judged as `other` (`None`: its held steer, radians).
+    fn taken(&mut self, p: &Path, other: Option<OtherRun>);
+}
+
+impl Taken for Judged {
+    fn taken(&mut self, p: &Path, other: Option<OtherRun>) {
+        match other {
+            None => self.0 += 1,
+            Some(o) => self.1.push((p.display().to_string(), o)),
+        }
     }
 }
 
@@ -313,7 +335,8 @@ pub(super) fn read_runs(
     let mut cut = Cutting::default();
     // Every run is checked before any is refused: a campaign of eight runs
     // with three bad ones is mended in one pass, not three.
-    let (mut refused, mut in_degrees, mut radians) = (Vec::new(), Vec::new(), 0);
+    let (mut refused, mut in_degrees) = (Vec::new(), Vec::new());
+    let mut judged: Judged = (0, Vec::new());
     let ctx = RunContext {
         files,
         degrees,
@@ -321,14 +344,15 @@ pub(super) fn read_runs(
         min_speed,
     };
     for (i, p) in files.iter().enumerate() {
-        let (run, lacks, run_notes, judged) = match checked_run(&ctx, i, &raw, copied) {
+        let (run, lacks, run_notes, other) = match checked_run(&ctx, i, &raw, copied) {
             Ok(checked) => checked,
             Err(refusal) => {
-                file_refusal(i, refusal, &mut refused, &mut in_degrees, &mut radians);
+                let at = (i, p.as_path());
+                file_refusal(at, refusal, &mut refused, &mut in_degrees, &mut judged);
                 continue;
             }
         };
-        radians += usize::from(judged);
+        judged.taken(p, other);
         file_lacking(&mut absent, lacks, p);
         notes.extend(run_notes);
         inputs.push(p.clone());
@@ -356,7 +380,7 @@ pub(super) fn read_runs(
             }
         }
     }
-    let (refused, count) = in_degrees_refusal(refused, in_degrees, radians, files.len());
+    let (refused, count) = in_degrees_refusal(refused, in_degrees, judged, files.len());
     if let Some(e) = InputError::runs_refused(refused, count, files.len()) {
         return Err(e);
     }

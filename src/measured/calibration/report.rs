@@ -404,8 +404,9 @@ impl Default for CalibrationReport {
     }
 }
 
-/// Decimals that show `error` to its first significant digit.
-fn digits(error: f64) -> usize {
+/// Decimals that show `error` to its first significant digit (a drift's
+/// range of spans, read at their own precision).
+fn first_digit(error: f64) -> usize {
     if error > 0.0 && error.is_finite() {
         (-error.log10().floor()).clamp(1.0, 8.0) as usize
     } else {
@@ -413,7 +414,21 @@ fn digits(error: f64) -> usize {
     }
 }
 
-/// `value ± error` to the error's first significant digit; a value that
+/// Decimals that show `error` to its first significant digit, or its
+/// first two where that digit is 1 or 2 (the Particle Data Group's rule,
+/// Tanabashi et al. 2018, in short: a 1.4e-4 said as 0.0001 loses a
+/// third of itself, and a 7.3e-5 offset beside it read "0.0001 ± 0.0001"
+/// where the road line said 7.3e-5).
+fn digits(error: f64) -> usize {
+    let d = first_digit(error);
+    let leading = error * 10f64.powi(d as i32);
+    match error > 0.0 && error.is_finite() && leading < 2.95 && d < 8 {
+        true => d + 1,
+        false => d,
+    }
+}
+
+/// `value ± error` at the decimals [`digits`] gives; a value that
 /// rounds to zero there is written 0, without the sign of a digit it does
 /// not show ("-0.0000 ± 0.0002" read as an offset below zero).
 fn plus_minus(value: f64, error: f64) -> String {
@@ -440,7 +455,7 @@ impl ChannelCalibration {
                 // The spans' own precision, not the pooled error the drift
                 // inflated.
                 let ratio = p.chi2 / p.dof as f64;
-                let d = digits(p.std_error / ratio.sqrt().max(1.0)).min(4);
+                let d = first_digit(p.std_error / ratio.sqrt().max(1.0)).min(4);
                 let r = if ratio < 100.0 { 1 } else { 0 };
                 out.push_str(&format!(
                     "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {ratio:.r$})",
@@ -555,5 +570,20 @@ impl CalibrationReport {
     /// The calibration of `channel`, when measured.
     pub fn channel(&self, channel: RunChannel) -> Option<&ChannelCalibration> {
         self.channels.iter().find(|c| c.channel == channel)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::plus_minus;
+
+    #[test]
+    fn an_error_led_by_1_or_2_keeps_two_digits_and_the_value_its_place() {
+        assert_eq!(plus_minus(7.3e-5, 1.2e-4), "0.00007 ± 0.00012");
+        assert_eq!(plus_minus(-4.6e-5, 1.4e-4), "-0.00005 ± 0.00014");
+        assert_eq!(plus_minus(0.00401, 0.00004), "0.00401 ± 0.00004");
+        assert_eq!(plus_minus(-0.0085, 0.0003), "-0.0085 ± 0.0003");
+        // Zero at the error's digit is said without a sign.
+        assert_eq!(plus_minus(-4e-6, 1.4e-4), "0.00000 ± 0.00014");
     }
 }

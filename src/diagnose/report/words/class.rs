@@ -3,6 +3,7 @@
 //! "outside the library". Cornering coefficients in 1/rad.
 
 use crate::diagnose::effects::joined;
+use crate::diagnose::report::narrowed::Narrowed;
 use crate::diagnose::report::tyre_class::ClassMismatch;
 use crate::format::rounded;
 
@@ -37,6 +38,43 @@ pub fn class_mismatch(c: &ClassMismatch) -> String {
 pub(super) const OUTSIDE: &str = " — a model-form error outside the library";
 /// How a sentence refusing the library's best ends.
 pub(super) const NO_VERDICT: &str = " — no verdict from the library";
+
+/// The clause of a verdict on candidates a campaign narrowed: which
+/// were tried, how many of the library's were not, and how to try them.
+pub(super) fn untried(n: &Narrowed) -> String {
+    format!(
+        " — no verdict on the library: only the campaign's `[diagnose] effects` were tried ({}), and {} of the library's {} effects were not: leave `effects` out under [diagnose] to try them all",
+        joined(&n.tried, ", "),
+        n.untried.len(),
+        n.tried.len() + n.untried.len(),
+    )
+}
+
+/// An outside-the-library sentence `s` of a campaign that narrowed its
+/// candidates to `n`: none of the campaign's candidates, not none of the
+/// library's, explains the gap, and the ending says what was not tried in
+/// place of blaming a model-form error outside the library.
+pub(super) fn narrowed(s: String, n: &Narrowed) -> String {
+    let s = s
+        .replacen(
+            "that no candidate effect explains",
+            "that none of the campaign's candidate effects explains",
+            1,
+        )
+        .replacen(
+            "for which no candidate effect is accepted",
+            "for which none of the campaign's candidate effects is accepted",
+            1,
+        );
+    let cut = s.trim_end_matches(OUTSIDE).trim_end_matches(NO_VERDICT);
+    let tail = untried(n);
+    if cut.len() < s.len() {
+        format!("{cut}{tail}")
+    } else {
+        // Ended by the tyre class to check: the narrowing after it.
+        format!("{cut};{}", tail.trim_start_matches(" —"))
+    }
+}
 
 /// An outside-the-library sentence `s`, its ending replaced by the class
 /// to check where another tyre class's ranges hold the axles.
@@ -79,5 +117,33 @@ mod tests {
         // Without a class that holds them, the sentence is left as it was.
         let alone = format!("a gap{NO_VERDICT}");
         assert_eq!(with_class(alone.clone(), None), alone);
+    }
+
+    #[test]
+    fn a_campaign_that_named_its_candidates_is_no_verdict_on_the_library() {
+        let n = Narrowed::of(Some(&[EffectKind::RoadBank])).unwrap();
+        let s = narrowed(
+            format!("a gap that no candidate effect explains: the best, road_bank, removes none of it (acceptance needs 30 %){OUTSIDE}"),
+            &n,
+        );
+        let library = EffectKind::ALL.len();
+        assert_eq!(
+            s,
+            format!("a gap that none of the campaign's candidate effects explains: the best, road_bank, removes none of it (acceptance needs 30 %) — no verdict on the library: only the campaign's `[diagnose] effects` were tried (road_bank), and {} of the library's {library} effects were not: leave `effects` out under [diagnose] to try them all", library - 1)
+        );
+        assert!(!s.contains("outside the library"), "{s}");
+        // A refused best: its ending, too, says what was not tried.
+        let s = narrowed(
+            format!("a gap for which no candidate effect is accepted: the best, road_bank, removes 40 % of it{NO_VERDICT}"),
+            &n,
+        );
+        assert!(
+            s.starts_with("a gap for which none of the campaign's candidate effects is accepted"),
+            "{s}"
+        );
+        assert!(
+            s.ends_with("to try them all") && !s.contains(NO_VERDICT),
+            "{s}"
+        );
     }
 }

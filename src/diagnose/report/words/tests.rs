@@ -136,6 +136,7 @@ fn outside(reduction_percent: f64, why: Vec<Refusal>) -> Verdict {
         }),
         threshold_percent: 30.0,
         tyre_class: None,
+        narrowed: None,
     })
 }
 
@@ -230,6 +231,7 @@ fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
         closest: Vec::new(),
         road_friction: None,
         tyre_class: None,
+        narrowed: None,
     });
     assert_eq!(
         statement(&v),

@@ -225,10 +225,11 @@ fn a_run_selected_twice_names_both_entries_where_they_are() {
 }
 
 /// A yaw-rate offset of -4.6e-5 ± 1.4e-4 rad/s at a standstill was said
-/// "-0.0000 ± 0.0001 rad/s", an offset below zero the digits do not show:
-/// a value that rounds to zero at its standard error's digit is 0.
+/// "-0.0000 ± 0.0001 rad/s", an offset below zero the digits do not show.
+/// Its error, led by a 1, now keeps two digits, and the value is said to
+/// the same place: a sign only where a digit shows it.
 #[test]
-fn an_offset_within_its_error_of_zero_is_said_without_a_sign() {
+fn an_offset_within_its_error_of_zero_is_never_a_signed_zero() {
     let dir = tempfile::tempdir().unwrap();
     let c = synth_campaign(dir.path(), "so", &["--programme", "slow-oval"]);
     // The standstill's yaw-rate offset is 5.4e-5 rad/s as synthesised:
@@ -265,7 +266,5 @@ fn an_offset_within_its_error_of_zero_is_said_without_a_sign() {
         ),
         "{stdout}"
     );
-    // Its error led by a 1 keeps two digits (session 103): the value
-    // shows at that place, its sign a digit shows.
     assert!(!stdout.contains("-0.0000 "), "{stdout}");
 }

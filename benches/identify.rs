@@ -90,7 +90,7 @@ fn mf61_hoosier(c: &mut Criterion) {
         kappa_bin: 0.0025,
         start: StartArg::Data,
         template: None,
-        max_iterations: handling::identify::mf_staged::LM_ITERATIONS,
+        max_iterations: None,
         hold: Vec::new(),
     };
     let mut g = c.benchmark_group("identify");

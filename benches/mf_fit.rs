@@ -36,6 +36,7 @@ fn mf61_hoosier(c: &mut Criterion) {
         start: StartScheme::Data,
         template: None,
         max_iterations: LM_ITERATIONS,
+        cap_given: false,
         holding: Default::default(),
     };
     let mut g = c.benchmark_group("identify");

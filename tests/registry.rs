@@ -285,7 +285,7 @@ fn identify_recovers_the_toys_stiffness() {
         kappa_bin: 0.0,
         start: StartArg::Data,
         template: None,
-        max_iterations: handling::identify::mf_staged::LM_ITERATIONS,
+        max_iterations: None,
         hold: Vec::new(),
     })
     .unwrap();

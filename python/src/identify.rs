@@ -14,7 +14,7 @@ use std::path::PathBuf;
 
 /// Fits a tyre model to rig data; `(report JSON, fitted tyre)`.
 #[pyfunction]
-#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS, hold=Vec::new(), load=None))]
+#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=None, hold=Vec::new(), load=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn identify(
     py: Python<'_>,
@@ -29,7 +29,7 @@ pub(crate) fn identify(
     bin_kappa: f64,
     start: &str,
     template: Option<PathBuf>,
-    max_iterations: usize,
+    max_iterations: Option<usize>,
     hold: Vec<(String, f64)>,
     load: Option<f64>,
 ) -> PyResult<(String, PyTyre)> {

@@ -118,9 +118,7 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
         kappa_bin: a.bin_kappa.unwrap_or(0.0025),
         start: a.start.unwrap_or(StartArg::Data),
         template: a.template,
-        max_iterations: a
-            .max_iterations
-            .unwrap_or(handling::identify::mf_staged::LM_ITERATIONS),
+        max_iterations: a.max_iterations,
         hold: a.hold,
     })
     .map_err(|e| named_hold(e, &hold))?;

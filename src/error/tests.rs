@@ -290,7 +290,7 @@ fn a_job_refuses_settings_that_are_not_numbers_before_it_reads() {
         kappa_bin: 0.0025,
         start: crate::jobs::identify::StartArg::Data,
         template: None,
-        max_iterations: 10,
+        max_iterations: Some(10),
         hold: Vec::new(),
     };
     match crate::jobs::identify::run(&o).unwrap_err() {

@@ -393,7 +393,7 @@ fn no_file_is_written_that_the_tyre_reader_refuses() {
     ];
     let o = identify_with(dir.path(), "gim", &args, &out);
     assert!(o.status.success(), "{}", stderr(&o));
-    let said = stderr(&o);
+    let said = format!("{}{}", stdout(&o), stderr(&o));
     assert!(
         said.contains("contact_length") && said.contains("on its search bound"),
         "{said}"

@@ -31,7 +31,7 @@ fn options(data: &Path, model: IdentifyModel, out: &Path) -> Options {
         kappa_bin: 0.0,
         start: StartArg::Template,
         template: Some(root().join(MF62)),
-        max_iterations: 50,
+        max_iterations: Some(50),
         hold: Vec::new(),
     }
 }

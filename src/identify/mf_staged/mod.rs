@@ -319,6 +319,10 @@ pub struct Settings {
     /// Levenberg–Marquardt iterations (Jacobians) per step at most
     /// ([`LM_ITERATIONS`] by default; the paper's scheme runs at least 500).
     pub max_iterations: usize,
+    /// Whether `max_iterations` is the user's: honoured as given. The
+    /// default cap is not: a stage stopped on it short of its optimum is
+    /// continued (`stages::continued_cap`).
+    pub cap_given: bool,
     /// The values the user gives and the keys the template gives
     /// (`holds.rs`: what a parameter the data do not determine is held at).
     pub holding: Holding,
@@ -455,6 +459,7 @@ pub fn identify_with(
     let run = StageRun {
         start: settings.start,
         max_iterations: settings.max_iterations,
+        cap_given: settings.cap_given,
         derivatives,
         holding: &settings.holding,
         template: settings.template.as_ref(),

@@ -78,6 +78,7 @@ fn start_values(
 pub(super) struct StageRun<'a> {
     pub(super) start: StartScheme,
     pub(super) max_iterations: usize,
+    pub(super) cap_given: bool,
     pub(super) derivatives: Derivatives,
     pub(super) holding: &'a Holding,
     pub(super) template: Option<&'a MagicFormula>,
@@ -247,10 +248,11 @@ pub(super) fn continued_cap(free: usize, run: &StageRun) -> usize {
     (ITERATIONS_PER_FREE * free).max(run.max_iterations)
 }
 
-/// The fit `r`, continued from where it stopped on its cap up to
+/// The fit `r`, continued from where it stopped on the default cap up to
 /// [`continued_cap`] where it is short of its optimum (not converged, and
 /// a Gauss–Newton step would still lower the cost by more than the data
-/// tell apart: `Uncertainty::at_optimum`).
+/// tell apart: `Uncertainty::at_optimum`). A cap the user gives is
+/// honoured: the stage stops there and says so.
 fn continued(
     problem: &StageProblem,
     r: LocalResult,
@@ -258,7 +260,11 @@ fn continued(
     run: &StageRun,
 ) -> LocalResult {
     let cap = continued_cap(r.params.len(), run);
-    if r.converged || cap <= run.max_iterations || uncertainty(problem, &r.params).at_optimum() {
+    if run.cap_given
+        || r.converged
+        || cap <= run.max_iterations
+        || uncertainty(problem, &r.params).at_optimum()
+    {
         return r;
     }
     let more = bounded(problem, &r.params, bounds, cap - run.max_iterations);
@@ -503,7 +509,7 @@ fn not_converged(converged: bool, run: &StageRun, free: usize) -> Option<String>
     };
     let last = continued_cap(free, run);
     let more = match run.start {
-        StartScheme::Data | StartScheme::Template if last > cap => format!(
+        StartScheme::Data | StartScheme::Template if !run.cap_given && last > cap => format!(
             ", and continued on its last step to {last} ({ITERATIONS_PER_FREE} per free parameter), short of it still"
         ),
         _ => String::new(),

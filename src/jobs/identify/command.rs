@@ -77,7 +77,10 @@ impl Options {
             bin_kappa: swarm.then_some(self.kappa_bin),
             start: staged.then_some(self.start.as_str()),
             template: staged.then(|| self.template.as_ref().map(|t| t.display().to_string())),
-            max_iterations: staged.then_some(self.max_iterations),
+            max_iterations: staged.then_some(
+                self.max_iterations
+                    .unwrap_or(crate::identify::mf_staged::LM_ITERATIONS),
+            ),
             hold: self
                 .hold
                 .iter()
@@ -117,7 +120,11 @@ impl Options {
             if let Some(t) = &self.template {
                 words.push(format!("--template {}", quoted(&t.display().to_string())));
             }
-            words.push(format!("--max-iterations {}", self.max_iterations));
+            // The default cap is left out: given, it would be honoured
+            // where the default one continues a stage short of its optimum.
+            if let Some(n) = self.max_iterations {
+                words.push(format!("--max-iterations {n}"));
+            }
             words.push(format!("--bin-deg {}", exact(self.alpha_bin_deg)));
         }
         words.extend(

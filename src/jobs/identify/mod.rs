@@ -98,8 +98,10 @@ pub struct Options {
     pub start: StartArg,
     /// Magic Formula: the .tir whose constants and layout are kept.
     pub template: Option<PathBuf>,
-    /// Magic Formula: Levenberg–Marquardt iterations per step.
-    pub max_iterations: usize,
+    /// Magic Formula: Levenberg–Marquardt iterations per step. `None`:
+    /// the default cap (`LM_ITERATIONS`), and a stage stopped on it short
+    /// of its optimum is continued; `Some(n)`: the user's cap, honoured.
+    pub max_iterations: Option<usize>,
     /// Magic Formula: coefficients held at a value the user gives
     /// (`.tir` name, value in the file's SI units), in every stage.
     pub hold: Vec<(String, f64)>,
@@ -134,7 +136,9 @@ impl Options {
             ParamError::finite("camber", c)?;
         }
         // No iteration is no fit: its report would read as one.
-        ParamError::positive("max_iterations", self.max_iterations as f64)?;
+        if let Some(n) = self.max_iterations {
+            ParamError::positive("max_iterations", n as f64)?;
+        }
         for (name, v) in &self.hold {
             ParamError::finite(name, *v)?;
             ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;

@@ -86,7 +86,11 @@ fn line(points: &[(f64, f64)]) -> Option<f64> {
 
 /// The note on the offset at zero slip `f`'s model leaves in the
 /// lateral force of `conditions` (module notes), or `None`.
-pub(crate) fn offset_note(f: &Fit, conditions: &[Condition]) -> Option<Note> {
+pub(crate) fn offset_note(
+    f: &Fit,
+    conditions: &[Condition],
+    names: &super::level_names::LevelNames<'_>,
+) -> Option<Note> {
     if f.channel != Channel::LateralForce {
         return None;
     }
@@ -113,9 +117,10 @@ pub(crate) fn offset_note(f: &Fit, conditions: &[Condition]) -> Option<Note> {
         n => format!(" (the largest of the {n} conditions')"),
     };
     Some(Note::said(format!(
-        "the data have fy = {} N at zero slip at fz {} N{more}, the constant of a parabola through their points within ±{WINDOW_DEG}° (a ply-steer or conicity offset), which the {} model has no term for: its curve shifted by each condition's offset would fit at σ {} % against the {} % fitted; subtract it from the data, or fit a model with shifts (pac89, mf61)",
+        "the data have fy = {} N at zero slip at fz {}{more}, the constant of a parabola through their points within ±{WINDOW_DEG}° (a ply-steer or conicity offset), which the {} model has no term for: its curve shifted by each condition's offset would fit at σ {} % against the {} % fitted; subtract it from the data, or fit a model with shifts (pac89, mf61)",
         readable(o, 4),
-        readable(c.fz, 4),
+        // The level as every other line names it, not its samples' median.
+        names.load(c.fz),
         f.model,
         fixed(shifted, 3),
         fixed(f.sigma_percent, 3),

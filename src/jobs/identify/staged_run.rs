@@ -172,7 +172,8 @@ fn settings_of(
             StartArg::Template => StartScheme::Template,
         },
         template: template_tyre,
-        max_iterations: o.max_iterations,
+        max_iterations: o.max_iterations.unwrap_or(mf_staged::LM_ITERATIONS),
+        cap_given: o.max_iterations.is_some(),
         holding: Holding {
             given,
             // The coefficients the template file gives: a parameter the

@@ -25,7 +25,10 @@ impl SwarmReport {
                 .iter()
                 .map(|n| n.line(" ")),
         );
-        out.extend(super::offset::offset_note(&self.fit, &self.conditions).map(|n| n.line(" ")));
+        out.extend(
+            super::offset::offset_note(&self.fit, &self.conditions, &self.level_names())
+                .map(|n| n.line(" ")),
+        );
         out.extend(self.later_fit_lines());
         out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
         out.extend(

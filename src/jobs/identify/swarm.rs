@@ -353,7 +353,11 @@ fn finish(o: &Options, r: &mut SwarmReport) -> Result<(), Error> {
     };
     r.notes = notes::notes(r)
         .into_iter()
-        .chain(super::offset::offset_note(&r.fit, &r.conditions))
+        .chain(super::offset::offset_note(
+            &r.fit,
+            &r.conditions,
+            &r.level_names(),
+        ))
         .chain(r.warning_notes())
         .collect();
     r.file = written::tyre_file_text(r, &o.output_path())?;

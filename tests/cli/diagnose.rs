@@ -528,21 +528,15 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     // The bundled campaign (20 s pieces, as the independent replay quoted
     // below cut it), with two candidates to keep the test short (the
     // changelog records a run on the full library).
-    let text = fs::read_to_string(root().join("campaigns/putnam.toml"))
-        .unwrap()
-        .replace(
-            "\"../../shared/data/run_iac_putnam/putnam_run4_2.csv\"",
-            &format!("{:?}", log.to_str().unwrap()),
-        )
-        // The gyro trusted to what the independent replay quoted below
-        // trusted it to, so that the two fits weigh the channels alike
-        // (unstated, the gyro is trusted to its sensor floor: its scatter is
-        // below it); the campaign states the sideslip's 0.005 rad.
-        .replace("[channels]\n", "[channels]\nyaw_rate = 0.003\n")
-        .replace(
-            "[diagnose]\nseed = 1",
-            "[diagnose]\nseed = 1\neffects = [\"sensor_delay\", \"steer_path\"]\nmax_effects = 1",
-        );
+    let text = putnam_campaign(
+        &log,
+        "effects = [\"sensor_delay\", \"steer_path\"]\nmax_effects = 1",
+    )
+    // The gyro trusted to what the independent replay quoted below
+    // trusted it to, so that the two fits weigh the channels alike
+    // (unstated, the gyro is trusted to its sensor floor: its scatter is
+    // below it); the campaign states the sideslip's 0.005 rad.
+    .replace("[channels]\n", "[channels]\nyaw_rate = 0.003\n");
     let dir = scratch(&[("putnam.toml", &text)]);
     let out = dir.path().join("out");
     let o = run(&[

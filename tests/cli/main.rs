@@ -214,6 +214,22 @@ pub(crate) fn read_json(p: &Path) -> serde_json::Value {
 }
 
 /// Writes `files` into a fresh folder and returns it.
+/// The bundled racing-log campaign (`campaigns/putnam.toml`) reading the
+/// log at `log`, with `diagnose` (TOML lines: the candidates, their count)
+/// added under its `[diagnose]` table.
+pub(crate) fn putnam_campaign(log: &Path, diagnose: &str) -> String {
+    fs::read_to_string(root().join("campaigns/putnam.toml"))
+        .unwrap()
+        .replace(
+            "\"../../shared/data/run_iac_putnam/putnam_run4_2.csv\"",
+            &format!("{:?}", log.to_str().unwrap()),
+        )
+        .replace(
+            "[diagnose]\nseed = 1",
+            &format!("[diagnose]\nseed = 1\n{diagnose}"),
+        )
+}
+
 /// The text of the bundled scenario `scenarios/<name>` with its tyre
 /// paths made absolute, so that it runs from any folder it is copied to.
 pub(crate) fn bundled_scenario(name: &str) -> String {

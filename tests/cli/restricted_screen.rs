@@ -12,16 +12,10 @@ fn a_greedy_step_on_the_racing_log_is_screened_without_polishing_its_sets() {
     ) else {
         return;
     };
-    let text = fs::read_to_string(root().join("campaigns/putnam.toml"))
-        .unwrap()
-        .replace(
-            "\"../../shared/data/run_iac_putnam/putnam_run4_2.csv\"",
-            &format!("{:?}", log.to_str().unwrap()),
-        )
-        .replace(
-            "[diagnose]\nseed = 1",
-            "[diagnose]\nseed = 1\neffects = [\"steer_path\", \"yaw_inertia\", \"road_friction\"]",
-        );
+    let text = putnam_campaign(
+        &log,
+        "effects = [\"steer_path\", \"yaw_inertia\", \"road_friction\"]",
+    );
     let dir = scratch(&[("putnam.toml", &text)]);
     let out = dir.path().join("out");
     let o = run(&[

@@ -18,16 +18,7 @@ fn the_racing_log_s_stated_sideslip_counts_its_run_means_as_the_estimator_s_slow
     };
     // The bundled campaign as it is, one candidate to keep the test short
     // (the base, and so the gap, do not depend on the candidates).
-    let text = fs::read_to_string(root().join("campaigns/putnam.toml"))
-        .unwrap()
-        .replace(
-            "\"../../shared/data/run_iac_putnam/putnam_run4_2.csv\"",
-            &format!("{:?}", log.to_str().unwrap()),
-        )
-        .replace(
-            "[diagnose]\nseed = 1",
-            "[diagnose]\nseed = 1\neffects = [\"steer_path\"]\nmax_effects = 1",
-        );
+    let text = putnam_campaign(&log, "effects = [\"steer_path\"]\nmax_effects = 1");
     let dir = scratch(&[("putnam.toml", &text)]);
     let (stdout, d) = diagnose_to(&dir.path().join("putnam.toml"), &dir.path().join("out"));
     // The sideslip stated, at the estimated output's value; the gyro left

@@ -11,16 +11,7 @@ use super::*;
 /// only, diagnosed; None where the log is missing.
 fn putnam_with(test: &str, effects: &str) -> Option<serde_json::Value> {
     let log = shared_data(test, "run_iac_putnam/putnam_run4_2.csv")?;
-    let text = fs::read_to_string(root().join("campaigns/putnam.toml"))
-        .unwrap()
-        .replace(
-            "\"../../shared/data/run_iac_putnam/putnam_run4_2.csv\"",
-            &format!("{:?}", log.to_str().unwrap()),
-        )
-        .replace(
-            "[diagnose]\nseed = 1",
-            &format!("[diagnose]\nseed = 1\neffects = [{effects}]"),
-        );
+    let text = putnam_campaign(&log, &format!("effects = [{effects}]"));
     let dir = scratch(&[("putnam.toml", &text)]);
     let (_, d) = diagnose_to(&dir.path().join("putnam.toml"), &dir.path().join("out"));
     Some(d)

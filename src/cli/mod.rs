@@ -112,13 +112,24 @@ fn print(lines: &[String]) {
     }
 }
 
-/// Writes one line to stdout (see `say!`).
+/// Set once stdout's reader has gone (`handling … | head`).
+static STDOUT_CLOSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Writes one line to stdout (see `say!`). Once the reader of a pipe has
+/// closed it, the rest of the summary is dropped and the job runs on: its
+/// outputs are files, and exiting at the print left the run's folder lock
+/// behind for the next run to take over as a killed run's.
 pub(crate) fn say_line(args: std::fmt::Arguments) {
     use std::io::Write;
+    use std::sync::atomic::Ordering;
+    if STDOUT_CLOSED.load(Ordering::Relaxed) {
+        return;
+    }
     let mut out = std::io::stdout().lock();
     if let Err(e) = writeln!(out, "{args}").and_then(|()| out.flush()) {
         if e.kind() == std::io::ErrorKind::BrokenPipe {
-            std::process::exit(0);
+            STDOUT_CLOSED.store(true, Ordering::Relaxed);
+            return;
         }
         eprintln!("error: writing to stdout: {e}");
         std::process::exit(1);

@@ -289,6 +289,10 @@ pub enum OptionsError {
         /// Why the fit does not read it.
         why: &'static str,
     },
+    /// `--hold` of a name that is no `.tir` coefficient (the staged Magic
+    /// Formula fit): the name's own refusal, said of the option.
+    #[error("--hold: {0}")]
+    HoldNotCoefficient(Box<OptionsError>),
     /// `--hold` of a name that is none of the model's fitted parameters.
     #[error(
         "--hold `{given}`: not a parameter of the {model} model{}: its parameters are {}",

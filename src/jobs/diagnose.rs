@@ -276,6 +276,13 @@ fn candidate_lines(d: &Diagnosis) -> Vec<String> {
     if d.base.axles.is_none() {
         out.push(format!("  ({})", words::TYRES_HELD));
     }
+    // Every candidate screened out: no table, which printed as a header
+    // without rows.
+    if d.ranking.is_empty() && d.combinations.is_empty() {
+        out.push(format!("  {}", words::NONE_CROSS_VALIDATED));
+        out.extend(screened_lines(d));
+        return out;
+    }
     let w = effect_width(d);
     out.push(format!("  ({})", words::bic_caveat(&d.gap.findings)));
     out.push(format!(

@@ -206,6 +206,12 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             d.gap.heldout_error, d.gap.noise_level
         ),
     );
+    if all.is_empty() {
+        let n = words::NONE_CROSS_VALIDATED;
+        p.paragraph("", &format!("{}{}.", n[..1].to_uppercase(), &n[1..]));
+        screened(p, d);
+        return;
+    }
     let c = words::bic_caveat(&d.gap.findings);
     p.paragraph("", &format!("{}{}.", c[..1].to_uppercase(), &c[1..]));
     p.paragraph(

@@ -481,7 +481,7 @@ fn mf61_holds_a_coefficient_at_the_value_the_user_gives() {
         &bad,
     );
     assert!(
-        e.contains("unknown Magic Formula coefficient `PKY44` (did you mean `PKY4`?)"),
+        e.contains("--hold: unknown Magic Formula coefficient `PKY44` (did you mean `PKY4`?)"),
         "{e}"
     );
 }

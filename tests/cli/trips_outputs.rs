@@ -274,7 +274,7 @@ fn metrics_on_a_log_of_driving_says_it_holds_no_step_steer() {
     let e = stderr(&o);
     assert_eq!(o.status.code(), Some(1), "{e}");
     assert!(
-        e.contains("no step steer in this record: the steer spans 0.040 rad (2.29°), from -0.020 rad (-1.15°) to 0.020 rad (1.15°), and reverses 20 times"),
+        e.contains("no step steer in this record: the steer spans 0.0400 rad (2.29°), from -0.0200 rad (-1.15°) to 0.0200 rad (1.15°), and reverses 20 times"),
         "{e}"
     );
 }

@@ -114,7 +114,7 @@ fn a_record_cut_at_its_step_says_it_holds_no_straight_running_before_it() {
     let cut = cut_history(&history, dir.path(), "after", 1.1);
     let e = stderr(&run(&["metrics", cut.to_str().unwrap()]));
     assert!(
-        e.contains("the wheels are already turned by 0.017 rad (1.00°) in the initial window: a record that starts during or after its step holds no straight running before it"),
+        e.contains("the wheels are already turned by 0.0175 rad (1.00°) in the initial window: a record that starts during or after its step holds no straight running before it"),
         "{e}"
     );
     assert!(e.contains("`pre_window` = 0.5 s before it"), "{e}");
@@ -137,8 +137,8 @@ fn the_putnam_racing_log_is_no_step_steer() {
     let e = stderr(&o);
     assert!(!e.contains("column `roll`"), "{e}");
     for said in [
-        "no step steer in this record: the steer spans 0.41 rad (23.43°), from -0.16 rad (-9.18°) to 0.25 rad (14.25°), and reverses 13 times by more than 0.10 rad (5.86°)",
-        "and holds within 0.041 rad (2.34°) for at most 32.32 s (from 216.72 s)",
+        "no step steer in this record: the steer spans 0.4089 rad (23.43°), from -0.160 rad (-9.18°) to 0.2488 rad (14.25°), and reverses 13 times by more than 0.102 rad (5.86°)",
+        "and holds within 0.0409 rad (2.34°) for at most 32.32 s (from 216.72 s)",
         "cut one such stretch out of the log to measure it",
     ] {
         assert!(e.contains(said), "{said}\n{e}");

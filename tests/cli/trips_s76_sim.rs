@@ -81,7 +81,7 @@ fn metrics_names_a_steer_pulse_and_why_it_needs_a_held_step() {
     assert!(!o.status.success(), "a pulse was measured as a step");
     let e = stderr(&o);
     for said in [
-        "no steer step: the steer is a pulse, not a step: a pulse of 0.017 rad (1.00°) from 0 rad (0.00°), from 1.05 s for 0.40 s (times at half its size), back to 0 rad (0.00°) in the steady window",
+        "no steer step: the steer is a pulse, not a step: a pulse of 0.0175 rad (1.00°) from 0 rad (0.00°), from 1.05 s for 0.40 s (times at half its size), back to 0 rad (0.00°) in the steady window",
         "the step-steer metrics (GB/T 6323 / ISO 7401 step input) read the response to a steer held after its step",
         "hold the steer after the step to the record's end, at least the last `steady_window` = 1 s",
     ] {

@@ -112,7 +112,7 @@ fn a_noisy_steer_already_turned_is_said_so_not_as_a_pulse() {
     let (ok, _, err) = metrics(&file, &[]);
     assert!(!ok);
     assert!(
-        err.contains("the wheels are already turned by 0.017 rad (1.00°) in the initial window"),
+        err.contains("the wheels are already turned by 0.0174 rad (1.00°) in the initial window"),
         "{err}"
     );
     assert!(!without_temp_names(&err).contains("pulse"), "{err}");

@@ -429,6 +429,11 @@ fn gap_within_noise(findings: &[GapFinding]) -> bool {
 pub const TYRES_HELD: &str =
     "± a standard error with the base model's tyres held as they are: their own uncertainty is not in it";
 
+/// In place of the candidates' table where every candidate was screened
+/// out before cross-validation.
+pub const NONE_CROSS_VALIDATED: &str =
+    "none cross-validated: every candidate was screened out (below)";
+
 /// Under the candidates' table: their ΔBIC (and, on a gap within noise,
 /// their standard errors) count every sample as an independent one, but a
 /// replay's residuals are correlated over many samples (a model's error is

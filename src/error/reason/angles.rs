@@ -1,5 +1,6 @@
 //! Steer angles as every message writes them: rad to two significant
-//! digits with its degrees to two decimals, "0.017 rad (1.00°)", one
+//! digits, or as many as its degrees show (up to four), with its degrees
+//! to two decimals, "0.0175 rad (1.00°)", "0.0017 rad (0.10°)", one
 //! format for one quantity wherever it is said (a sine's refusal wrote
 //! "0.0100 rad (0.010°)", the metrics "0.010 rad (0.57°)"); and two angles
 //! a sentence compares with the digits that tell them apart ("0.00015 rad
@@ -20,18 +21,34 @@ const MAX_DIGITS: usize = 6;
 /// resolution, in exponent form, not with sixteen zeros.
 fn written(v: f64, digits: usize, decimals: usize) -> String {
     let v = if v.abs() < ROUNDING { 0.0 } else { v };
+    let deg = crate::format::fixed(v.to_degrees(), decimals);
     let rad = if v != 0.0 && v.abs() < 1e-5 {
         format!("{v:.*e}", digits.max(1) - 1)
     } else {
         significant(v, digits)
     };
-    let deg = crate::format::fixed(v.to_degrees(), decimals);
     format!("{rad} rad ({deg}°)")
+}
+
+/// The most significant digits an angle's rad takes to match its
+/// degrees: four match a degree to two decimals up to 100°.
+const RAD_DIGITS_FOR_DEGREES: usize = 4;
+
+/// The significant digits of `v` rad that match its degrees to two
+/// decimals (two at least, four at most): "0.10 rad (5.86°)" read as a
+/// wrong conversion of 0.10 rad (5.73°).
+fn rad_digits(v: f64) -> usize {
+    let deg = crate::format::fixed(v.to_degrees(), 2);
+    let digits: String = deg.chars().filter(char::is_ascii_digit).collect();
+    digits
+        .trim_start_matches('0')
+        .len()
+        .clamp(2, RAD_DIGITS_FOR_DEGREES)
 }
 
 /// An angle in rad with its degrees: "0.0017 rad (0.10°)".
 pub(crate) fn angle(v: f64) -> String {
-    written(v, 2, 2)
+    written(v, rad_digits(v), 2)
 }
 
 /// `a` and `b` as [`angle`] writes them, each part (rad, degrees) with
@@ -71,7 +88,7 @@ fn places(a: f64, b: f64) -> (usize, usize) {
             _ => (true, true),
         }
     };
-    let (mut digits, mut decimals) = (2, 2);
+    let (mut digits, mut decimals) = (rad_digits(a).max(rad_digits(b)), 2);
     while digits < MAX_DIGITS && !differ(digits, decimals).0 {
         digits += 1;
     }
@@ -87,7 +104,11 @@ mod tests {
 
     #[test]
     fn compared_angles_print_apart_and_a_lone_one_in_the_one_format() {
-        assert_eq!(angle(0.0174533), "0.017 rad (1.00°)");
+        assert_eq!(angle(0.0174533), "0.0175 rad (1.00°)");
+        // The rad as precise as the degrees beside it.
+        assert_eq!(angle(0.1023), "0.102 rad (5.86°)");
+        assert_eq!(angle(0.409), "0.4090 rad (23.43°)");
+        assert_eq!(angle(0.0017), "0.0017 rad (0.10°)");
         assert_eq!(angle(1e-12), "0 rad (0.00°)");
         let (a, b) = compared(0.00015, 1.745e-4);
         assert_eq!(
@@ -107,6 +128,6 @@ mod tests {
             ("0.000063 rad (0.004°)", "0.00017 rad (0.010°)")
         );
         // Already apart: as `angle` writes them.
-        assert_eq!(compared(0.1, 0.2).0, angle(0.1));
+        assert_eq!(compared(0.1, 0.15).0, angle(0.1));
     }
 }

@@ -182,7 +182,8 @@ impl Options {
         }
         let Some(model) = self.model.swarm_model() else {
             for (name, _) in &self.hold {
-                crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
+                crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)
+                    .map_err(|e| OptionsError::HoldNotCoefficient(Box::new(e)))?;
             }
             // The reader's own limits first (their words are the files'),
             // then the sign rules only the fit's boxes encode.

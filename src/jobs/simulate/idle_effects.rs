@@ -67,11 +67,12 @@ fn constant_speed(sc: &Scenario) -> Option<f64> {
     }
 }
 
-/// An `aero_load` that loads only axles on linear tyres (whose force
+/// The part of an `aero_load` on axles with linear tyres (whose force
 /// `C_α·α` does not depend on the load) with no roll camber there and no
 /// combined slip (camber thrust and the friction circle read the load):
-/// the down-force it adds, said with the axles' numbers at the run's
-/// starting speed.
+/// the down-force it adds there, said with the axles' numbers at the run's
+/// starting speed. Said per axle: a down-force on a linear front acts on
+/// nothing even where the rear's tyres read theirs.
 fn idle_aero(sc: &Scenario) -> Option<String> {
     let e = &sc.model.options.effects;
     let k = e.aero_load;
@@ -81,10 +82,17 @@ fn idle_aero(sc: &Scenario) -> Option<String> {
             || e.roll_camber[axle] != 0.0
             || e.combined_slip.is_some()
     };
-    let loaded: Vec<usize> = (0..2).filter(|&i| k[i] != 0.0).collect();
-    if loaded.is_empty() || loaded.iter().any(|&i| acts(i)) {
+    let loaded: Vec<usize> = (0..2).filter(|&i| k[i] != 0.0 && !acts(i)).collect();
+    if loaded.is_empty() {
         return None;
     }
+    // Where the other axle's down-force does act, the warning names the
+    // idle part only.
+    let part = if (0..2).any(|i| k[i] != 0.0 && acts(i)) {
+        format!(": its {} part", ["front", "rear"][loaded[0]])
+    } else {
+        String::new()
+    };
     let m = &sc.manoeuvre;
     let u = m.speed(m.start_time());
     let axle = ["front", "rear"];
@@ -96,7 +104,7 @@ fn idle_aero(sc: &Scenario) -> Option<String> {
         })
         .collect();
     Some(format!(
-        "`model.effects.aero_load` = [{}, {}] N per (m/s)² acts on nothing: it adds {} at {} m/s (k·u²), and the {} tyres are linear, whose force C_α·α does not depend on the load (nor does anything else here: no roll camber, no combined slip); give a tyre whose force grows with its load (gim, pac89, a .tir) for the down-force to act, or 0",
+        "`model.effects.aero_load` = [{}, {}] N per (m/s)²{part} acts on nothing: it adds {} at {} m/s (k·u²), and the {} tyres are linear, whose force C_α·α does not depend on the load (nor does anything else here: no roll camber, no combined slip); give a tyre whose force grows with its load (gim, pac89, a .tir) for the down-force to act, or 0",
         crate::format::exact(k[0]),
         crate::format::exact(k[1]),
         adds.join(" and "),

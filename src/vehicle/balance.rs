@@ -372,14 +372,14 @@ impl<T: Scalar> Balance<T> {
             return None;
         }
         let (plain, split) = (tyres.plain(), self.split.re());
-        let (mu, speed) = (self.road.mu.re(), self.road.speed);
+        let mu = self.road.mu.re();
         let alpha = [front.alpha.re(), rear.alpha.re()];
         let p = self.fixed_projection.re();
         let weight = [p, p, 1.0, 1.0];
         let (mut x, mut slope, mut evals) = (seed.predict(), seed.slope, 0);
         while let Some(k) = split.slopes(x) {
             let fz = split.at(x);
-            let [f, f1, f2] = plain.wheels_in_load(alpha, fz, mu, speed)?;
+            let [f, f1, f2] = plain.wheels_in_load(alpha, fz, mu)?;
             evals += 1;
             let (y, s) = self.wheel_sums(f, fz);
             let g = x - y.re();

@@ -85,15 +85,15 @@ impl PlainTyres<'_> {
     /// [`AxleTyres::wheels`] with each force's first and second derivatives
     /// in its wheel's load (N/N, 1/N; [`Tyre::lateral_forces_in_load`]):
     /// None unless the model gives them (PAC89).
+    #[inline]
     pub(crate) fn wheels_in_load(
         &self,
         alpha: [f64; 2],
         fz: [f64; 4],
         mu: f64,
-        speed: f64,
     ) -> Option<[[f64; 4]; 3]> {
         let [front, rear] = self.tyres;
-        front.lateral_forces_in_load(rear, &four_wheels(alpha, fz, mu, speed))
+        front.lateral_forces_in_load(rear, alpha, fz, mu)
     }
 }
 

@@ -7,7 +7,9 @@
 //! inside, N and rad at the interface) with its three `atan`, `atan`, `sin`
 //! taken from the crate's branch-free array kernels ([`crate::tyre::kernels`])
 //! instead of the C library: one call per stage for the four wheels, which
-//! the compiler turns into SIMD lanes. The kernels are within 1 ulp of the C
+//! the compiler turns into SIMD lanes, and `B·x/μ` in one division where
+//! the one-wheel method takes three (the divisions of the load's chain are
+//! what a right-hand side waits on). The kernels are within 1 ulp of the C
 //! library's, so a wheel's force is within a few ulp of the one-wheel method's
 //! (tested below over slip, load, camber and friction); a lane's result
 //! depends on its own inputs only, whatever the other lanes hold.
@@ -68,10 +70,12 @@ pub(super) struct Stages<const N: usize> {
     pub(super) outer: [f64; N],
 }
 
-/// The lanes' [`Stages`]: every operation is the one-wheel method's
-/// (`lateral_curve_of` and `Pac89::scaled`), in its order, so only the
-/// kernels' last bits differ; `x/1` and `x·1` are `x` to the bit, so μ = 1
-/// needs no branch of its own. Written as whole-array steps without
+/// The lanes' [`Stages`]: the one-wheel method's equations
+/// (`lateral_curve_of` and `Pac89::scaled`), its operations but for `z`
+/// (taken from the load in N) and `B·x/μ` (one division where it takes
+/// three), so the lanes differ from it by the kernels' last bits and a few
+/// ulp of `B·x`; `x/1` and `x·1` are `x` to the bit, so μ = 1 needs no
+/// branch of its own. Written as whole-array steps without
 /// branches (a load-less lane selects, it does not jump), so the compiler
 /// keeps the lanes in vector registers from the coefficients on.
 #[inline(always)]
@@ -82,27 +86,42 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
     // A lane that gives zero is evaluated at no load and μ = 1 (its value
     // is discarded), so no NaN sends the whole array to the kernels'
     // out-of-range path.
-    let f: [f64; N] = each(|i| if on[i] { s[i].fz } else { 0.0 } / 1000.0);
+    let f: [f64; N] = each(|i| load(s, on, i) / 1000.0);
     let mu: [f64; N] = each(|i| if on[i] { s[i].mu_scale } else { 1.0 });
     let g: [f64; N] = each(|i| s[i].camber.to_degrees());
     let c = a[0];
     let d: [f64; N] = each(|i| a[1][i] * f[i] * f[i] + a[2][i] * f[i]);
-    let z: [f64; N] = each(|i| f[i] / a[4][i]);
+    // z = f/a4 from the load in N directly: beside `f`, not after it.
+    let z: [f64; N] = each(|i| load(s, on, i) / (a[4][i] * 1000.0));
     let bcd_camber: [f64; N] = each(|i| -(a[5][i] * g[i].abs()) + 1.0);
-    let bcd: [f64; N] = each(|i| a[3][i] * (z[i] * 2.0 / (z[i] * z[i] + 1.0)) * bcd_camber[i]);
-    // B = BCD/(C·D), zero where C·D vanishes (`stiffness_factor`).
+    let w: [f64; N] = each(|i| z[i] * z[i] + 1.0);
+    let cd: [f64; N] = each(|i| c[i] * d[i]);
+    // B = BCD/(C·D), zero where C·D vanishes (`stiffness_factor`): read
+    // by the load derivatives only.
     let b: [f64; N] = each(|i| {
-        let cd = c[i] * d[i];
-        if cd.abs() < 1e-12 {
+        let bcd = a[3][i] * (z[i] * 2.0 / w[i]) * bcd_camber[i];
+        if cd[i].abs() < 1e-12 {
             0.0
         } else {
-            bcd[i] / cd
+            bcd / cd[i]
         }
     });
     let e: [f64; N] = each(|i| a[6][i] * f[i] + a[7][i]);
     let sh: [f64; N] = each(|i| a[8][i] * g[i] + a[9][i] * f[i] + a[10][i]);
     let sv: [f64; N] = each(|i| a[11][i] * f[i] * g[i] + a[12][i] * f[i] + a[13][i]);
-    let bx: [f64; N] = each(|i| b[i] / mu[i] * (s[i].alpha.to_degrees() + sh[i]));
+    // B/μ = a3·2z·(1 − a5·|γ|) / ((1 + z²)·C·D·μ) in one division where
+    // the one-wheel method takes three (BCD's q(z), B, B/μ): the load's
+    // chain of dependent divisions to B·x is what a right-hand side waits
+    // on (profiled); a few ulp of B·x apart from the one-wheel method's.
+    let bx: [f64; N] = each(|i| {
+        let num = a[3][i] * (z[i] * 2.0) * bcd_camber[i];
+        let b_mu = if cd[i].abs() < 1e-12 {
+            0.0
+        } else {
+            num / (w[i] * cd[i] * mu[i])
+        };
+        b_mu * (s[i].alpha.to_degrees() + sh[i])
+    });
     let inner = kernels::atan(bx);
     let phi: [f64; N] = each(|i| bx[i] - e[i] * (bx[i] - inner[i]));
     let outer = kernels::atan(phi);
@@ -123,6 +142,16 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
         inner,
         phi,
         outer,
+    }
+}
+
+/// Lane `i`'s load in N, zero where it gives no force (`on[i]` false).
+#[inline(always)]
+fn load<const N: usize>(s: &[SlipState; N], on: [bool; N], i: usize) -> f64 {
+    if on[i] {
+        s[i].fz
+    } else {
+        0.0
     }
 }
 

@@ -23,15 +23,20 @@ pub(crate) type LoadJets = [[f64; 4]; 3];
 
 impl Tyre {
     /// [`LoadJets`] of a car's four wheels, the first two on this tyre and
-    /// the last two on `rear`, at `s`: Some when both are PAC89 (in SIMD
-    /// lanes, AVX2 at run time), None for any other model.
+    /// the last two on `rear`, at the axles' slip angles `alpha` (front,
+    /// rear), the loads `fz` and friction scale `mu`, no camber: Some when
+    /// both are PAC89 (in SIMD lanes, AVX2 at run time), None for any other
+    /// model.
+    #[inline]
     pub(crate) fn lateral_forces_in_load(
         &self,
         rear: &Tyre,
-        s: &[SlipState; 4],
+        alpha: [f64; 2],
+        fz: [f64; 4],
+        mu: f64,
     ) -> Option<LoadJets> {
         match (self, rear) {
-            (Tyre::Pac89(f), Tyre::Pac89(r)) => Some(Pac89::load_jets([f, f, r, r], s)),
+            (Tyre::Pac89(f), Tyre::Pac89(r)) => Some(Pac89::axle_jets(f, r, alpha, fz, mu)),
             _ => None,
         }
     }
@@ -39,6 +44,7 @@ impl Tyre {
 
 impl Pac89 {
     /// [`LoadJets`] of wheel `i` on `tyres[i]` at `s[i]`.
+    #[cfg(test)]
     pub(crate) fn load_jets(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> LoadJets {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
@@ -47,13 +53,71 @@ impl Pac89 {
         }
         jets(tyres, s)
     }
+
+    /// [`LoadJets`] of a car's four wheels (FL, FR on `front`, RL, RR on
+    /// `rear`) at the axles' slip angles `alpha`, the loads `fz` and
+    /// friction scale `mu`, no camber: [`Pac89::load_jets`] of those wheels
+    /// to the bit, with the inputs handed to the AVX2 kernel (a call of its
+    /// own: the caller is not compiled for AVX2) in registers. An array of
+    /// slip states handed over in memory, written a field at a time, made
+    /// the kernel's wider loads of it wait for the stores to retire (no
+    /// store forwarding; profiled: a stall on every right-hand side).
+    #[inline]
+    pub(crate) fn axle_jets(
+        front: &Pac89,
+        rear: &Pac89,
+        alpha: [f64; 2],
+        fz: [f64; 4],
+        mu: f64,
+    ) -> LoadJets {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            let ([af, ar], [f0, f1, f2, f3]) = (alpha, fz);
+            // SAFETY: the CPU has AVX2, checked on the line above.
+            return unsafe { axle_jets_avx2(front, rear, af, ar, f0, f1, f2, f3, mu) };
+        }
+        axle_jets_of(front, rear, alpha, fz, mu)
+    }
 }
 
 /// [`jets`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(test, target_arch = "x86_64"))]
 #[target_feature(enable = "avx2")]
 fn jets_avx2(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> LoadJets {
     jets(tyres, s)
+}
+
+/// [`axle_jets_of`] compiled with AVX2, every number an argument of its own
+/// (in a register, not in memory).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+fn axle_jets_avx2(
+    front: &Pac89,
+    rear: &Pac89,
+    af: f64,
+    ar: f64,
+    f0: f64,
+    f1: f64,
+    f2: f64,
+    f3: f64,
+    mu: f64,
+) -> LoadJets {
+    axle_jets_of(front, rear, [af, ar], [f0, f1, f2, f3], mu)
+}
+
+/// [`jets`] of the four wheels of [`Pac89::axle_jets`].
+#[inline(always)]
+fn axle_jets_of(front: &Pac89, rear: &Pac89, alpha: [f64; 2], fz: [f64; 4], mu: f64) -> LoadJets {
+    let s: [SlipState; 4] = std::array::from_fn(|i| SlipState {
+        alpha: alpha[i / 2],
+        kappa: 0.0,
+        fz: fz[i],
+        camber: 0.0,
+        mu_scale: mu,
+        speed: 0.0,
+    });
+    jets([front, front, rear, rear], &s)
 }
 
 /// `(u, u', u'')` of `atan` at `x` with `x'`, `x''` (`atan x` given).
@@ -78,9 +142,6 @@ fn jets(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> LoadJets {
     for i in 0..4 {
         let (sine, cosine) = (sc[i], sc[i + 4]);
         out[0][i] = force(&st, sine, i);
-        if !st.on[i] {
-            continue;
-        }
         let (f, mu, d, b, z) = (st.f[i], st.mu[i], st.d[i], st.b[i], st.z[i]);
         let (d1, d2) = (2.0 * a[1][i] * f + a[2][i], 2.0 * a[1][i]);
         // q(z) = 2z/(1 + z²): q' = 2(1 − z²)/(1 + z²)², q'' = 4z(z² − 3)/(1 + z²)³,
@@ -109,8 +170,22 @@ fn jets(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> LoadJets {
         let s1 = cosine * c[i] * o1;
         let s2 = cosine * c[i] * o2 - sine * c[i] * c[i] * o1 * o1;
         let sv1 = a[11][i] * st.g[i] + a[12][i];
-        out[1][i] = mu * (d1 * sine + d * s1 + sv1) * 1e-3;
-        out[2][i] = mu * (d2 * sine + 2.0 * d1 * s1 + d * s2) * 1e-6;
+        // Selected, not skipped: a lane off the ground (at no load and
+        // μ = 1 in its stages) is computed and discarded, so every lane is
+        // stored whole; a skipped lane made the stores masked, which the
+        // caller's loads of them cannot be forwarded from (profiled: a
+        // stall on every right-hand side).
+        let on = st.on[i];
+        out[1][i] = if on {
+            mu * (d1 * sine + d * s1 + sv1) * 1e-3
+        } else {
+            0.0
+        };
+        out[2][i] = if on {
+            mu * (d2 * sine + 2.0 * d1 * s1 + d * s2) * 1e-6
+        } else {
+            0.0
+        };
     }
     out
 }
@@ -179,5 +254,40 @@ mod tests {
         assert_eq!(n, 8 * 6 * 3 * 4);
         let off = [0.01, 0.01, 0.01, 0.01].map(|a| SlipState::lateral(a, -100.0));
         assert_eq!(Pac89::load_jets(pair, &off), [[0.0; 4]; 3]);
+    }
+
+    /// The axles' entry (the vehicle's: slip angles, loads and friction in
+    /// registers) is the general one's to the bit, with wheels off the
+    /// ground and without friction among them (whose selected zeros must
+    /// not carry the discarded lanes' arithmetic).
+    #[test]
+    fn the_axles_jets_are_the_wheels_jets() {
+        let front = Pac89::adams_example();
+        let mut rear = Pac89::adams_example();
+        rear.a[3] *= 1.3;
+        rear.a[13] = -8.0;
+        let mut n = 0;
+        for alpha in [[0.0, 0.0], [0.02, -0.01], [-0.3, 0.25], [1.2, -1.5]] {
+            for fz in [
+                [3000.0, 4200.0, 2500.0, 3900.0],
+                [-20.0, 7000.0, 0.0, 6000.0],
+                [1e-9, 12_000.0, 800.0, -1.0],
+            ] {
+                for mu in [0.0, 0.7, 1.0, 1.2] {
+                    let s: [SlipState; 4] = std::array::from_fn(|i| SlipState {
+                        fz: fz[i],
+                        mu_scale: mu,
+                        ..SlipState::lateral(alpha[i / 2], 0.0)
+                    });
+                    let general = Pac89::load_jets([&front, &front, &rear, &rear], &s);
+                    let axles = Pac89::axle_jets(&front, &rear, alpha, fz, mu);
+                    for (g, a) in general.iter().flatten().zip(axles.iter().flatten()) {
+                        assert_eq!(g.to_bits(), a.to_bits(), "{alpha:?} {fz:?} {mu}");
+                    }
+                    n += 1;
+                }
+            }
+        }
+        assert_eq!(n, 48);
     }
 }

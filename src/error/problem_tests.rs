@@ -106,7 +106,7 @@ fn messages_read_as_the_text_they_replace_angles() {
         value: 3.0,
         limit: std::f64::consts::FRAC_PI_4,
     };
-    assert_eq!(angle.to_string(), "column `camber`: 3 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?");
+    assert_eq!(angle.to_string(), "column `camber`: 3 rad (172°) is beyond ±45° (0.785 rad), steeper than any car tyre runs; a column whose every camber other than 0 is beyond ±20° (0.349 rad) is refused too: angles are in radians (FORMATS.md); is the column in degrees?");
     let camber = InputProblem::NoCamberColumn { camber: 0.05 };
     assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
 }

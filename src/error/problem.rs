@@ -296,9 +296,7 @@ pub enum InputProblem {
         /// The slip ratio as read.
         value: f64,
     },
-    /// An angle beyond what a tyre test in radians reaches. A camber is
-    /// said by the one camber rule of `tyre-eval` and `identify`
-    /// ([`camber_beyond`]), in degrees and radians alike.
+    /// An angle beyond what a tyre test in radians reaches ([`camber_beyond`]).
     #[error("column `{column}`: {}: angles are in radians (FORMATS.md); is the column in degrees?", camber_beyond(column, *value, *limit))]
     AngleInDegrees {
         /// The column (`alpha`, `camber`).

@@ -10,6 +10,7 @@
 mod bank_degrees;
 mod bank_reversed;
 mod beta_sign;
+mod camber;
 mod campaign_file;
 mod carried;
 mod decimal;
@@ -60,6 +61,7 @@ mod vehicle_limit;
 pub use bank_degrees::BankInDegrees;
 pub use bank_reversed::BankReversed;
 pub use beta_sign::BetaAgainstModel;
+pub use camber::{MOST_CAMBER, STEEP_CAMBER};
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;

@@ -8,6 +8,7 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
+use super::camber::camber_beyond;
 use super::duplicate::DuplicateAt;
 use super::level_slip::{requested as requested_text, unit_slip, LevelSlip};
 use super::number::Num;
@@ -295,8 +296,8 @@ pub enum InputProblem {
         /// The slip ratio as read.
         value: f64,
     },
-    /// An angle beyond what a tyre test in radians reaches.
-    #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
+    /// An angle beyond what a tyre test in radians reaches ([`camber_beyond`]).
+    #[error("column `{column}`: {}: angles are in radians (FORMATS.md); is the column in degrees?", camber_beyond(column, *value, *limit))]
     AngleInDegrees {
         /// The column (`alpha`, `camber`).
         column: &'static str,

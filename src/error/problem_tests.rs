@@ -1,7 +1,7 @@
 //! Tests of the input problems' messages.
 
 use super::*;
-use crate::error::{MetricsError, PieceRefusal};
+use crate::error::{MetricsError, PieceRefusal, MOST_CAMBER, STEEP_CAMBER};
 
 fn slope(
     slope: f64,
@@ -106,7 +106,7 @@ fn messages_read_as_the_text_they_replace_angles() {
         value: 3.0,
         limit: std::f64::consts::FRAC_PI_4,
     };
-    assert_eq!(angle.to_string(), "column `camber`: 3 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?");
+    assert_eq!(angle.to_string(), "column `camber`: 3 rad (172°) is beyond ±45° (0.785 rad), steeper than any car tyre runs; a column whose every camber other than 0 is beyond ±20° (0.349 rad) is refused too: angles are in radians (FORMATS.md); is the column in degrees?");
     let camber = InputProblem::NoCamberColumn { camber: 0.05 };
     assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
 }
@@ -153,4 +153,44 @@ fn messages_read_as_the_text_they_replace_runs() {
     let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
     assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
     assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");
+}
+
+/// The two camber refusals state the same two limits in the same
+/// words, each in degrees and radians; a slip angle is said as before.
+#[test]
+fn both_camber_refusals_state_both_limits_alike() {
+    let said = |value, limit| {
+        InputProblem::AngleInDegrees {
+            column: "camber",
+            value,
+            limit,
+        }
+        .to_string()
+    };
+    let steep = said(0.7, STEEP_CAMBER);
+    let most = said(1.2, MOST_CAMBER);
+    assert!(
+        steep.starts_with("column `camber`: 0.7 rad (40.1°) is beyond ±20° (0.349 rad), as every camber of the column other than 0 is"),
+        "{steep}"
+    );
+    assert!(
+        most.starts_with("column `camber`: 1.2 rad (68.8°) is beyond ±45° (0.785 rad), steeper than any car tyre runs"),
+        "{most}"
+    );
+    for s in [&steep, &most] {
+        assert!(
+            s.contains("±20° (0.349 rad)") && s.contains("±45° (0.785 rad)"),
+            "{s}"
+        );
+        assert!(
+            s.ends_with("angles are in radians (FORMATS.md); is the column in degrees?"),
+            "{s}"
+        );
+    }
+    let alpha = InputProblem::AngleInDegrees {
+        column: "alpha",
+        value: 2.0,
+        limit: std::f64::consts::FRAC_PI_2,
+    };
+    assert_eq!(alpha.to_string(), "column `alpha`: 2 rad is beyond ±90°: angles are in radians (FORMATS.md); is the column in degrees?");
 }

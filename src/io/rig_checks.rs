@@ -8,7 +8,7 @@
 
 use super::columns::Columns;
 use crate::error::{InputError, InputProblem, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP};
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+use std::f64::consts::FRAC_PI_2;
 use std::path::Path;
 
 /// The largest force a rig file may hold, N: 1 MN, three times an airliner
@@ -197,7 +197,7 @@ pub(super) fn sample_errors(path: &Path, c: &Columns, t: &Taken) -> Vec<InputErr
     // angle past ±90° or a camber past ±45° is not a tyre test in radians.
     let angles = [
         ("alpha", t.lateral.as_ref().map(|l| &l.0), FRAC_PI_2),
-        ("camber", t.camber.as_ref(), FRAC_PI_4),
+        ("camber", t.camber.as_ref(), crate::error::MOST_CAMBER),
     ];
     for (name, values, limit) in angles {
         let Some(values) = values else { continue };

@@ -37,9 +37,8 @@ use std::path::Path;
 
 /// The camber above which a point of a model with no stated camber range
 /// is said, and past which a column whose every tilt lies reads as
-/// degrees, rad (20°): none of the thirteen public `.tir` files states a
-/// camber range beyond 15.1° (`CAMMAX` 0.264 rad).
-pub const STEEP_CAMBER: f64 = 0.349_065_850_398_865_9;
+/// degrees, rad (20°): one constant with the refusal's words.
+pub use crate::error::STEEP_CAMBER;
 
 /// Whether a camber column reads as degrees: some camber other than 0,
 /// and every one beyond [`STEEP_CAMBER`] (20°) read in radians.

@@ -221,7 +221,7 @@ fn a_camber_beyond_45_degrees_is_refused_as_degrees() {
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
-        e.contains("points.csv:2:4: column `camber`: 1.2 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?"),
+        e.contains("points.csv:2:4: column `camber`: 1.2 rad (68.8°) is beyond ±45° (0.785 rad), steeper than any car tyre runs; a column whose every camber other than 0 is beyond ±20° (0.349 rad) is refused too: angles are in radians (FORMATS.md); is the column in degrees?"),
         "{e}"
     );
 }

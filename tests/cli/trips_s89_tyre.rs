@@ -101,9 +101,12 @@ fn a_camber_column_in_degrees_within_45_radians_is_asked_as_degrees() {
     );
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
-    for (cell, value) in [("deg.csv:3:4", "0.5"), ("deg.csv:4:4", "-0.4")] {
+    for (cell, value) in [
+        ("deg.csv:3:4", "0.5 rad (28.6°)"),
+        ("deg.csv:4:4", "-0.4 rad (-22.9°)"),
+    ] {
         assert!(
-            e.contains(&format!("{cell}: column `camber`: {value} rad is beyond ±20°: angles are in radians (FORMATS.md); is the column in degrees?")),
+            e.contains(&format!("{cell}: column `camber`: {value} is beyond ±20° (0.349 rad), as every camber of the column other than 0 is")),
             "{e}"
         );
     }

@@ -218,7 +218,7 @@ fn identify_asks_a_camber_column_steeper_than_20_degrees_whether_it_is_in_degree
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
     assert!(
-        e.contains("deg.csv:43:4: column `camber`: 0.5 rad is beyond ±20°: angles are in radians (FORMATS.md); is the column in degrees? (the first of 82 places refused alike)"),
+        e.contains("deg.csv:43:4: column `camber`: 0.5 rad (28.6°) is beyond ±20° (0.349 rad), as every camber of the column other than 0 is, where no car tyre is tested alone (no public .tir's camber range passes 15.1°); a column with a camber within ±20° is read in radians, refused only beyond ±45° (0.785 rad): angles are in radians (FORMATS.md); is the column in degrees? (the first of 82 places refused alike)"),
         "{e}"
     );
     assert!(!dir.path().join("o.toml").exists());

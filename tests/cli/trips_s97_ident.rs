@@ -134,8 +134,10 @@ fn a_template_block_turning_against_its_slip_over_the_written_range_is_said_by_i
 /// Item 2: a linear tyre's `Cα·α` has no load term, camber or pressure:
 /// `tyre-eval` at 4000 N past rig data at 1503–1795 N warned "755 % of
 /// the range's span", `simulate` listed camber and pressure ranges. Now
-/// neither says a range of an input the tyre does not read; the slip
-/// angle, which it reads, is still said.
+/// neither says an input's range as the rig data's; the slip angle, which
+/// it reads, is still said (`tyre-eval` says the loads the cornering
+/// stiffness was fitted at, as what the tyre holds unchanged away from
+/// them: trips_s104_camber34).
 #[test]
 fn a_range_of_an_input_the_model_does_not_read_is_said_by_neither_tyre_eval_nor_simulate() {
     let tyre = "model = \"linear\"\ncornering_stiffness = 33415.56\npneumatic_trail = 0.02848\n\n[fitted_ranges]\nfz = [1503.0, 1795.0]\nalpha = [-0.034865, 0.034699]\ncamber = [-0.00032, 0.00032]\npressure = [82160.0, 84280.0]\n";

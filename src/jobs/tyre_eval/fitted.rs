@@ -13,6 +13,11 @@
 //! span the rig's spread about that level: a point past it is said by its
 //! distance in the range's unit, not as a share of a span that is noise
 //! ("4117 % of the range's span" for a camber of 0.03 rad past ±0.00036).
+//! A camber at one level (a rig file without a `camber` column is at 0,
+//! and `identify` writes `camber = [0.0, 0.0]`) is said as the fit having
+//! seen no other camber, so that no data fixed the tyre's camber terms:
+//! the range is kept, not dropped, as a point at another camber is
+//! evaluated by terms the fit held at their start values.
 //! A range of an input the model does not read (`reads.rs`: a Gim
 //! tyre's camber, pressure, a linear tyre's load) is not checked: the
 //! points are evaluated as at any value of it, which `unread.rs` says,
@@ -166,8 +171,20 @@ impl FittedLeft {
         };
         let past = past_end(self.key, self.range, self.farthest, &unit);
         if one_level(self.key, self.range) {
+            // One camber level fixes no camber term: said as such, the
+            // same whether the rig held the camber or gave no column.
+            let (spread, evaluated) = match self.key {
+                "camber" => (
+                    "",
+                    "the fit saw no other camber (a rig file without a `camber` column is at camber 0, FORMATS.md), so no data fixed the tyre's camber terms: evaluated with camber terms no data fitted",
+                ),
+                _ => (
+                    ", the rig's spread about that level, no sweep",
+                    "evaluated by extrapolation from that one level",
+                ),
+            };
             return format!(
-                "{} of {} {side} the rig data's {}, one level at {}{unit} (its [fitted_ranges]: {} to {}{unit}, the rig's spread about that level, no sweep): evaluated by extrapolation from that one level, the farthest at {}{unit}, {past}; the first at line {}, {} = {}{unit}",
+                "{} of {} {side} the rig data's {}, one level at {}{unit} (its [fitted_ranges]: {} to {}{unit}{spread}): {evaluated}, the farthest at {}{unit}, {past}; the first at line {}, {} = {}{unit}",
                 self.points,
                 plural(count, "point", "points"),
                 self.key,

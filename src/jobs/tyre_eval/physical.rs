@@ -1,27 +1,28 @@
 //! The range each input of `tyre-eval` must lie in ([`PHYSICAL`]): a
 //! value outside it is no tyre's state (a load beyond ±1 MN, a slip ratio
-//! beyond ±10, a slip angle beyond ±90° or a camber beyond ±45° (as
-//! `identify` refuses a rig's: 1.2 meant as degrees reads as 69°), said as
-//! degrees where it reads as an angle in degrees, a speed beyond 300 m/s or below 0, a pressure above
-//! 5 MPa), and is refused at its cell before anything is evaluated; and a
-//! file whose every load is negative, each load at its cell, as `identify`
-//! refuses a rig file's (a point at zero or negative load among positive
-//! ones is a wheel off the road, evaluated with no force).
+//! beyond ±10, a slip angle beyond ±90° or a camber beyond ±45°, said as
+//! degrees where it reads as an angle in degrees, a speed beyond 300 m/s
+//! or below 0, a pressure above 5 MPa), and is refused at its cell before
+//! anything is evaluated; and a file whose every load is negative, each
+//! load at its cell, as `identify` refuses a rig file's (a point at zero
+//! or negative load among positive ones is a wheel off the road,
+//! evaluated with no force).
 //!
-//! A camber column in degrees whose values stay within ±45° read in
-//! radians (0.5 meant as 0.5° reads as 28.6°) passes the range: it is asked
-//! as degrees, each cell beyond [`STEEP_CAMBER`] (20°) refused, where every
-//! camber of the column other than 0 lies beyond it — no car tyre is
-//! tested only at cambers steeper than any public `.tir`'s range (the
-//! steepest, `CAMMAX` 0.264 rad = 15.1°; MFeval's reference points just
-//! past it, 16.8°, are evaluated). A column with a camber of a car's size
-//! beside steeper ones is in radians: its steep points are evaluated and
-//! said (`camber.rs`, and a `.tir`'s ranges).
+//! A camber is refused by the one rule `identify` refuses a rig's by, in
+//! the same words (`error/camber.rs`): beyond ±45° ([`MOST_CAMBER`],
+//! steeper than any car tyre runs; 1.2 meant as degrees reads as 69°),
+//! and beyond ±20° ([`STEEP_CAMBER`]) where every camber of the column
+//! other than 0 lies there — no car tyre is tested only at cambers steeper
+//! than any public `.tir`'s range (the steepest, `CAMMAX` 0.264 rad =
+//! 15.1°), as a column in degrees reads (0.5 meant as 0.5° reads as
+//! 28.6°). A column with a camber within ±20° beside steeper ones is in
+//! radians: its steep points are evaluated, a `.tir` holding them to its
+//! `CAMMIN`/`CAMMAX` with a warning as MFeval does (`ranges.rs`), a model
+//! with no camber range saying them (`camber.rs`).
 
-use super::camber::STEEP_CAMBER;
-use crate::error::InputProblem;
+use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
 use crate::io::camber_in_degrees;
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+use std::f64::consts::FRAC_PI_2;
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
 /// end, high end, unit, what the ends are). Ends included.
@@ -43,10 +44,10 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
     (
         "camber",
-        -FRAC_PI_4,
-        FRAC_PI_4,
+        -MOST_CAMBER,
+        MOST_CAMBER,
         "rad",
-        "±45°: beyond any road wheel's camber, as `identify` refuses a rig's",
+        "±45° (0.785 rad): steeper than any car tyre runs, as `identify` refuses a rig's",
     ),
     (
         "speed",

@@ -296,7 +296,7 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     // The load range written is the rig's tested loads (405–2929 N, as the
     // PAC89 fit of the same file records), not the thinned means' (455 N
     // at the lightest level): tyre-eval would hold a tested 420 N at 455 N.
-    let tir = fs::read_to_string(&out).unwrap();
+    let tir = fs::read_to_string(out).unwrap();
     assert!(
         tir.contains("FZMIN                     = 405.3\nFZMAX                     = 2928.5\n"),
         "{}",
@@ -358,7 +358,7 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     // The Mz stage says what limits it.
     assert!(text.contains("where the error lies:"), "{text}");
     // σ on every raw sample through the written file.
-    let (h, rows) = numeric_csv(&data);
+    let (h, rows) = numeric_csv(data);
     let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
     for r in &rows {
         pts += &format!(

@@ -33,6 +33,14 @@ pub const MAX_SPEED: f64 = 150.0;
 /// larger 99th percentile is a column in degrees.
 pub const MAX_ROLL_OR_BANK: f64 = 1.0;
 
+/// The largest body roll a run in radians holds, rad (0.2 rad, 11.5°): a
+/// car on its tyres rolls about 2–7° at its grip limit (roll gradients of
+/// 1–3°/g on cars, up to about 7° for a tall SUV; Gillespie 1992, ch. 8),
+/// and past about 10° its inner wheels lift. [`MAX_ROLL_OR_BANK`]'s 57°
+/// let a roll logged in degrees under 57 (a car rolling 3°: 0–3) pass as
+/// radians and level `ay` by a roll twenty times too large.
+pub const MAX_ROLL: f64 = 0.2;
+
 /// A speed no logger's glitch of a car reads, m/s (30 times the land
 /// speed record): one such sample refuses the run, where a spike below it
 /// is repaired later by the cleaning.
@@ -414,22 +422,27 @@ pub(super) fn check_speed(path: &Path, c: &Columns, u: &[f64]) -> Result<(), Inp
     }
 }
 
-/// Refuses a roll or bank column whose 99th percentile of |value| is beyond
-/// [`MAX_ROLL_OR_BANK`]: in degrees, it would read as a car on its side.
+/// Refuses a roll, bank or sideslip column whose 99th percentile of
+/// |value| is beyond [`MAX_ROLL`] (roll) or [`MAX_ROLL_OR_BANK`] (bank,
+/// sideslip): in degrees, it would read as a car on its side.
 pub(super) fn check_roll_or_bank(
     path: &Path,
     c: &Columns,
     column: &'static str,
     v: &[f64],
 ) -> Result<(), InputError> {
-    let Some((i, p99)) = beyond(v, MAX_ROLL_OR_BANK) else {
+    let limit = match column {
+        "roll" => MAX_ROLL,
+        _ => MAX_ROLL_OR_BANK,
+    };
+    let Some((i, p99)) = beyond(v, limit) else {
         return Ok(());
     };
     let slip = UnitSlip::RollInDegrees {
         column,
         value: v[i],
         p99,
-        limit: MAX_ROLL_OR_BANK,
+        limit,
     };
     Err(c.error_at(path, i, column, slip.into()))
 }

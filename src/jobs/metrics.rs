@@ -120,6 +120,8 @@ pub fn run_with_degrees(
         }
         AyCheck::Unchecked(w) => m.warnings.push(w),
     }
+    let dt = crate::measured::clean::median_interval(&clock);
+    coarse::withhold_unresolved(&mut m.metrics, dt, m.steer_rise_time);
     if !dead.is_empty() {
         // A dead `ay`'s warning says more than that the run has none.
         m.warnings.retain(|w| w != NO_AY);
@@ -458,6 +460,16 @@ impl MeasuredMetricsReport {
     }
 }
 
+/// The ay response time's cell: below one sample interval where the log
+/// cannot read it (a warning says why), `—` without `ay`.
+fn ay_response_cell(m: &StepMetrics) -> String {
+    match (m.ay_response_time_below, m.ay_response_time) {
+        (Some(dt), _) => format!("< {}", crate::format::rounded(dt, 3)),
+        (None, Some(t)) => crate::format::fixed(t, 4),
+        (None, None) => "—".to_string(),
+    }
+}
+
 /// The metric table: one line per metric, `—` where a response lacks one,
 /// and the notes on filtering and overshoot (a response that has not
 /// settled is a warning of the report: [`StepMetrics::settling_warning`]).
@@ -490,10 +502,7 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
                 None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
             }
         ),
-        format!(
-            "  ay response time         {:>10} s",
-            opt(m.ay_response_time, 1.0)
-        ),
+        format!("  ay response time         {:>10} s", ay_response_cell(m)),
         format!(
             "  yaw-rate gain            {:>10} 1/s",
             crate::format::fixed(m.yaw_rate_gain, 4)

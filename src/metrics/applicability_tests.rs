@@ -11,6 +11,7 @@ fn moderate() -> StepMetrics {
         yaw_rate_peak_time: Some(0.3),
         yaw_rate_overshoot: Some(12.0),
         ay_response_time: Some(0.2),
+        ay_response_time_below: None,
         yaw_rate_gain: 0.3,
         yaw_rate_steady: 0.006,
         ay_steady: Some(2.0),

@@ -219,6 +219,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_peak_time: peak_time,
         yaw_rate_overshoot: peak.map(|(_, v)| (v - 1.0) * 100.0),
         ay_response_time: Some(ta - t0),
+        ay_response_time_below: None,
         yaw_rate_gain: st.r_step / st.d_step,
         yaw_rate_steady: st.r_step,
         ay_steady: Some(st.a_step),

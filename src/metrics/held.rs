@@ -329,6 +329,7 @@ fn metrics_of(
         yaw_rate_peak_time: peak_time,
         yaw_rate_overshoot: peak.at.map(|i| (r.values[i] - 1.0) * 100.0),
         ay_response_time: times.ta.map(|ta| ta - t0),
+        ay_response_time_below: None,
         yaw_rate_gain: r.steady / d.steady,
         yaw_rate_steady: r.steady,
         ay_steady: c.a.as_ref().map(|a| a.steady),

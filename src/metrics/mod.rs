@@ -222,8 +222,17 @@ pub struct StepMetrics {
     /// the threshold the run resolves (a measured run's
     /// `yaw_rate_peak_threshold`), not a measured 0.
     pub yaw_rate_overshoot: Option<f64>,
-    /// Lateral-acceleration response time, s (`None` for a run without `ay`).
+    /// Lateral-acceleration response time, s (`None` for a run without
+    /// `ay`, or one whose response time is below what the log resolves:
+    /// then [`Self::ay_response_time_below`]).
     pub ay_response_time: Option<f64>,
+    /// The bound the ay response time is below, s: one sample interval of
+    /// a log whose steer steps within one interval and whose `ay` reaches
+    /// 90 % at the first sample after the step (the crossing read is then
+    /// where the samples fall, half an interval, not the response).
+    /// `None` where the time is read.
+    #[serde(default)]
+    pub ay_response_time_below: Option<f64>,
     /// Steady-state yaw-rate gain r/δ, 1/s.
     pub yaw_rate_gain: f64,
     /// Steady-state yaw rate change, rad/s.

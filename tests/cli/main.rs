@@ -406,6 +406,41 @@ pub(crate) fn hoosier_pac89(test: &str) -> Option<&'static HoosierPac89> {
     }))
 }
 
+/// The public Hoosier cornering file fitted by `identify --model mf61`
+/// with its defaults, once for every test that reads that fit (four ran
+/// the same command, about 15 s of both cores each).
+pub(crate) struct HoosierMf61 {
+    /// What the terminal said.
+    pub(crate) stdout: String,
+    /// Its warnings.
+    pub(crate) stderr: String,
+    /// The rig file fitted.
+    pub(crate) rig: PathBuf,
+    /// The `.tir` written (its report and figures beside it:
+    /// `*.report.json`, `*.pure-fy.png`).
+    pub(crate) tir: PathBuf,
+}
+
+/// [`HoosierMf61`], fitted by the first test that asks into the test
+/// run's own scratch folder; `None` where [`shared_data`] skips `test`.
+pub(crate) fn hoosier_mf61(test: &str) -> Option<&'static HoosierMf61> {
+    static FIT: std::sync::OnceLock<HoosierMf61> = std::sync::OnceLock::new();
+    let rig = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv")?;
+    Some(FIT.get_or_init(|| {
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hoosier_mf61");
+        fs::create_dir_all(&dir).unwrap();
+        let tir = dir.join("hoosier.tir");
+        let o = identify_to(&rig, "mf61", &tir);
+        assert!(o.status.success(), "{}", stderr(&o));
+        HoosierMf61 {
+            stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+            stderr: stderr(&o),
+            rig,
+            tir,
+        }
+    }))
+}
+
 /// The stderr of a run `o` that must have failed without writing `out`.
 pub(crate) fn refused(o: &Output, out: &Path) -> String {
     assert!(!o.status.success(), "expected failure");
@@ -552,6 +587,7 @@ mod trips_s103_mend33;
 mod trips_s103_putnam39;
 mod trips_s104_camber34;
 mod trips_s104_lead;
+mod trips_s104_mend34;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

@@ -280,33 +280,23 @@ fn mf61_staged_identification_recovers_the_parameters_that_matter() {
 /// overall on these data (70.6 N on Fy, 6.23 N·m on Mz).
 #[test]
 fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
-    let Some(data) = shared_data(
-        "mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
+    let Some(fit) =
+        hoosier_mf61("mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers")
+    else {
         return;
     };
+    let (data, out) = (&fit.rig, &fit.tir);
     let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("hoosier.tir");
-    let o = run(&[
-        "identify",
-        data.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let text = &fit.stdout;
     println!("{text}");
     assert!(text.contains("59965 samples: 59965 used"), "{text}");
     crate::identify_hoosier::the_book_quotes_the_hoosier_mf61_fit_as_the_terminal_prints_it(
-        &text, &out,
+        text, out,
     );
     // The load range written is the rig's tested loads (405–2929 N, as the
     // PAC89 fit of the same file records), not the thinned means' (455 N
     // at the lightest level): tyre-eval would hold a tested 420 N at 455 N.
-    let tir = fs::read_to_string(&out).unwrap();
+    let tir = fs::read_to_string(out).unwrap();
     assert!(
         tir.contains("FZMIN                     = 405.3\nFZMAX                     = 2928.5\n"),
         "{}",
@@ -368,7 +358,7 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     // The Mz stage says what limits it.
     assert!(text.contains("where the error lies:"), "{text}");
     // σ on every raw sample through the written file.
-    let (h, rows) = numeric_csv(&data);
+    let (h, rows) = numeric_csv(data);
     let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
     for r in &rows {
         pts += &format!(

@@ -323,7 +323,7 @@ fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it
     let e = stderr(&o);
     assert_eq!(o.status.code(), Some(1), "{e}");
     assert!(
-        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±57°")
+        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±11°")
             && e.contains("is the column in degrees?")
             && e.contains(
                 "`degrees = [\"roll\"]` under [runs] in a campaign or a replay's [manoeuvre]"
@@ -334,7 +334,7 @@ fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
     assert!(
-        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±57°")
+        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±11°")
             && e.contains("`--degrees roll` to `metrics`"),
         "{e}"
     );

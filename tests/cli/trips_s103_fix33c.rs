@@ -221,25 +221,12 @@ fn a_tir_value_with_a_decimal_comma_is_asked_after_as_the_csv_reader_asks() {
 #[test]
 fn the_hoosier_mf61_fit_converges_by_default_and_its_holds_say_their_sigma() {
     let test = "the_hoosier_mf61_fit_converges_by_default_and_its_holds_say_their_sigma";
-    let Some(data) = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv") else {
+    let Some(fit) = hoosier_mf61(test) else {
         return;
     };
-    let dir = scratch(&[]);
-    let o = run_in(
-        dir.path(),
-        &[
-            "identify",
-            data.to_str().unwrap(),
-            "--model",
-            "mf61",
-            "--out",
-            "h.tir",
-        ],
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
+    let said = fit.stdout.clone() + &fit.stderr;
     assert!(!said.contains("not converged"), "{said}");
-    let report = read_json(&dir.path().join("h.report.json"));
+    let report = read_json(&fit.tir.with_extension("report.json"));
     for s in report["stages"].as_array().unwrap() {
         assert!(!s["skipped"].is_null() || s["converged"] == true, "{s}");
     }

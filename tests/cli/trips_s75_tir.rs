@@ -150,26 +150,10 @@ fn a_template_with_a_curve_beyond_any_tyre_is_warned_of() {
 /// as not identifiable by 723 %; LONGVL is said in km/h too.
 #[test]
 fn a_parameter_at_its_bound_is_said_at_its_bound() {
-    let Some(data) = shared_data(
-        "a_parameter_at_its_bound_is_said_at_its_bound",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
+    let Some(fit) = hoosier_mf61("a_parameter_at_its_bound_is_said_at_its_bound") else {
         return;
     };
-    let dir = scratch(&[]);
-    let o = run_in(
-        dir.path(),
-        &[
-            "identify",
-            data.to_str().unwrap(),
-            "--model",
-            "mf61",
-            "--out",
-            "h.tir",
-        ],
-    );
-    let text = String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "{text}");
+    let text = fit.stdout.clone() + &fit.stderr;
     assert!(
         text.contains("held: PKY4 = 2: stopped at its lower bound 0.1 when fitted (0.10"),
         "{text}"
@@ -181,7 +165,7 @@ fn a_parameter_at_its_bound_is_said_at_its_bound() {
     );
     // The report says what the terminal says: at its bound, with no
     // standard error or effect taken through it.
-    let report = read_json(&dir.path().join("h.report.json"));
+    let report = read_json(&fit.tir.with_extension("report.json"));
     let pky4 = report["stages"]
         .as_array()
         .unwrap()

@@ -23,22 +23,11 @@ fn count(rgb: &[u8], c: [u8; 3]) -> usize {
 #[test]
 fn each_loads_fitted_curve_is_drawn_in_its_points_colour_not_black() {
     let test = "each_loads_fitted_curve_is_drawn_in_its_points_colour_not_black";
-    let Some(data) = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv") else {
+    let Some(fit) = hoosier_mf61(test) else {
         return;
     };
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("o");
-    let o = run(&[
-        "identify",
-        data.to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     // The pure lateral force's figure (a figure per stage).
-    let (rgb, w, h) = png_pixels(&dir.path().join("o.pure-fy.png"));
+    let (rgb, w, h) = png_pixels(&fit.tir.with_extension("pure-fy.png"));
     let black = count(&rgb, [0, 0, 0]);
     // The five loads' colours, the palette's first five (none the key's grey).
     let loads: Vec<usize> = (0..5)

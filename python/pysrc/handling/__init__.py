@@ -1002,14 +1002,14 @@ def merge(shards: Iterable[PathLike], out: Optional[PathLike] = None) -> Dict[st
 def identify(
     data: PathLike,
     model: str,
-    seed: int = 1,
+    seed: Optional[int] = None,
     out: Optional[PathLike] = None,
     pressure: Optional[float] = None,
     camber: Optional[float] = None,
-    local: str = "lm",
+    local: Optional[str] = None,
     bin_deg: float = 0.25,
-    bin_kappa: float = 0.0025,
-    start: str = "data",
+    bin_kappa: Optional[float] = None,
+    start: Optional[str] = None,
     template: Optional[PathLike] = None,
     max_iterations: Optional[int] = None,
     hold: Optional[Mapping[str, float]] = None,
@@ -1025,7 +1025,12 @@ def identify(
     for mf61/mf62 (``{"PKY4": 2.0}``), the tyre file's parameters for the
     other models (``{"a1": -22.1}`` for pac89); an unknown name is an
     :class:`OptionsError` with ``name``, ``what`` (``"pac89 parameter"``)
-    and ``known``. Returns an
+    and ``known``. A keyword the model's fit does not read is refused
+    with an :class:`OptionsError`, as the command line refuses its flag:
+    ``seed``, ``local``, ``bin_kappa``, ``load``, ``pressure``, ``camber``
+    by mf61/mf62 (defaults when not given: 1, ``"lm"``, 0.0025, every
+    level), ``start`` (default ``"data"``), ``template``,
+    ``max_iterations`` by the swarm models. Returns an
     :class:`Identification` (``to_dict()``: ``<out>.report.json``) with
     ``tyre``: the fitted :class:`Tyre`. With
     ``out`` the tyre file, the report and the figure are written.

@@ -60,7 +60,12 @@ class StepMetrics:
     yaw_rate_overshoot: Optional[float]
     """Yaw-rate overshoot, %; None without a peak (below what the run resolves)."""
     ay_response_time: Optional[float]
-    """Lateral-acceleration response time, s (None without ``ay``)."""
+    """Lateral-acceleration response time, s (None without ``ay``, or
+    below what the log resolves: then ``ay_response_time_below``)."""
+    ay_response_time_below: Optional[float]
+    """The bound the ay response time is below, s: one sample interval of a
+    log whose steer steps within one interval and whose ``ay`` reaches
+    90 % at the first sample after it (None where the time is read)."""
     yaw_rate_gain: float
     """Steady-state yaw-rate gain r/δ, 1/s."""
     yaw_rate_steady: float

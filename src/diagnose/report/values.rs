@@ -8,7 +8,7 @@
 //! Values in the parameter's own unit; RMS values in the channel's unit
 //! (rad/s, m/s², rad).
 
-use crate::diagnose::effects::{Bound, Group, Parameter};
+use crate::diagnose::effects::{Bound, Group, Parameter, RollDynamics};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::parts::Part;
 use serde::Serialize;
@@ -157,7 +157,53 @@ pub fn jackknife(values: &[f64]) -> Option<f64> {
 /// ([`Parameter::bound_at`]).
 pub use crate::optim::bounded::LIMIT_RESOLUTION;
 
+/// The share of its range within which a fitted value stands near a
+/// search bound when its standard error is smaller: the fits stop short of
+/// a bound they press against by their own tolerance, not the data's.
+pub const NEAR_SEARCH_BOUND: f64 = 0.01;
+
+/// Where a value stands near a search bound ([`ParameterValue::near_search_bound`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NearBound {
+    /// The bound, in the parameter's unit.
+    pub bound: f64,
+    /// Within its standard error of it (else within [`NEAR_SEARCH_BOUND`]
+    /// of the range).
+    pub by_std_error: bool,
+}
+
 impl ParameterValue {
+    /// The search bound the value stands near but not on: within the larger
+    /// of its standard error (a determined one) and [`NEAR_SEARCH_BOUND`] of
+    /// its range, where the data would take it as far (a sensor delay of
+    /// 0.299 s against its 0.3 s bound was not said). The verdict's warning
+    /// reads it with [`Self::at_bound`]; the verdict's rules read only
+    /// `at_bound`, where the fit itself stopped.
+    pub fn near_search_bound(&self) -> Option<NearBound> {
+        if self.at_bound || self.unseen || self.held.is_some() || !self.value.is_finite() {
+            return None;
+        }
+        let q = self.effect_parameter.or_else(|| {
+            let name = self.name.strip_prefix("roll.")?;
+            RollDynamics::PARAMETERS.iter().find(|q| q.name == name)
+        })?;
+        let (lo, hi) = q.bounds;
+        let share = NEAR_SEARCH_BOUND * (hi - lo);
+        let se = Some(self.std_error).filter(|e| self.determined && e.is_finite());
+        let margin = se.map_or(share, |e| e.max(share));
+        let by_std_error = se.is_some_and(|e| e > share);
+        let near = |limit: Bound, gap: f64| limit == Bound::Search && gap <= margin;
+        let bound = match () {
+            _ if near(q.limits.1, hi - self.value) => hi,
+            _ if near(q.limits.0, self.value - lo) => lo,
+            _ => return None,
+        };
+        Some(NearBound {
+            bound,
+            by_std_error,
+        })
+    }
+
     /// Parameter `q` of `group` fitted to `value` with standard error
     /// `std_error`, and where it stands: on a bound (a search bound as
     /// [`Parameter::bound_at`] finds it, a physical limit within

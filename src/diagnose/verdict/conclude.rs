@@ -110,7 +110,9 @@ fn explained(
 ) -> Explained {
     let mut warnings = worsened(shrinkage);
     warnings.extend(left(shrinkage));
-    let on_bound = on_search_bound(&r.parameters);
+    // Near as well as on: the warning is the reader's; the rules' test
+    // (`on_search_bound`) is where the fit stopped.
+    let on_bound = at_or_near_search_bound(&r.parameters);
     if !on_bound.is_empty() {
         warnings.push(VerdictWarning::OnSearchBound {
             parameters: on_bound,
@@ -364,6 +366,17 @@ pub(crate) fn closest(rows: impl Iterator<Item = Ranked>) -> Vec<Closest> {
         }
     }
     out
+}
+
+/// The parameters of `p` on or near the end of their search range
+/// ([`ParameterValue::near_search_bound`]): the verdict's warning.
+fn at_or_near_search_bound(p: &[ParameterValue]) -> Vec<ParameterValue> {
+    p.iter()
+        .filter(|v| {
+            (v.at_bound && v.bound == Some(Bound::Search)) || v.near_search_bound().is_some()
+        })
+        .cloned()
+        .collect()
 }
 
 /// The parameters of `p` on the end of their search range.

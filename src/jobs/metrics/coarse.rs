@@ -208,6 +208,24 @@ fn measured_at(kind: &StepKind, b: &Bias) -> String {
     )
 }
 
+/// Withholds an ay response time the log cannot read: where the steer
+/// steps within one sample interval `dt` (its 10–90 % rise `steer_rise`
+/// under `dt`, s) and `ay` is at 90 % at the first sample after it (a car
+/// whose front force follows the steer at once), both crossings fall in
+/// the step's one interval and the time read is where the samples fall
+/// (+dt/2 from time zero, interpolated half-way, to the sample after):
+/// it printed "0.000 s". Said below `dt` instead, in the table and the
+/// JSON alike ([`StepMetrics::ay_response_time_below`]).
+pub fn withhold_unresolved(m: &mut StepMetrics, dt: f64, steer_rise: f64) {
+    if !(dt.is_finite() && dt > 0.0 && steer_rise < dt) {
+        return;
+    }
+    if m.ay_response_time.is_some_and(|t| t.abs() < dt) {
+        m.ay_response_time = None;
+        m.ay_response_time_below = Some(dt);
+    }
+}
+
 /// The warnings of what the sample interval `dt` (s) limits in `m`, with
 /// the steer's 10–90 % rise `steer_rise` (s).
 pub fn coarse_said(m: &StepMetrics, dt: f64, steer_rise: f64) -> Vec<String> {
@@ -246,6 +264,11 @@ pub fn coarse_said(m: &StepMetrics, dt: f64, steer_rise: f64) -> Vec<String> {
             measured_at(kind, row),
             range(row.response),
             finer(kind, 1.0 / dt)
+        ));
+    }
+    if m.ay_response_time_below.is_some() {
+        said.push(format!(
+            "the ay reaches 90 % of its step at the first sample after the steer's step, within the one {interval} s interval the steer steps in: its response time is only known to be under {interval} s (`ay_response_time` null, `ay_response_time_below` {interval} in --json), not read from a {hz} Hz log; ramp the step over a few intervals, or log faster, to read it"
         ));
     }
     // The median interval of a log may read a hair under its period.

@@ -11,10 +11,20 @@ use crate::diagnose::report::{ParameterValue, StdErrorBasis};
 /// A parameter on the end of its search range, to four decimals: its
 /// name, value and unit (a ratio's unit, `-`, not written).
 pub(super) fn on_bound(p: &ParameterValue) -> String {
-    match p.unit {
-        "" | "-" => format!("{} = {:.4}", p.name, p.value),
-        unit => format!("{} = {:.4} {unit}", p.name, p.value),
-    }
+    let unit = match p.unit {
+        "" | "-" => String::new(),
+        unit => format!(" {unit}"),
+    };
+    // One near its bound, not on it, says how near.
+    let near = p.near_search_bound().map_or(String::new(), |n| {
+        let within = match n.by_std_error {
+            true => format!("its standard error, {}{unit}", std_error(p.std_error)),
+            false => "1 % of its range".to_string(),
+        };
+        let bound = crate::format::rounded(n.bound, 6);
+        format!(" (its bound {bound}{unit} lies within {within})")
+    });
+    format!("{} = {:.4}{unit}{near}", p.name, p.value)
 }
 
 /// The parameters on their search bound in a verdict's warning: an

@@ -269,3 +269,34 @@ fn a_channel_whose_gap_the_effects_leave_is_warned_of_and_not_one_within_noise_o
     assert!(left(std::slice::from_ref(&grown)).is_empty());
     assert_eq!(worsened(&[grown]).len(), 1);
 }
+
+/// A sensor delay of 0.2991 ± 0.0165 s against its 0.3 s search bound (the
+/// Putnam log with the road prior) stopped short of the bound by less
+/// than its standard error, and was not said to press on it: now it is;
+/// one further off than its standard error and 1 % of the range is not,
+/// and the physical floor (0 s) is never one.
+#[test]
+fn a_verdict_parameter_within_its_standard_error_of_a_search_bound_is_warned_of() {
+    let q = &EffectKind::SensorDelay.parameters()[0];
+    let group = Group::Effect(EffectKind::SensorDelay);
+    let near = ParameterValue::of(group, q, 0.2991, 0.0165);
+    assert!(!near.at_bound, "the rules' test is unchanged");
+    let n = near.near_search_bound().unwrap();
+    assert_eq!((n.bound, n.by_std_error), (0.3, true));
+    // Within 1 % of the 0.3 s range (0.003 s) with a smaller error.
+    let n = ParameterValue::of(group, q, 0.2975, 0.001).near_search_bound();
+    assert_eq!(n.map(|n| (n.bound, n.by_std_error)), Some((0.3, false)));
+    let off = ParameterValue::of(group, q, 0.28, 0.0165);
+    let floor = ParameterValue::of(group, q, 0.0001, 0.0165);
+    assert_eq!(
+        (off.near_search_bound(), floor.near_search_bound()),
+        (None, None)
+    );
+    let p = [near.clone(), off, floor];
+    assert_eq!(at_or_near_search_bound(&p), vec![near]);
+    assert!(on_search_bound(&p).is_empty());
+    // The roll mode's, named `roll.*`, by the roll dynamics' bounds.
+    let damping = &RollDynamics::PARAMETERS[1];
+    let roll = ParameterValue::of(Group::Roll, damping, 1.49, 0.02);
+    assert_eq!(roll.near_search_bound().map(|n| n.bound), Some(1.5));
+}

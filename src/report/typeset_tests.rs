@@ -159,8 +159,9 @@ fn a_text_measures_as_plotters_places_it() {
 
 #[test]
 fn a_rotated_label_reads_upwards_from_its_anchor() {
-    // A y axis's label is turned a quarter clockwise... as plotters turns
-    // it: ink left of and above the anchor for a 270° turn.
+    // A y axis's label is turned 270° clockwise (plotters' Rotate270):
+    // its line runs up the image from the anchor, as long as its box.
+    super::super::plot::ensure_font();
     let (w, h) = (60u32, 120u32);
     let mut rgb = vec![0u8; 3 * (w * h) as usize];
     {
@@ -180,15 +181,14 @@ fn a_rotated_label_reads_upwards_from_its_anchor() {
         .filter(|&(x, y)| inked(x, y))
         .collect();
     assert!(!pixels.is_empty());
-    let height = Line::of("r [deg/s]", 13.0).box_size().0 as usize;
+    let length = Line::of("r [deg/s]", 13.0).box_size().0 as usize;
     let (top, bottom) = (
         pixels.iter().map(|p| p.1).min().unwrap(),
         pixels.iter().map(|p| p.1).max().unwrap(),
     );
-    // The line runs up the image from the anchor, as long as its box.
     assert!(bottom <= 100 && bottom + 3 >= 100, "{top}..{bottom}");
     assert!(
-        (bottom - top).abs_diff(height) <= 3,
-        "{top}..{bottom} for {height}"
+        (bottom - top).abs_diff(length) <= 3,
+        "{top}..{bottom} for {length}"
     );
 }

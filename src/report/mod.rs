@@ -16,6 +16,7 @@ pub mod progress;
 pub mod series;
 pub mod stability;
 pub mod stale;
+mod typeset;
 
 pub use lock::OutputLock;
 

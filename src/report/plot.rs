@@ -27,10 +27,12 @@ use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
 
-static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
+use super::typeset::{Typeset, FONT};
 static REGISTER: Once = Once::new();
 
-fn ensure_font() {
+/// plotters' own font table holds the embedded font: its `Text` elements
+/// and the SVG backend measure text by it.
+pub(super) fn ensure_font() {
     REGISTER.call_once(|| {
         // Registration only fails on a malformed font, and the font is
         // compiled in: a failure here is a build defect.
@@ -221,7 +223,9 @@ impl Figure {
         let (w, h) = self.size();
         let mut rgb = vec![0u8; 3 * w as usize * h as usize];
         {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            // Text set by the font's own spacing (plotters' lost each
+            // glyph's bearing); lines and fills are the bitmap's.
+            let root = Typeset(BitMapBackend::with_buffer(&mut rgb, (w, h))).into_drawing_area();
             self.draw_on(&root, Raster::Pixels)?;
         }
         let mut png = Vec::new();

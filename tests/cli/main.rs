@@ -550,6 +550,7 @@ mod trips_s103_fix33c;
 mod trips_s103_fix33d;
 mod trips_s103_mend33;
 mod trips_s103_putnam39;
+mod trips_s104_fix34b;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

@@ -39,14 +39,14 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
         -FRAC_PI_2,
         FRAC_PI_2,
         "rad",
-        "±90°: beyond it the wheel rolls backwards",
+        "beyond it the wheel rolls backwards",
     ),
     (
         "camber",
         -FRAC_PI_4,
         FRAC_PI_4,
         "rad",
-        "±45°: beyond any road wheel's camber, as `identify` refuses a rig's",
+        "beyond any road wheel's camber, as `identify` refuses a rig's",
     ),
     (
         "speed",

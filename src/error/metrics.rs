@@ -184,7 +184,7 @@ pub enum MetricsError {
     /// A record too short for its steady window: the window, the record's
     /// last `--steady-window` seconds, starts before the steer has reached
     /// its step, so its means mix the step (and the time before it) in.
-    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so {}; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), advice.words(to - settles), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
+    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so {}; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), advice.words(to - settles, *to), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
     ShortForSteadyWindow {
         /// Which shorter window, if any, reads a settled response.
         advice: SteadyAdvice,
@@ -271,8 +271,10 @@ pub enum SteadyAdvice {
 
 impl SteadyAdvice {
     /// The advice's words, the steer held for `held` s before the record
-    /// ends.
-    pub(crate) fn words(&self, held: f64) -> String {
+    /// ends at `end` s. The windows tried are lengths, each ending at the
+    /// record's end: said with the starts they give (said as "none from
+    /// 0.23 s to 0.87 s", they read as starts before the step).
+    pub(crate) fn words(&self, held: f64, end: f64) -> String {
         let most = super::hundredths_down(held);
         match *self {
             Self::SteerOnly => {
@@ -283,8 +285,10 @@ impl SteadyAdvice {
                 super::hundredths_down(w)
             ),
             Self::NoneSettles { shortest } => format!(
-                "a steady window must start after it, and none from {} s to {most} s reads a settled response (every channel within 2 % of its step and no longer approaching it): the record ends before the car reaches its steady state, and a gain read from it is no steady-state gain; record the step held longer",
-                crate::format::fixed(shortest, 2)
+                "a steady window must start after it, and no window {} s to {most} s long ending at the record's end (starting from {} s to {} s) reads a settled response (every channel within 2 % of its step and no longer approaching it): the record ends before the car reaches its steady state, and a gain read from it is no steady-state gain; record the step held longer",
+                crate::format::fixed(shortest, 2),
+                crate::format::fixed(end - (held * 100.0).floor().max(0.0) / 100.0, 2),
+                crate::format::fixed(end - shortest, 2)
             ),
         }
     }

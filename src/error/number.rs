@@ -147,6 +147,34 @@ pub fn range(lo: f64, hi: f64) -> String {
     }
 }
 
+/// `v` beside the end of `lo..=hi` it passes, each with its unit and the
+/// digits that tell them apart: "6000000 Pa is above 5000000 Pa, the
+/// largest", not "outside 0 to 5000000 Pa" (a range whose other end a
+/// reader takes for the least value accepted).
+pub(crate) fn past_end(v: f64, lo: f64, hi: f64, unit: &str) -> String {
+    let (v_text, b) = numbers_apart(v, &[lo, hi]);
+    let u = |x: &str| match unit {
+        "" => x.to_string(),
+        _ => format!("{x} {unit}"),
+    };
+    // An angle's symmetric range is said as `identify` and the degrees
+    // check say theirs, "beyond ±90°" with the end in radians beside: one
+    // limit said two ways ("beyond ±90°" at 3 rad, "above 1.5708 rad" at
+    // 1e300) read as two limits.
+    if unit == "rad" && lo == -hi && v.abs() > hi {
+        return format!(
+            "{} is beyond ±{}° (±{}), the largest",
+            u(&v_text),
+            number(hi.to_degrees()),
+            u(&b[1])
+        );
+    }
+    match v > hi {
+        true => format!("{} is above {}, the largest", u(&v_text), u(&b[1])),
+        false => format!("{} is below {}, the least", u(&v_text), u(&b[0])),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

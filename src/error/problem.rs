@@ -11,7 +11,7 @@
 use super::camber::camber_beyond;
 use super::duplicate::DuplicateAt;
 use super::level_slip::{requested as requested_text, unit_slip, LevelSlip};
-use super::number::Num;
+use super::number::{past_end, Num};
 use super::piece::RefusedPiece;
 use super::rig::Variable;
 use super::rig_sign::wrong_sign;
@@ -22,22 +22,6 @@ use super::PathFound;
 use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
-
-/// `v` beside the end of `lo..=hi` it passes, each with its unit and the
-/// digits that tell them apart: "6000000 Pa is above 5000000 Pa, the
-/// largest", not "outside 0 to 5000000 Pa" (a range whose other end a
-/// reader takes for the least value accepted).
-fn past_end(v: f64, lo: f64, hi: f64, unit: &str) -> String {
-    let (v_text, b) = super::number::numbers_apart(v, &[lo, hi]);
-    let u = |x: &str| match unit {
-        "" => x.to_string(),
-        _ => format!("{x} {unit}"),
-    };
-    match v > hi {
-        true => format!("{} is above {}, the largest", u(&v_text), u(&b[1])),
-        false => format!("{} is below {}, the least", u(&v_text), u(&b[0])),
-    }
-}
 
 /// What is wrong with an input file's content.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -268,10 +252,13 @@ pub enum InputProblem {
     PointsAsTyre,
     /// A load a Magic Formula file's vertical model carries at no loaded
     /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
-    #[error("fz = {} N is more than the tyre's vertical model carries: {}, so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), super::carried::at_most(*most, *free))]
+    #[error("fz = {} N is more than the tyre's vertical model carries: {}, so no loaded radius `rl` is physical there{}", Num(*fz), super::carried::at_most(*most, *free, *blown_rl), super::carried::held(*blown_rl))]
     LoadNotCarried {
         /// The load, N.
         fz: f64,
+        /// The `rl` MFeval's closed form gives where the effective rolling
+        /// radius, taken at the load given, falls through 0 (any mode).
+        blown_rl: Option<f64>,
         /// The most the vertical model carries, N.
         most: f64,
         /// The free radius, m.

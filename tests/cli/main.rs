@@ -586,6 +586,7 @@ mod trips_s103_fix33d;
 mod trips_s103_mend33;
 mod trips_s103_putnam39;
 mod trips_s104_camber34;
+mod trips_s104_fix34b;
 mod trips_s104_lead;
 mod trips_s104_mend34;
 mod trips_s62;

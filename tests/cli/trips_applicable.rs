@@ -158,10 +158,13 @@ fn tyre_eval_lists_every_non_physical_row_in_file_order() {
     // broke (it read "1.5708 rad is outside -1.5708 to 1.5708 rad"), and
     // only the end it passes is said.
     for (alpha, said) in [
-        ("1.5708", "1.5708 rad is above 1.570796 rad, the largest"),
+        (
+            "1.5708",
+            "1.5708 rad is beyond ±90° (±1.570796 rad), the largest",
+        ),
         (
             "1.5707963267958966",
-            "1.5707963268 rad is above 1.57079632679 rad, the largest",
+            "1.5707963268 rad is beyond ±90° (±1.57079632679 rad), the largest",
         ),
     ] {
         let points = format!("fz,kappa,alpha,camber,speed\n4000,0,{alpha},0,20\n");

@@ -200,7 +200,7 @@ fn a_record_too_short_for_a_steady_state_is_not_advised_a_wrong_window() {
     assert!(!o.status.success(), "{e}");
     assert!(!e.contains("so a `--steady-window` of at most"), "{e}");
     assert!(
-        e.contains("so a steady window must start after it, and none from 0.18 s to 0.58 s reads a settled response"),
+        e.contains("so a steady window must start after it, and no window 0.18 s to 0.58 s long ending at the record's end (starting from 1.02 s to 1.42 s) reads a settled response"),
         "{e}"
     );
     assert!(

@@ -237,13 +237,37 @@ pub(crate) fn set_first_sample_slips(r: &mut super::SwarmReport, d: &RigData) {
         Channel::LongitudinalForce => (SlipAxis::Ratio, 1),
         _ => (SlipAxis::Angle, 0),
     };
-    let window = r
-        .linear_window
-        .as_ref()
-        .map_or(f64::INFINITY, |w| w.max_abs_alpha_deg.to_radians());
+    let window = linear_window_reach(r);
     let (slips, spans) = sample_reach(d, axis, &r.grouping.levels, &r.conditions, window);
     r.sample_slips[k] = slips;
     r.sample_spans = union(&r.sample_spans, &spans);
+}
+
+/// How far from zero slip angle the samples of a linear tyre's fit reach
+/// (rad; infinite where its window left no point out). The window keeps
+/// the points, means over slip bins, within it: a sample of a kept bin
+/// lies up to half a bin past its mean's bin centre, so the reach is the
+/// outer edge of the outermost kept bin. (The window's own reach, the
+/// largest bin mean, left a rig's ±0.040 rad samples out of a written
+/// `alpha = [-0.039, 0.039]`, where every sample was fitted.)
+fn linear_window_reach(r: &super::SwarmReport) -> f64 {
+    let Some(w) = r.linear_window.as_ref() else {
+        return f64::INFINITY;
+    };
+    if w.points_left_out == 0 && w.loads_left_out.is_empty() {
+        return f64::INFINITY;
+    }
+    let largest = r
+        .conditions
+        .iter()
+        .flat_map(|c| &c.points)
+        .map(|p| p.slip().abs())
+        .fold(0.0, f64::max);
+    let bin = r.options.alpha_bin_deg.to_radians();
+    match bin > 0.0 {
+        true => ((largest / bin).round() + 0.5) * bin,
+        false => largest,
+    }
 }
 
 /// The spans of `a` and `b` joined name by name.

@@ -43,7 +43,10 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
             .of_rows(whole, &d.moments, &grouped.report.selected),
         None => d.measured,
     }
-    .with_pure_fx(d.long_view.as_ref(), &grouped.report.selected);
+    // Counted only where the file has a longitudinal sweep (`long_view`
+    // kept): a cornering sweep's rows at alpha ≈ 0 and kappa = 0 are no
+    // longitudinal test, and their `fx` no data left unfitted.
+    .with_pure_fx(long_view.as_ref(), &grouped.report.selected);
     let tyre0 = start_tyre_of(model, median_load(&conditions))?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;

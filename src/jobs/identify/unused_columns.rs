@@ -24,6 +24,10 @@ pub struct Measured {
     total_mz: Option<usize>,
     /// The `fx` of the pure longitudinal rows (of a selection's where
     /// one was asked for): said where no longitudinal force is fitted.
+    /// Counted only where those rows (|alpha| ≤ 1e-3 rad) reach |kappa| ≥
+    /// 0.01, a longitudinal sweep (`identify/pure.rs`): a cornering
+    /// sweep's three rows at alpha −0.001, 0, 0.001 and kappa 0 were said
+    /// as "3 values of `fx` in the pure longitudinal rows not fitted".
     pure_fx: usize,
 }
 

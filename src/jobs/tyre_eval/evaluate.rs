@@ -56,7 +56,7 @@ pub fn run(
     let c = PointChecks::of(at, fitted_ranges.as_ref(), &given, (&f, &unread), lines);
     let mut extras = magic_formula_extras(&tyre, &given, lines);
     let radius_above_free = std::mem::take(&mut extras.radius_above_free);
-    not_carried::refuse_not_carried(points, &read.file, &extras.not_carried)?;
+    not_carried::refuse_not_carried(points, &read.file, &extras.not_carried, &extras.blown)?;
     let tyre_side = match &tyre {
         Tyre::MagicFormula(m) => Some(m.side),
         _ => None,

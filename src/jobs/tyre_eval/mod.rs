@@ -230,6 +230,7 @@ struct MfExtras {
     ranges_left: Vec<ranges::RangeLeft>,
     loaded_radius: Option<Vec<f64>>,
     not_carried: Vec<not_carried::NotCarriedAt>,
+    blown: Vec<not_carried::BlownAt>,
     radius_above_free: Vec<radius::RadiusAboveFree>,
 }
 
@@ -270,6 +271,9 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
     let radius_above_free = loaded_radius
         .as_deref()
         .map_or_else(Vec::new, |rl| radius::above_free(t, rl, &inputs, lines));
+    let blown = loaded_radius
+        .as_deref()
+        .map_or_else(Vec::new, |rl| radius::blown_by_load(t, rl, &inputs));
     MfExtras {
         mode: Some(t.mode().use_mode()),
         clamped,
@@ -277,6 +281,7 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
         ranges_left: ranges::ranges_left(t, &inputs, lines),
         loaded_radius,
         not_carried,
+        blown,
         radius_above_free,
     }
 }

@@ -32,15 +32,32 @@ pub(super) fn pressure_to_blame(t: &crate::tyre::mf::MagicFormula, q: &MfInput) 
     (within != p && carried(within)).then_some(p)
 }
 
+/// A point whose effective rolling radius, at the load given, has fallen
+/// through 0 (`radius.rs`'s load cause): its row, load (N), the `rl`
+/// MFeval's closed form gives there and the free radius at its speed (m).
+pub(super) type BlownAt = (usize, f64, f64, f64);
+
 /// Refuses the points whose load the vertical model does not carry, at
 /// the point's row and the load's column; where the pressure is the cause
-/// ([`pressure_to_blame`]), at the pressure's column.
+/// ([`pressure_to_blame`]), at the pressure's column; and the points whose
+/// `rl` the load blows past the free radius (`blown`), in every mode: a
+/// radius written there, 0.717 m on a tyre of 0.349 m, is no tyre's.
 pub(super) fn refuse_not_carried(
     points: &Path,
     file: &crate::io::Columns,
     not_carried: &[NotCarriedAt],
+    blown: &[BlownAt],
 ) -> Result<(), Error> {
-    let errors = not_carried
+    let blown = blown.iter().map(|&(i, fz, rl, free)| {
+        let problem = InputProblem::LoadNotCarried {
+            fz,
+            blown_rl: Some(rl),
+            most: f64::NAN,
+            free,
+        };
+        (i, file.error_at(points, i, "fz", problem))
+    });
+    let mut errors: Vec<_> = not_carried
         .iter()
         .map(|(i, n, blamed)| match blamed {
             Some(pressure) => {
@@ -55,13 +72,19 @@ pub(super) fn refuse_not_carried(
             _ => {
                 let problem = InputProblem::LoadNotCarried {
                     fz: n.fz,
+                    blown_rl: None,
                     most: n.most,
                     free: n.free,
                 };
                 file.error_at(points, *i, "fz", problem)
             }
         })
+        .enumerate()
+        .map(|(k, e)| (not_carried[k].0, e))
+        .chain(blown)
         .collect();
+    errors.sort_by_key(|e| e.0);
+    let errors = errors.into_iter().map(|e| e.1).collect();
     match crate::error::InputError::all_of(points, errors) {
         Some(e) => Err(e.into()),
         None => Ok(()),

@@ -40,14 +40,14 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
         -FRAC_PI_2,
         FRAC_PI_2,
         "rad",
-        "±90°: beyond it the wheel rolls backwards",
+        "beyond it the wheel rolls backwards",
     ),
     (
         "camber",
         -MOST_CAMBER,
         MOST_CAMBER,
         "rad",
-        "±45° (0.785 rad): steeper than any car tyre runs, as `identify` refuses a rig's",
+        "steeper than any car tyre runs, as `identify` refuses a rig's",
     ),
     (
         "speed",

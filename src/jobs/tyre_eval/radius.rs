@@ -16,8 +16,11 @@
 //! size (2.39 m on the public `fsae190_50R10.tir` at 1 MN, free radius
 //! 0.233 m). Which it is is found by evaluating the point again at κ = 0,
 //! then also at `FNOMIN`. Written as MFeval writes it, so that the file
-//! stays comparable, and said so that no one reads it as a radius. Radii
-//! in m, loads in N.
+//! stays comparable, and said so that no one reads it as a radius; where
+//! the load is the cause, the point is refused at its row in every mode
+//! ([`blown_by_load`]): MFeval's forces there are those at `FZMAX` and its
+//! `rl` none (0.717 m on `car205_60R19.tir` at 999999 N, free radius
+//! 0.349 m). Radii in m, loads in N.
 
 use crate::format::{plural, readable, rounded};
 use crate::tyre::mf::{MagicFormula, MfInput};
@@ -131,6 +134,26 @@ pub(super) fn above_free(
         }
     }
     out
+}
+
+/// The points of `inputs` whose loaded radius `rl` is above the free
+/// radius at their speed for their load ([`RadiusCause::Load`]): the
+/// effective rolling radius, taken at the load given, fallen through 0.
+/// Refused in every mode ([`super::not_carried`]): no radius of the tyre.
+pub(super) fn blown_by_load(
+    t: &MagicFormula,
+    rl: &[f64],
+    inputs: &[MfInput],
+) -> Vec<super::not_carried::BlownAt> {
+    inputs
+        .iter()
+        .enumerate()
+        .filter(|(i, q)| q.fz > 0.0 && !rl[*i].is_nan())
+        .filter_map(|(i, q)| {
+            let free = free_at_speed(t, q).filter(|f| rl[i] > f + TOLERANCE)?;
+            (cause(t, q, free) == RadiusCause::Load).then_some((i, q.fz, rl[i], free))
+        })
+        .collect()
 }
 
 impl RadiusAboveFree {

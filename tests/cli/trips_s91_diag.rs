@@ -51,7 +51,7 @@ fn a_verdict_reached_by_the_pairs_fallback_says_so() {
         "{said}"
     );
     assert!(
-        said.contains("  reached by the pairs fallback, not the greedy search: the greedy search from the best single on held-out runs, relaxation_length (28.6 %), stopped with no verdict (relaxation_length removes 28.6 % alone, and no effect added to it removed 30 % of what it leaves; a verdict must remove 30 % and lower the BIC); the pair sensor_delay+yaw_inertia (83.8 %) came from the pairs of the best singles in sample ("),
+        said.contains("  reached by the pairs fallback, not the greedy search: the greedy search from the best single on held-out runs, relaxation_length (28.6 %), stopped with no verdict (relaxation_length removes 28.6 % alone, and no effect added to it removed 30 % of what it leaves; a verdict must remove 30 % and lower the BIC); the pair sensor_delay+yaw_inertia (83.7 %) came from the pairs of the best singles in sample ("),
         "{said}"
     );
     assert!(

@@ -22,7 +22,9 @@ use super::*;
 /// `diagnose/fit/fold_check.rs`), and the
 /// verdict, its delay and every ranked effect's held-out reduction are
 /// those of before to 0.01 point (sensor_delay 85.29 %, steer_path
-/// 86.05 %, relaxation_length 31.17 %).
+/// 86.05 %, relaxation_length 31.17 %) until the settled fold refits
+/// moved them to 85.27, 86.04 and 31.90 % (relaxation_length's folds had
+/// stopped short, 0.7 point of held-out reduction).
 #[test]
 fn the_eight_run_campaign_is_diagnosed_in_fewer_replays_with_the_same_verdict() {
     let dir = tempfile::tempdir().unwrap();
@@ -57,9 +59,9 @@ fn the_eight_run_campaign_is_diagnosed_in_fewer_replays_with_the_same_verdict() 
     let delay = d["verdict"]["parameters"][0]["value"].as_f64().unwrap();
     assert!((delay - 0.049604).abs() < 1e-6, "{delay}");
     for (effect, before) in [
-        ("sensor_delay", 85.286),
-        ("steer_path", 86.050),
-        ("relaxation_length", 31.170),
+        ("sensor_delay", 85.272),
+        ("steer_path", 86.044),
+        ("relaxation_length", 31.899),
     ] {
         let r = ranked(&d, effect)["reduction_percent"].as_f64().unwrap();
         assert!(

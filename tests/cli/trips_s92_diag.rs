@@ -48,7 +48,7 @@ fn a_tie_with_an_idle_parameter_goes_to_the_simpler_set_from_the_greedy_search_t
         .collect();
     assert_eq!(idle, ["steer_path.lag"], "{said}");
     assert!(
-        said.contains("verdict: sensor_delay+yaw_inertia explains the gap: held-out error 5.286 → 1.080 (noise level 0.941), 89.8 % of the gap above noise removed; but steer_path in place of sensor_delay (steer_path is the single the set was grown from, and sensor_delay took its place by the parsimony rule below): steer_path+yaw_inertia removes 90.5 % (gap above noise 0.496), against sensor_delay+yaw_inertia's 89.8 % (0.531): within the set's confounding window"),
+        said.contains("verdict: sensor_delay+yaw_inertia explains the gap: held-out error 5.286 → 1.081 (noise level 0.941), 89.8 % of the gap above noise removed; but steer_path in place of sensor_delay (steer_path is the single the set was grown from, and sensor_delay took its place by the parsimony rule below): steer_path+yaw_inertia removes 90.5 % (gap above noise 0.496), against sensor_delay+yaw_inertia's 89.8 % (0.532): within the set's confounding window"),
         "{said}"
     );
     // The idle lag's value lies in a flat valley (6.4e-5 ± 0.062 s before

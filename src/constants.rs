@@ -14,3 +14,9 @@ pub const G: f64 = 9.80665;
 /// Talladega's 33°. A scenario's `road_bank` beyond it is refused and a
 /// run's `bank` column beyond it is said to be in degrees: one limit.
 pub const STEEPEST_BANK: f64 = 0.61;
+
+/// The most iterations a user's cap may give a stage of the staged Magic
+/// Formula fit: a stage that converges does so in tens to hundreds (the
+/// default 150 is continued to 50 per free parameter), and each iteration
+/// replays every row.
+pub const MOST_STAGE_ITERATIONS: usize = 10_000;

@@ -60,7 +60,7 @@ pub struct IdentifyArgs {
     /// mf61/mf62: Levenberg–Marquardt iterations per step at most
     /// (`--start paper` runs at least 500, the paper's scheme; default
     /// 150).
-    #[arg(long)]
+    #[arg(long, value_parser = super::count)]
     max_iterations: Option<usize>,
     /// Hold a parameter at a value, NAME=VALUE (repeatable): for mf61/mf62
     /// a .tir coefficient in the file's SI units in every stage, e.g.

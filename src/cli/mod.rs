@@ -145,6 +145,13 @@ fn whole_number(s: &str) -> Result<u64, String> {
         .map_err(|_| "expected a whole number of 0 or more".to_string())
 }
 
+/// A count written out (`300`): `1e3`, which clap's own parser refused
+/// with "invalid digit found in string", is asked for in digits.
+fn count(s: &str) -> Result<usize, String> {
+    s.parse::<usize>()
+        .map_err(|_| format!("expected a whole number written in digits (such as 300), not `{s}`"))
+}
+
 /// The parser of a closed set of names the library lists (the registry's
 /// models, a job's choices): its values listed in the help, an unknown
 /// value refused with the library's own message (`FromStr`), which names

@@ -553,7 +553,8 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
     let report = identify(d, &d.join("constants.tir"), "data", "fit.tir");
     // The figures of eight stages (40 panels, a figure per stage) in a
     // few hundred kB: palette images (colour type 3 in the IHDR) at zlib's
-    // best level, not plotters' 3.4 MB of true colour.
+    // best level, not plotters' 3.4 MB of true colour (511 kB since text is
+    // set at sub-pixel positions, whose anti-aliased edges take more shades).
     let mut bytes = 0;
     for f in report["figures"].as_array().unwrap() {
         let png = fs::read(f["path"].as_str().unwrap()).unwrap();
@@ -561,7 +562,7 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
         assert_eq!(png[25], 3, "colour type {}", png[25]);
         bytes += png.len();
     }
-    assert!(bytes < 500_000, "the figures are {bytes} bytes");
+    assert!(bytes < 600_000, "the figures are {bytes} bytes");
     for name in ["combined-mz", "mx", "my"] {
         let st = stage(&report, name);
         assert!(st["skipped"].is_null(), "{name}: {}", st["skipped"]);

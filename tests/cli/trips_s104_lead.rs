@@ -115,3 +115,39 @@ fn a_campaign_whose_candidates_are_all_screened_out_prints_no_empty_table() {
     );
     assert!(!page.contains("ranking-table"), "{page}");
 }
+
+#[test]
+fn a_staged_fit_s_iteration_cap_is_refused_past_its_most_and_when_not_in_digits() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("q.tir");
+    let rig = super::root().join("docs/examples/mf_grid.csv");
+    let identify = |cap: &str| {
+        super::run(&[
+            "identify",
+            rig.to_str().unwrap(),
+            "--model",
+            "mf61",
+            "--max-iterations",
+            cap,
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    // A billion ran silently for as long as a stage did not converge.
+    let o = identify("1000000000");
+    let e = super::stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("max_iterations") && e.contains("10000") && e.contains("no cap"),
+        "{e}"
+    );
+    assert!(!out.exists());
+    // `1e9` read "invalid digit found in string".
+    let o = identify("1e9");
+    let e = super::stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("expected a whole number written in digits (such as 300), not `1e9`"),
+        "{e}"
+    );
+}

@@ -98,6 +98,9 @@ pub enum Limit {
     /// A parameter held at a value the user gives.
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
     HoldValue,
+    /// A user's cap on a staged fit's iterations.
+    #[error("a stage of the staged fit converges in tens to hundreds of iterations (the default cap of 150 is continued to 50 per free parameter where a stage stops short), so a cap beyond {} is no cap, only a fit that runs silently for hours where it does not converge", crate::constants::MOST_STAGE_ITERATIONS)]
+    StageIterations,
     /// A manoeuvre's speed, m/s.
     #[error("the model evaluates no speed below 0.5 m/s (its slip angles divide by the speed; a slower run would run at 0.5 m/s), and a manoeuvre on a road runs below 150 m/s (540 km/h), beyond which the tyre models and the 2-DOF model are far outside what they were made for")]
     ManoeuvreSpeed,

@@ -135,9 +135,18 @@ impl Options {
         if let Some(c) = self.camber {
             ParamError::finite("camber", c)?;
         }
-        // No iteration is no fit: its report would read as one.
+        // No iteration is no fit: its report would read as one; past the
+        // most, a cap only lets a stage that does not converge run silently.
         if let Some(n) = self.max_iterations {
             ParamError::positive("max_iterations", n as f64)?;
+            let most = crate::constants::MOST_STAGE_ITERATIONS as f64;
+            ParamError::in_range(
+                "max_iterations",
+                n as f64,
+                0.0,
+                most,
+                Limit::StageIterations,
+            )?;
         }
         for (name, v) in &self.hold {
             ParamError::finite(name, *v)?;

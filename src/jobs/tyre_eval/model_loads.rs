@@ -125,26 +125,20 @@ impl LoadsLeft {
             true => ("below", r.lo),
             false => ("above", r.hi),
         };
-        if self.fitted {
-            return format!(
-                "{} of {} at a load {side} {} N, outside the loads the {model} tyre was fitted at (its [fitted_ranges]: {} to {} N): the {model} model has no load term, so there it gives the force of the cornering stiffness fitted at those loads, unchanged, where a tyre's stiffness changes with its load; the first at line {}, fz = {} N",
-                self.points,
-                plural(count, "point", "points"),
-                rounded(end, 4),
-                rounded(r.lo, 4),
-                rounded(r.hi, 4),
-                self.first_line,
-                readable(self.first_value, 3)
-            );
-        }
+        let (lo, hi) = (rounded(r.lo, 4), rounded(r.hi, 4));
+        let outside = if self.fitted {
+            format!("was fitted at (its [fitted_ranges]: {lo} to {hi} N): the {model} model has no load term, so there it gives the force of the cornering stiffness fitted at those loads, unchanged, where a tyre's stiffness changes with its load")
+        } else {
+            format!(
+                "is meant for ({lo} to {hi} N: {}): evaluated at the load given, an extrapolation of the model",
+                r.basis
+            )
+        };
         format!(
-            "{} of {} at a load {side} {} N, outside the loads the {model} tyre is meant for ({} to {} N: {}): evaluated at the load given, an extrapolation of the model; the first at line {}, fz = {} N",
+            "{} of {} at a load {side} {} N, outside the loads the {model} tyre {outside}; the first at line {}, fz = {} N",
             self.points,
             plural(count, "point", "points"),
             rounded(end, 4),
-            rounded(r.lo, 4),
-            rounded(r.hi, 4),
-            r.basis,
             self.first_line,
             readable(self.first_value, 3)
         )

@@ -38,7 +38,17 @@ pub fn significant(v: f64, digits: usize) -> String {
     }
     let magnitude = v.abs().log10().floor() as i64;
     let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
-    fixed(v, decimals)
+    let written = fixed(v, decimals);
+    // Rounding up across a power of ten (0.00999 to 0.0100) adds a
+    // digit: the value is written with one decimal fewer, "0.010".
+    let rolled_over = written
+        .parse::<f64>()
+        .is_ok_and(|w| w.abs() >= 10f64.powi((magnitude + 1) as i32));
+    if rolled_over && decimals > 0 {
+        fixed(v, decimals - 1)
+    } else {
+        written
+    }
 }
 
 /// `v` to `digits` significant digits as a reader reads it: plain
@@ -383,6 +393,12 @@ mod tests {
         assert_eq!(significant(12.3456, 4), "12.35");
         assert_eq!(significant(-0.012345, 3), "-0.0123");
         assert_eq!(significant(0.0, 4), "0");
+        // A rounding that carries into the next power of ten keeps the
+        // digits asked for.
+        assert_eq!(significant(0.00999, 2), "0.010");
+        assert_eq!(significant(-9.996, 3), "-10.0");
+        assert_eq!(significant(99.96, 3), "100");
+        assert_eq!(significant(0.0995, 2), "0.10");
     }
 
     #[test]

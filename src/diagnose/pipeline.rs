@@ -75,6 +75,7 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod conclusion;
+mod limits;
 mod rig_notes;
 use conclusion::{conclude, with_rows};
 
@@ -527,6 +528,7 @@ fn run(
     let significant = rules::significant(base.j0, base.jn);
     let mut notes = notes_of(c, visibility, &ctx, &noise);
     notes.extend(rig_notes::rig_notes(c, &tyre_source, rig_grouping.as_ref()));
+    notes.extend(limits::contradicted(c));
     notes.extend(beta_against);
     let limits = (set.max_effects, set.screening);
     let (singles, order, ranking, screened_rows, found) =

@@ -42,6 +42,13 @@ pub enum FileKind {
     Json,
     /// A file of a known binary format (an image, a PDF, an archive).
     Foreign(super::ForeignFormat),
+    /// Text that is neither TOML nor CSV: no line of it is a TOML
+    /// `key = value` or `[table]`, and its first line has no comma (a
+    /// README, notes, a Markdown file).
+    Text {
+        /// Its first line that is neither blank nor a comment, shortened.
+        first: Box<str>,
+    },
     /// Not text: a NUL byte at this byte offset.
     Binary {
         /// Byte offset of the first NUL.
@@ -72,6 +79,9 @@ impl FileKind {
             FileKind::Study => "a stiffness study (a TOML file with [stiffness])".into(),
             FileKind::Json => "a JSON report (diagnosis.json, metrics.json, gap.json)".into(),
             FileKind::Binary { at } => format!("not a text file (a NUL byte at byte {at})"),
+            FileKind::Text { first } => format!(
+                "a text file that is not TOML (no line of it is a `key = value` or a `[table]`; its first reads \"{first}\")"
+            ),
             FileKind::Foreign(format) => format.what().into(),
             FileKind::Folder { campaign: true } => {
                 "a campaign folder (vehicle.toml and runs/*.csv)".into()
@@ -93,7 +103,9 @@ impl FileKind {
             FileKind::Sweep => "`handling equilibria` reads it",
             FileKind::Study => "`handling study` reads it",
             FileKind::Json => "`handling` writes it, and no command reads it",
-            FileKind::Binary { .. } | FileKind::Foreign(_) => "no command reads it",
+            FileKind::Binary { .. } | FileKind::Foreign(_) | FileKind::Text { .. } => {
+                "no command reads it"
+            }
             FileKind::Folder { campaign: false } => "give one of its files",
         }
     }

@@ -94,6 +94,7 @@ impl fmt::Display for FileKind {
             FileKind::Json => f.write_str("is a JSON file (a report `handling` writes: diagnosis.json, metrics.json, gap.json), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
             FileKind::Binary { at } => write!(f, "is not a text file (a NUL byte at byte {at}), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
             FileKind::HistoryCsv => f.write_str("is a simulation history (history.csv, which `handling simulate` writes), not a scenario: measure it with `handling metrics`"),
+            FileKind::Text { .. } => write!(f, "is {}, not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables", self.what()),
             FileKind::Scenario | FileKind::Campaign | FileKind::Sweep | FileKind::Study | FileKind::Folder { .. } | FileKind::Foreign(_) => {
                 write!(f, "is {}, not a scenario: {}", self.what(), self.reader())
             }

@@ -44,7 +44,48 @@ pub(crate) fn recognise(path: &Path) -> Option<FileKind> {
     if ext == "csv" || header {
         return Some(csv_kind(first));
     }
-    toml_kind(&text.parse().ok()?)
+    match text.parse::<toml::Table>() {
+        Ok(table) => toml_kind(&table),
+        Err(_) => not_toml(&text, first),
+    }
+}
+
+/// The most characters of a text file's first line a refusal quotes.
+const QUOTED_CHARS: usize = 60;
+
+/// A text that failed to read as TOML and has no line a TOML file has (a
+/// `key = value` or a `[table]`): a README or notes given in a TOML
+/// file's place. A TOML file with a slip (a key without its `=`) keeps
+/// its reader's error, at the slip's line: its other lines are TOML.
+fn not_toml(text: &str, first: &str) -> Option<FileKind> {
+    // A key is bare (letters, digits, `_`, `-`), quoted or dotted: prose
+    // with an `=` in it (`QSY7 = 0` in a sentence) is no key's line.
+    let key = |k: &str| {
+        let k = k.trim();
+        !k.is_empty()
+            && k.chars()
+                .all(|c| c.is_ascii_alphanumeric() || "_-.\"'".contains(c))
+    };
+    let tomlish = |l: &str| {
+        let l = l.trim();
+        (l.starts_with('[') && l.ends_with(']')) || l.split_once('=').is_some_and(|(k, _)| key(k))
+    };
+    let lines = text
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    if first.is_empty() || first.contains(',') || lines.clone().any(tomlish) {
+        return None;
+    }
+    let first = first.trim();
+    let quoted: String = first.chars().take(QUOTED_CHARS).collect();
+    let ellipsis = if first.chars().count() > QUOTED_CHARS {
+        "…"
+    } else {
+        ""
+    };
+    Some(FileKind::Text {
+        first: format!("{quoted}{ellipsis}").into(),
+    })
 }
 
 /// A TOML file by its tables: a study (`[stiffness]`) or sweep

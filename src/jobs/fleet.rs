@@ -226,6 +226,7 @@ pub fn run_batch(
 fn failed_row(name: String, e: &Error) -> FleetRow {
     FleetRow {
         campaign: name,
+        name: None,
         runs: 0,
         verdict: Vec::new(),
         kind: None,
@@ -326,6 +327,7 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         .filter(|b| gap && b.reduction_percent >= 0.05);
     FleetRow {
         campaign: name.to_string(),
+        name: (d.campaign != name).then(|| d.campaign.clone()),
         runs: d.runs.len(),
         verdict: d.verdict.effects().to_vec(),
         kind: Some(d.verdict.kind()),
@@ -418,6 +420,7 @@ impl FleetReport {
                 "failed",
                 "statement",
                 "kind",
+                "name",
             ],
             self.campaigns.iter().map(|r| {
                 vec![
@@ -433,6 +436,13 @@ impl FleetReport {
                     r.failed.to_string(),
                     r.statement.clone(),
                     r.kind.map_or_else(String::new, |k| k.name().to_string()),
+                    // The campaign's own name (its file's `name`), the
+                    // name its report says; none for one that failed.
+                    match (&r.name, r.failed) {
+                        (_, true) => String::new(),
+                        (Some(name), false) => name.clone(),
+                        (None, false) => r.campaign.clone(),
+                    },
                 ]
             }),
         )?;
@@ -472,11 +482,11 @@ impl FleetReport {
         )];
         for r in &self.campaigns {
             out.push(if r.failed {
-                format!("  {:<24} FAILED: {}", r.campaign, r.statement)
+                format!("  {:<24} FAILED: {}", r.label(), r.statement)
             } else {
                 format!(
                     "  {:<24} {:<32} J {:.3} → {:.3} (noise {:.3})",
-                    r.campaign,
+                    r.label(),
                     r.verdict_words("+"),
                     r.heldout_error_before.unwrap_or(f64::NAN),
                     r.heldout_error_after.unwrap_or(f64::NAN),

@@ -37,7 +37,8 @@ pub use crate::diagnose::report::outcome::{
     ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet,
     Lookalike, Lookalikes, MassAlike, Narrowed, NoSignificantGap, NotIdentifiable, Note,
     OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused, Searched, SetAside,
-    StandstillBank, ThroughBank, Unseen, Verdict, VerdictKind, VerdictWarning, Window,
+    StandstillBank, ThroughBank, Unseen, VehicleLimit, Verdict, VerdictKind, VerdictWarning,
+    Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

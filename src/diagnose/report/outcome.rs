@@ -437,7 +437,7 @@ pub struct ChannelLeft {
 
 mod note;
 pub use crate::error::Unseen;
-pub use note::Note;
+pub use note::{Note, VehicleLimit};
 
 /// A finding on where the base model's gap lies.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -328,6 +328,11 @@ pub fn note(n: &Note) -> String {
         Note::NotACandidate { effect, lacks } => {
             format!("{}: not a candidate: {lacks}", effect.name())
         }
+        Note::RunsBeyondVehicle {
+            limit,
+            reached,
+            threshold,
+        } => beyond_vehicle(limit, *reached, *threshold),
         Note::BankOnlyInYawRate { runs, of } => format!(
             "bank_profile: {runs} of {of} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them"
         ),
@@ -534,6 +539,38 @@ pub fn value(v: f64) -> String {
 /// `2.24e-4` in one sentence and `0.0358` in the next.
 pub fn std_error(se: f64) -> String {
     crate::format::readable(se, 3)
+}
+
+/// The words of [`Note::RunsBeyondVehicle`]: the reach, the limit and the
+/// key to check.
+fn beyond_vehicle(
+    limit: &crate::diagnose::report::VehicleLimit,
+    reached: f64,
+    threshold: f64,
+) -> String {
+    use crate::diagnose::report::VehicleLimit;
+    use crate::format::significant;
+    let g = crate::constants::G;
+    let head = format!(
+        "the runs turn at up to {} m/s² ({} g; 99th percentile of |speed × yaw_rate|)",
+        significant(reached, 3),
+        significant(reached / g, 2)
+    );
+    match limit {
+        VehicleLimit::Friction { friction } => format!(
+            "{head}, {}× what the campaign's friction {} lets any car turn at (μ·g = {} m/s²): the base model cannot follow them, and the gap it leaves is the friction's, not an unmodelled effect's; is `friction` right?",
+            significant(reached / threshold, 2),
+            significant(*friction, 3),
+            significant(threshold, 3)
+        ),
+        VehicleLimit::Rollover { track, cg_height } => format!(
+            "{head}, beyond the car's static stability factor g·t/(2h) = {} m/s² ({} g; track {} m, cg_height {} m), where a car's inner wheels lift: these runs stayed on four wheels, so `cg_height` or the track is likely wrong (a road car's factor is 1.0–1.5 g)",
+            significant(threshold, 3),
+            significant(threshold / g, 2),
+            significant(*track, 3),
+            significant(*cg_height, 3)
+        ),
+    }
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 //! [`INITIAL_STRETCH`] s ([`initial_value`]).
 
 use crate::error::{
-    InputError, InputProblem, ParamError, PieceRefusal, ReplayRunProblem, ScenarioProblem,
+    InputError, InputProblem, ParamError, PieceRefusal, ReplayRunProblem, ScenarioProblem, UnitSlip,
 };
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, DeclaredBy, MeasuredRun};
@@ -173,6 +173,9 @@ fn declared_wrong(src: &TomlSource, r: &ReplaySpec, p: &InputProblem) -> Option<
 /// scenario (the run's header has no place for what it does not hold);
 /// other errors as they are.
 fn at_degrees(src: &TomlSource, r: &ReplaySpec, e: InputError) -> InputError {
+    if let Some(e) = in_degrees(src, r, &e) {
+        return e;
+    }
     let InputError::Invalid { problem, .. } = &e else {
         return e;
     };
@@ -189,6 +192,37 @@ fn at_degrees(src: &TomlSource, r: &ReplaySpec, e: InputError) -> InputError {
         header: header.clone(),
     };
     at_key(src, &key, p)
+}
+
+/// A steer or yaw rate the run reader finds in degrees and the scenario
+/// does not declare so, refused at the scenario's `run` with this
+/// scenario's key to declare it: the reader alone leads with `metrics
+/// --degrees` and a campaign's `[runs]`.
+fn in_degrees(src: &TomlSource, r: &ReplaySpec, e: &InputError) -> Option<InputError> {
+    let InputError::Invalid { problem, at, .. } = e else {
+        return None;
+    };
+    let column = match problem.as_ref() {
+        InputProblem::UnitSlip(UnitSlip::YawRate { .. } | UnitSlip::YawRateInDegPerS { .. }) => {
+            AngleColumn::YawRate
+        }
+        InputProblem::SteerBeyondQuarterTurn { .. } => AngleColumn::Steer,
+        _ => return None,
+    };
+    if r.degrees.contains(&column) {
+        return None;
+    }
+    let at = at.as_ref().map_or_else(
+        || "its header".to_string(),
+        |l| format!("line {}, column {}", l.line, l.column),
+    );
+    let p = ReplayRunProblem::InDegrees {
+        run: r.run.display().to_string().into(),
+        at: at.into(),
+        column: column.name(),
+        detail: problem.to_string().into(),
+    };
+    Some(at_key(src, "manoeuvre.run", p))
 }
 
 /// The steer's range over `run`, rad.

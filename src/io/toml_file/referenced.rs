@@ -71,7 +71,8 @@ impl TomlSource {
                 | FileKind::Campaign
                 | FileKind::Sweep
                 | FileKind::Study
-                | FileKind::Binary { .. }),
+                | FileKind::Binary { .. }
+                | FileKind::Text { .. }),
             ) => kind,
             _ => return Ok(()),
         };

@@ -13,8 +13,14 @@ use std::path::Path;
 /// One campaign's line of the fleet table.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FleetRow {
-    /// The campaign's file or folder name in the batch folder.
+    /// The campaign's file or folder name in the batch folder (its file's
+    /// stem: the output folder's name).
     pub campaign: String,
+    /// The campaign's own `name` where it differs from `campaign` (a file
+    /// `a.toml` holding `name = "small"`): its report says that name, so
+    /// the table says both.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     /// Runs replayed (pieces after cleaning), 0 when it failed.
     pub runs: usize,
     /// Effects of the verdict (empty: no gap, or none explains it).
@@ -61,6 +67,15 @@ pub struct FleetRow {
 }
 
 impl FleetRow {
+    /// The campaign as the terminal and the page name it: its file name,
+    /// and its own `name` where that differs (`a (name "small")`).
+    pub fn label(&self) -> String {
+        match &self.name {
+            Some(name) => format!("{} (name \"{name}\")", self.campaign),
+            None => self.campaign.clone(),
+        }
+    }
+
     /// Its verdict's effects joined by `sep`, with the effects the
     /// diagnosis leaves confounded with them (`steering_compliance
     /// (confounded with cornering_stiffness)`); "—" for none.

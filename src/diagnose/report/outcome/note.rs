@@ -97,6 +97,17 @@ pub enum Note {
         /// The model fitted.
         model: crate::tyre::ModelName,
     },
+    /// Runs that turn harder than the campaign's vehicle or road allows
+    /// any car ([`crate::diagnose::pipeline`]'s `limits`): a friction or a
+    /// centre-of-gravity height the runs contradict.
+    RunsBeyondVehicle {
+        /// The limit passed.
+        limit: VehicleLimit,
+        /// The runs' 99th percentile of |u·r|, m/s².
+        reached: f64,
+        /// The limit as a lateral acceleration, m/s².
+        threshold: f64,
+    },
     /// A file whose measured sideslip moves against the base model's
     /// where the campaign's runs together move with it: a logger set up in
     /// the other sign convention for that file, or stretches the model
@@ -111,9 +122,31 @@ pub enum Note {
     },
 }
 
+/// A limit of the campaign's vehicle or road that its runs pass.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum VehicleLimit {
+    /// The road's friction: no car turns beyond μ·g.
+    Friction {
+        /// The campaign's friction coefficient μ.
+        friction: f64,
+    },
+    /// The static stability factor g·t/(2h): a rigid car's inner wheels
+    /// lift beyond it.
+    Rollover {
+        /// The narrower track t, m.
+        track: f64,
+        /// The centre-of-gravity height h, m.
+        cg_height: f64,
+    },
+}
+
 impl Note {
     /// Whether the terminal and the page say it as a warning, not a note.
     pub fn is_warning(&self) -> bool {
-        matches!(self, Note::TyresFarFromLoad { .. })
+        matches!(
+            self,
+            Note::TyresFarFromLoad { .. } | Note::RunsBeyondVehicle { .. }
+        )
     }
 }

@@ -29,6 +29,9 @@ enum Details<'a> {
         heldout_error_after: f64,
         reduction_percent: f64,
         partial: bool,
+        /// The effect parameters on or near their search bound: the
+        /// verdict is then no measurement of those effects.
+        on_search_bound: Vec<&'a str>,
         warning_details: &'a [VerdictWarning],
         evidence: &'a [Evidence],
         confounded_with: Vec<EffectKind>,
@@ -80,6 +83,10 @@ impl Serialize for Verdict {
                     heldout_error_after: e.heldout_error_after,
                     reduction_percent: e.reduction_percent,
                     partial: e.partial(),
+                    on_search_bound: words::effect_parameters_on_bound(&e.warnings)
+                        .into_iter()
+                        .map(|p| p.name.as_str())
+                        .collect(),
                     warning_details: &e.warnings,
                     evidence: &e.evidence,
                     confounded_with: e

@@ -476,11 +476,12 @@ pub enum GapFinding {
         /// floor ([`SteadyOffset::of`]): a sensor offset or a bias of the
         /// model that an RMS against three noise floors does not single out.
         offset: Option<SteadyOffset>,
-        /// The combined held-out gap of all channels over all runs is
-        /// significant ([`GapFinding::Overall`]): a channel within noise in
-        /// every run and part then carries a gap spread thinly over them,
-        /// not none.
-        combined_significant: bool,
+        /// The combined held-out gap of all channels over all runs where
+        /// it is significant ([`GapFinding::Overall`]), else None: a
+        /// channel within noise alone is then no gap of its own, and where
+        /// no channel is significant alone the channels together carry a
+        /// gap spread thinly over them, not none.
+        combined: Option<CombinedGap>,
     },
     /// A frequency band whose yaw-rate response is off in a run.
     Band {
@@ -521,6 +522,20 @@ pub enum GapFinding {
         /// All runs.
         of: usize,
     },
+}
+
+/// The combined held-out gap of all channels where it is significant, as
+/// a channel's finding reads it ([`GapFinding::Channel`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CombinedGap {
+    /// Held-out J of the base model, all channels and runs.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// The channels whose held-out RMS over all runs is above
+    /// [`SIGNIFICANT_NOISE_FLOORS`] of their floor ([`above_noise`]: the
+    /// per-channel table's rule): where the combined gap lies.
+    pub significant_alone: Vec<Channel>,
 }
 
 /// A channel's held-out RMS is above noise beyond this many noise floors

@@ -10,7 +10,7 @@ use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
-use crate::diagnose::report::outcome::{above_noise, GapFinding};
+use crate::diagnose::report::outcome::{above_noise, CombinedGap, GapFinding};
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::{Part, RunGap, RunPart, Shrinkage};
 use crate::manoeuvre::interpolate;
@@ -205,7 +205,7 @@ fn channel_finding(
     ch: Channel,
     runs: &[RunGap],
     parts: &[Shrinkage],
-    significant: bool,
+    combined: Option<&CombinedGap>,
 ) -> Option<GapFinding> {
     let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
     let all = rows.iter().find(|p| p.part == Part::All)?;
@@ -250,7 +250,7 @@ fn channel_finding(
             nf,
             all.before,
         ),
-        combined_significant: significant,
+        combined: combined.cloned(),
     })
 }
 
@@ -270,10 +270,22 @@ pub(crate) fn gap_summary(
         heldout_error: j0,
         noise_level: jn,
     }];
+    // Where a significant combined gap lies: the channels significant
+    // alone by the per-channel table's rule, so that a channel's line and
+    // the table call the same channels significant.
+    let combined = significant.then(|| CombinedGap {
+        heldout_error: j0,
+        noise_level: jn,
+        significant_alone: parts
+            .iter()
+            .filter(|p| p.part == Part::All && above_noise(p.before, p.noise_floor))
+            .map(|p| p.channel)
+            .collect(),
+    });
     out.extend(
         Channel::ALL
             .into_iter()
-            .filter_map(|ch| channel_finding(ch, runs, parts, significant)),
+            .filter_map(|ch| channel_finding(ch, runs, parts, combined.as_ref())),
     );
     for r in runs {
         for b in &r.bands {

@@ -30,7 +30,7 @@ use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
 pub use rank::{rank_warning, rank_warnings};
 pub use trust::{assumed_floor, channel_trust, channels_trusted, channels_trusted_for, Reader};
-pub use warnings::verdict_warning;
+pub use warnings::{effect_parameters_on_bound, verdict_warning};
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
@@ -85,6 +85,9 @@ pub fn statement(v: &Verdict) -> String {
             } else {
                 head
             };
+            // A parameter on its search bound: the verdict names the
+            // effect at its range's end, not a measurement of it.
+            let head = head + &warnings::bound_clause(&e.warnings);
             match (&e.confounded_with, e.effects.first()) {
                 (_, Some(first)) if !e.in_set.is_empty() => in_set(head, e, *first),
                 (Some(l), Some(first)) => alone(head, l, *first),

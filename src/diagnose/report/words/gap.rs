@@ -4,7 +4,9 @@
 //! channel's unit (rad/s, m/s², rad).
 
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::report::outcome::{above_noise, GapFinding, SIGNIFICANT_NOISE_FLOORS};
+use crate::diagnose::report::outcome::{
+    above_noise, CombinedGap, GapFinding, SIGNIFICANT_NOISE_FLOORS,
+};
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::Part;
 
@@ -30,7 +32,7 @@ pub(super) fn channel(f: &GapFinding) -> String {
         wrong,
         right,
         offset,
-        combined_significant,
+        combined,
     } = f
     else {
         return String::new();
@@ -59,20 +61,13 @@ pub(super) fn channel(f: &GapFinding) -> String {
             "{head}; wrong in: {wrong}; right in: {}",
             listed(right.iter().map(|p| p.label()).collect()),
         )
-    } else if *combined_significant {
-        // The channels together over every run show a gap that no run or
-        // part shows alone: it is spread thinly, and "no place where the
-        // base model is wrong" would read as none.
-        let floors = crate::format::fixed(rms / noise_floor, 1);
-        let only = if wrong.is_empty() {
-            String::new()
-        } else {
-            format!(
-                "; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
-                parts(wrong)
-            )
-        };
-        format!("{head}: {floors} noise floors over the runs, below the {SIGNIFICANT_NOISE_FLOORS} a run or part needs alone, so a gap spread over the runs, not in one place (the frequency bands and offsets below say more){only}")
+    } else if let Some(c) = combined {
+        within_combined(
+            &head,
+            *rms / *noise_floor,
+            c,
+            (!wrong.is_empty()).then(|| parts(wrong)),
+        )
     } else if wrong.is_empty() {
         // A gap within noise has no place: listing the parts it is
         // "right in" would read as a finding.
@@ -93,6 +88,33 @@ pub(super) fn channel(f: &GapFinding) -> String {
         )
     };
     place + &said
+}
+
+/// A channel within noise alone, over the runs and in every run, under a
+/// significant combined gap `c` (`head`: the channel's RMS and runs;
+/// `floors`: its RMS in noise floors; `wrong`: its parts above the floors,
+/// listed, if any). The per-channel table calls it "not significant
+/// alone", so it is no gap of its own: where other channels are
+/// significant alone the combined gap lies in them; where none is, the
+/// channels together carry it, spread thinly, and the numbers say so.
+fn within_combined(head: &str, floors: f64, c: &CombinedGap, wrong: Option<String>) -> String {
+    let floors = crate::format::fixed(floors, 1);
+    let alone = format!("{head}: within noise alone ({floors} noise floors over the runs, below the {SIGNIFICANT_NOISE_FLOORS} a channel, run or part needs alone), so no gap of its own");
+    let only = wrong.map_or(String::new(), |w| {
+        format!("; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {w}, too little of the runs to say the base model is wrong there")
+    });
+    if c.significant_alone.is_empty() {
+        format!(
+            "{alone}{only}; no channel is significant alone over all runs, but the channels together are (held-out error {:.3} against a noise level of {:.3}): a gap spread thinly over the channels and runs, not in one place (the frequency bands and offsets below say more)",
+            c.heldout_error, c.noise_level
+        )
+    } else {
+        let names: Vec<&str> = c.significant_alone.iter().map(|ch| ch.name()).collect();
+        format!(
+            "{alone}{only}; the significant gap lies in {}",
+            names.join(" and ")
+        )
+    }
 }
 
 /// The clause of a channel's steady offset `o`, after its place.

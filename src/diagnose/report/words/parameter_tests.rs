@@ -228,7 +228,7 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
         wrong: vec![],
         right: vec![Part::All],
         offset: SteadyOffset::of(&biases, 0.0019, 0.0046),
-        combined_significant: false,
+        combined: None,
     };
     assert_eq!(
         finding(&f),

@@ -183,6 +183,15 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
         }
         Bound::Physical => "at its physical limit: a share cannot exceed 1",
     };
+    // On a physical limit the value is the limit, written as such: within
+    // the limit's resolution no data tell it from the limit, and a lag of
+    // 4e-5 s written `3.959e-5 s` beside another's `0.0000 s` read as two
+    // different findings.
+    let v = match (bound, p.effect_parameter.map(|q| q.bounds)) {
+        (Bound::Physical, Some((lo, hi))) if p.value - lo < hi - p.value => value(lo),
+        (Bound::Physical, Some((_, hi))) => value(hi),
+        _ => v,
+    };
     format!("{} = {v}{unit} ({why})", p.name)
 }
 

@@ -441,7 +441,7 @@ fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_o
     assert!(on.at_bound);
     assert_eq!(
         parameter(&on),
-        "steer_path.lag = 3e-6 s (at its physical limit: any smaller value would be negative)"
+        "steer_path.lag = 0.0000 s (at its physical limit: any smaller value would be negative)"
     );
     assert_eq!(steer_path(lag, 5e-5, 1e-5).bound, Some(Bound::Physical));
     assert_eq!(steer_path(lag, 6e-5, 1e-5).bound, None);
@@ -498,7 +498,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
         offset: None,
-        combined_significant: false,
+        combined: None,
     }
 }
 

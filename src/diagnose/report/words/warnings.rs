@@ -5,6 +5,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::VerdictWarning;
+use crate::diagnose::report::ParameterValue;
 
 /// A channel's held-out RMS before and after the verdict's effects, in its
 /// unit: `RMS 0.0247 → 0.0216 rad/s`.
@@ -56,6 +57,51 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
     }
 }
 
+/// The effect parameters on or near their search bound in a verdict's
+/// warnings ([`VerdictWarning::OnSearchBound`]); the roll mode's
+/// (`roll.frequency`, `roll.damping`) are no effect's size and left out.
+pub fn effect_parameters_on_bound(warnings: &[VerdictWarning]) -> Vec<&ParameterValue> {
+    warnings
+        .iter()
+        .filter_map(|w| match w {
+            VerdictWarning::OnSearchBound { parameters } => Some(parameters),
+            _ => None,
+        })
+        .flatten()
+        .filter(|p| !p.name.starts_with("roll."))
+        .collect()
+}
+
+/// The clause of a verdict's statement where a parameter of its effects
+/// stands on or near its search bound (`warnings`): the verdict then names
+/// an effect pressed against the end of the range the library allows it,
+/// not a measurement of that effect's physics; the warning below says the
+/// same of the parameter. Empty otherwise.
+pub(super) fn bound_clause(warnings: &[VerdictWarning]) -> String {
+    let own = effect_parameters_on_bound(warnings);
+    if own.is_empty() {
+        return String::new();
+    }
+    let each: Vec<String> = own.iter().map(|p| super::parameters::on_bound(p)).collect();
+    let mut effects: Vec<&str> = own
+        .iter()
+        .map(|p| p.name.split('.').next().unwrap_or(&p.name))
+        .collect();
+    effects.dedup();
+    let effects = effects.join(" and ");
+    let all_on = own.iter().all(|p| p.at_bound);
+    let (on, its, it) = match (own.len(), all_on) {
+        (1, true) => ("on", "its", "it"),
+        (1, false) => ("near", "its", "it"),
+        (_, true) => ("on", "their", "them"),
+        (_, false) => ("on or near", "their", "them"),
+    };
+    format!(
+        "; {} {on} {its} search bound, so the verdict is not a measurement of {effects}: the runs would take {it} beyond the range the library allows, and the cause may be {effects} beyond that range, or a different effect that {effects} at {its} limit imitates",
+        each.join(", ")
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -90,5 +136,32 @@ mod tests {
             parameters: vec![frequency, steer],
         });
         assert!(w.starts_with("roll_steer.rear = -0.5000 rad/rad on its search bound: the data would take it further, so its value is a bound on the effect's size, not a measurement of it; roll.frequency = 4.0000 Hz on its search bound"), "{w}");
+    }
+
+    /// A verdict whose parameter sits on or near its search bound says in
+    /// its own sentence that it measures no effect there (round 35: the
+    /// Putnam log's narrowed verdict, a delay on its 0.3 s bound, said only
+    /// in a warning); the roll mode on its bound is no effect's and not
+    /// named; nothing on a bound, nothing said.
+    #[test]
+    fn a_parameter_on_its_search_bound_is_said_in_the_verdicts_sentence() {
+        use crate::diagnose::effects::{EffectKind, Group};
+        let fitted = super::super::tests::fitted;
+        let on = |ps: Vec<ParameterValue>| {
+            bound_clause(&[VerdictWarning::OnSearchBound { parameters: ps }])
+        };
+        let delay = fitted("sensor_delay.delay", "s", 0.3, Some(Bound::Search));
+        let roll = fitted("roll.frequency", "Hz", 4.0, Some(Bound::Search));
+        assert_eq!(
+            on(vec![delay, roll.clone()]),
+            "; sensor_delay.delay = 0.3000 s on its search bound, so the verdict is not a measurement of sensor_delay: the runs would take it beyond the range the library allows, and the cause may be sensor_delay beyond that range, or a different effect that sensor_delay at its limit imitates"
+        );
+        assert_eq!(on(vec![roll]), "");
+        assert_eq!(bound_clause(&[]), "");
+        let q = &EffectKind::SensorDelay.parameters()[0];
+        let near = ParameterValue::of(Group::Effect(EffectKind::SensorDelay), q, 0.2991, 0.0165);
+        assert!(
+            on(vec![near]).starts_with("; sensor_delay.delay = 0.2991 s (its bound 0.3 s lies within its standard error, 0.0165 s) near its search bound, so the verdict is not a measurement of sensor_delay"),
+        );
     }
 }

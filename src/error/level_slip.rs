@@ -46,6 +46,19 @@ pub(super) fn requested(variable: Variable, v: f64) -> String {
     }
 }
 
+/// The levels a request was not near, in the option's unit; a file with
+/// none said so ("levels: ;" read as a word left out).
+pub(super) fn level_list(variable: Variable, levels: &[f64]) -> String {
+    if levels.is_empty() {
+        return format!(
+            "none, too few samples at any one {} to make one",
+            variable.column()
+        );
+    }
+    let listed: Vec<String> = levels.iter().map(|v| variable.in_option_unit(*v)).collect();
+    listed.join(", ")
+}
+
 /// The question whether the request was written in another unit, where
 /// it would then select a level ([`LevelSlip`]); else nothing.
 pub(super) fn unit_slip(variable: Variable, requested: f64, slip: &Option<LevelSlip>) -> String {

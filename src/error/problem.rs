@@ -10,7 +10,7 @@
 
 use super::camber::camber_beyond;
 use super::duplicate::DuplicateAt;
-use super::level_slip::{requested as requested_text, unit_slip, LevelSlip};
+use super::level_slip::{level_list, requested as requested_text, unit_slip, LevelSlip};
 use super::number::{past_end, Num};
 use super::piece::RefusedPiece;
 use super::rig::Variable;
@@ -321,7 +321,7 @@ pub enum InputProblem {
         fy_slope: Option<f64>,
     },
     /// A requested camber or pressure that no level of the file lies near.
-    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), levels.iter().map(|v| variable.in_option_unit(*v)).collect::<Vec<_>>().join(", "), variable.in_option_unit(*separation))]
+    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), level_list(*variable, levels), variable.in_option_unit(*separation))]
     NoLevelNear {
         /// The grouping variable.
         variable: Variable,

@@ -99,16 +99,18 @@ impl Levels {
             })
         });
         // A request no test has in SI: its likeliest unit, though it
-        // selects no level (`--camber 2`: 2°, between levels).
+        // selects no level (`--camber 2`: 2°, between levels); so is a
+        // camber past 20° on a file whose levels all lie within 20°
+        // (`--camber 0.5`, 28.6°, beside levels at 0° to 3.2°).
         let (unit, factor) = slips[0];
+        let steep =
+            self.variable == Variable::Camber && want.abs() > FAR_CAMBER && large < FAR_CAMBER;
         selecting.or_else(|| {
-            self.variable
-                .implausible(want)
-                .then_some(crate::error::LevelSlip {
-                    meant: want * factor,
-                    unit,
-                    level: None,
-                })
+            (self.variable.implausible(want) || steep).then_some(crate::error::LevelSlip {
+                meant: want * factor,
+                unit,
+                level: None,
+            })
         })
     }
 
@@ -140,6 +142,12 @@ pub(super) fn median(sorted: &[f64]) -> f64 {
 
 /// The fewest samples at one value that make a level.
 pub const LEVEL_SAMPLES: usize = 3;
+
+/// A camber past which a request, on a file whose levels all lie within
+/// it, reads as degrees typed for rad, rad (20°): car and truck rigs test
+/// within ±10° (the Hoosier file 0° to 3.2°), while a motorcycle file
+/// whose levels reach past it takes such a request as it is.
+const FAR_CAMBER: f64 = 0.35;
 
 /// The groups of values of one variable too few to be a level (fewer than
 /// [`LEVEL_SAMPLES`] apart from the rest), each as its range (lo, hi):

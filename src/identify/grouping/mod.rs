@@ -142,13 +142,23 @@ pub struct Selected {
 }
 
 impl Selected {
-    /// The line saying which level the value asked for selected.
+    /// The line saying which level the value asked for selected. A
+    /// camber is said as typed, in rad, with its degrees beside: "camber
+    /// 1.60° asked for" answered `--camber 0.028` in a unit the user did
+    /// not type, and rounded 0.0001 rad to "0.01°".
     pub fn line(&self) -> String {
         let v = self.variable;
+        let asked = match v {
+            Variable::Camber => format!(
+                "{} rad ({})",
+                crate::error::Num(self.requested),
+                v.display(self.requested)
+            ),
+            _ => v.display(self.requested),
+        };
         format!(
-            "{} {} asked for: the {} level selected (its samples {} to {})",
+            "{} {asked} asked for: the {} level selected (its samples {} to {})",
             v.column(),
-            v.display(self.requested),
             v.display(self.level.nominal),
             v.display(self.level.lo),
             v.display(self.level.hi)

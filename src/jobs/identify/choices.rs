@@ -127,6 +127,15 @@ impl Polish {
             Polish::None => "none",
         }
     }
+
+    /// The method in words, as the terminal names it.
+    pub fn method(self) -> &'static str {
+        match self {
+            Polish::Lm => "Levenberg–Marquardt",
+            Polish::Gn => "Gauss–Newton",
+            Polish::None => "no",
+        }
+    }
 }
 
 impl std::str::FromStr for Polish {

@@ -333,13 +333,19 @@ pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
             " (restarted from the held fit's optimum: from the swarm's start the free fit had stopped at {swarm} %, above the held fit's {held} %)"
         )
     });
+    // Two equal numbers read as a misprint: a hold that costs nothing to
+    // the digits shown is said so.
+    let (held, free) = (fixed(f.sigma_percent, 3), fixed(free, 3));
+    let sigma = if held == free {
+        format!("σ {held} % held, as fitted free (to 0.001 %)")
+    } else {
+        format!("σ {held} % held against {free} % fitted free")
+    };
     Some(Note::said(format!(
-        "{}: {} {at}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free{restart}",
+        "{}: {} {at}, as the data do not determine {} (the held lines say how far): {sigma}{restart}",
         f.channel.quantity(),
         names.join(", "),
         if one { "it" } else { "them" },
-        fixed(f.sigma_percent, 3),
-        fixed(free, 3)
     )))
 }
 

@@ -4,7 +4,7 @@
 
 use super::holds::{held_lines, Held};
 use super::notes::{held_as_given, later_fit_notes, undetermined_note, unfitted_notes};
-use super::{SwarmReport, TwoStageReport, Written};
+use super::{Polish, SwarmReport, TwoStageReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::{Fit, HeldFor};
 use crate::tyre::Identification;
@@ -98,9 +98,8 @@ impl SwarmReport {
     fn first_fit_lines(&self) -> Vec<String> {
         let f = &self.fit;
         let mut out = vec![format!(
-            "  σ {:.3} % (PSO alone {:.3} %), RMS {} N, {} evaluations, {:.2} s",
-            f.sigma_percent,
-            f.sigma_pso_percent,
+            "  {}, RMS {} N, {} evaluations, {:.2} s",
+            swarm_and_polish(f, self.options.local),
             decimals_or_digits(f.rms, 1, 3),
             f.evaluations,
             f.seconds
@@ -206,9 +205,8 @@ impl SwarmReport {
         let mut out = Vec::new();
         if let Some(mz) = &self.aligning {
             out.push(format!(
-                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
-                mz.sigma_percent,
-                mz.sigma_pso_percent,
+                "  aligning moment: {}, RMS {} N·m, {:.2} s",
+                swarm_and_polish(mz, self.options.local),
                 decimals_or_digits(mz.rms, 2, 3),
                 mz.seconds
             ));
@@ -219,9 +217,8 @@ impl SwarmReport {
         if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
             out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
             out.push(format!(
-                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {} N, {:.2} s",
-                fx.sigma_percent,
-                fx.sigma_pso_percent,
+                "  longitudinal force: {}, RMS {} N, {:.2} s",
+                swarm_and_polish(fx, self.options.local),
                 decimals_or_digits(fx.rms, 1, 3),
                 fx.seconds
             ));
@@ -279,6 +276,27 @@ impl SwarmReport {
             .cloned()
             .collect()
     }
+}
+
+/// A fit's σ and its swarm's alone, "σ 4.729 % (PSO alone 4.729 %)",
+/// with the polish named where the two agree to the digits shown: two
+/// equal numbers read as a misprint, and `--local gn` as doing nothing
+/// the user could see. The polish starts from the swarm's best and keeps
+/// it unless it lowers the cost, so equal means it found nothing lower.
+fn swarm_and_polish(f: &Fit, local: Polish) -> String {
+    let (sigma, swarm) = (f.sigma_percent, f.sigma_pso_percent);
+    let why = if format!("{sigma:.3}") != format!("{swarm:.3}") {
+        String::new()
+    } else if local == Polish::None {
+        ": --local none, the swarm's best unpolished".to_string()
+    } else {
+        format!(
+            ": the {} polish (--local {}) from the swarm's best changed σ by less than 0.001 %",
+            local.method(),
+            local.as_str()
+        )
+    };
+    format!("σ {sigma:.3} % (PSO alone {swarm:.3} %{why})")
 }
 
 /// The parameters of a fit held at a value in `hold`, those the data do

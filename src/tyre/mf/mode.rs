@@ -82,6 +82,15 @@ impl MfMode {
         })
     }
 
+    /// Every `useMode` code the crate evaluates, with what it does, the
+    /// default first: the list a refused `--mode` is answered with.
+    pub const CODES: [(u32, &'static str); 4] = [
+        (121, "limit checks on, α* on (MFeval's default)"),
+        (111, "limit checks on, α* off (α* = α, γ* = γ)"),
+        (221, "limit checks off, α* on"),
+        (211, "limit checks off, α* off"),
+    ];
+
     /// The `useMode` code of this mode.
     pub fn use_mode(self) -> u32 {
         let h = if self.limit_checks { 100 } else { 200 };

@@ -83,12 +83,6 @@ fn a_level_request_no_unit_slip_explains_gets_the_levels_alone() {
         return;
     };
     let cases = [
-        // 0.5 rad is a camber a rig could set (28.65°).
-        (
-            "--camber",
-            "0.5",
-            "the requested 0.5 rad (28.65°) (levels: 0.0000 rad (0.00°), 0.0278 rad (1.60°), 0.0557 rad (3.19°);",
-        ),
         // 3° in rad, between the levels at 1.60° and 3.19°: read as
         // degrees it would be 0.05°, near the level at 0.
         (

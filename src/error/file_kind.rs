@@ -43,8 +43,8 @@ pub enum FileKind {
     /// A file of a known binary format (an image, a PDF, an archive).
     Foreign(super::ForeignFormat),
     /// Text that is neither TOML nor CSV: no line of it is a TOML
-    /// `key = value` or `[table]`, and its first line has no comma (a
-    /// README, notes, a Markdown file).
+    /// `key = value` or `[table]` (a README, notes, a Markdown file), and
+    /// it is named `.toml` or its first line has no comma.
     Text {
         /// Its first line that is neither blank nor a comment, shortened.
         first: Box<str>,

@@ -73,7 +73,7 @@ fn not_toml(text: &str, first: &str) -> Option<FileKind> {
     let lines = text
         .lines()
         .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-    if first.is_empty() || first.contains(',') || lines.clone().any(tomlish) {
+    if first.is_empty() || lines.clone().any(tomlish) {
         return None;
     }
     let first = first.trim();

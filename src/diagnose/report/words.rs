@@ -563,15 +563,15 @@ fn beyond_vehicle(
         VehicleLimit::Friction { friction } => format!(
             "{head}, {}× what the campaign's friction {} lets any car turn at (μ·g = {} m/s²): the base model cannot follow them, and the gap it leaves is the friction's, not an unmodelled effect's; is `friction` right?",
             significant(reached / threshold, 2),
-            significant(*friction, 3),
+            crate::format::rounded(*friction, 3),
             significant(threshold, 3)
         ),
         VehicleLimit::Rollover { track, cg_height } => format!(
             "{head}, beyond the car's static stability factor g·t/(2h) = {} m/s² ({} g; track {} m, cg_height {} m), where a car's inner wheels lift: these runs stayed on four wheels, so `cg_height` or the track is likely wrong (a road car's factor is 1.0–1.5 g)",
             significant(threshold, 3),
             significant(threshold / g, 2),
-            significant(*track, 3),
-            significant(*cg_height, 3)
+            crate::format::rounded(*track, 3),
+            crate::format::rounded(*cg_height, 3)
         ),
     }
 }

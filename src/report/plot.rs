@@ -21,12 +21,12 @@ const TITLE_ROOM: i32 = TITLE_PX as i32 + 14;
 pub use super::series::{palette, shade, Marker, Series, Shape, Style, Tone, INK, MEASURED_DOTS};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
-use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
 
+use super::plot_grid::Chart;
 use super::typeset::{Typeset, FONT};
 static REGISTER: Once = Once::new();
 
@@ -359,8 +359,6 @@ where
 
 /// At most this many labelled lines on a y axis (plotters' default).
 const Y_LABELS: usize = 10;
-
-pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// What a figure is drawn on: pixels (PNG) or vector paths (SVG).
 #[derive(Debug, Clone, Copy, PartialEq)]

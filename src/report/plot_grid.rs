@@ -10,10 +10,12 @@
 //! data units; the labelled lines are plotters' own key points (the same
 //! function, the same count), so that a minor line never falls on one.
 
-use super::plot::Chart;
 use plotters::coord::ranged1d::Ranged;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
+
+/// A panel's chart: f64 on both axes.
+pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// Least distance between two lines of the grid, px: closer, a light
 /// grid reads as a grey fill.

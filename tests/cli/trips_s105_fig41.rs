@@ -126,8 +126,12 @@ fn fitted_lines_read_over_their_points(png: &Path) {
     for k in 0..3 {
         let t = trace(png, k);
         println!("{}: load {k}: {t:?}", png.display());
-        let ok =
-            t.columns >= 500 && t.hidden == 0 && t.joined && t.median_spread <= 4 && t.paler >= 500;
+        let ok = t.columns >= 500
+            && t.hidden == 0
+            && t.joined
+            && t.median_spread <= 4
+            && t.per_column <= 3.5
+            && t.paler >= 600;
         assert!(ok, "{}: load {k}: {t:?}", png.display());
     }
 }

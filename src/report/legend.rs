@@ -5,7 +5,7 @@
 //! value.
 
 use super::colour::colormap;
-use super::series::{palette, Series, Shape, Style, LABEL_PX, NO_VALUE};
+use super::series::{Series, Shape, Style, LABEL_PX, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -181,7 +181,7 @@ fn swatch<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let c = palette(s.color);
+    let c = s.colour();
     match s.style {
         Style::Line | Style::Segments => {
             side.draw(&PathElement::new(vec![(6, y), (32, y)], c.stroke_width(2)))?;

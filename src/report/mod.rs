@@ -12,6 +12,7 @@ pub mod html;
 mod legend;
 pub mod lock;
 pub mod plot;
+pub mod plot_grid;
 pub mod progress;
 pub mod series;
 pub mod stability;

@@ -18,15 +18,15 @@ const TITLE_PX: u32 = 16;
 /// Height a panel's title takes above its chart and key, px: the title at
 /// [`TITLE_PX`] and plotters' padding around it, with room to spare.
 const TITLE_ROOM: i32 = TITLE_PX as i32 + 14;
-pub use super::series::{palette, Marker, Series, Shape, Style, INK, MEASURED_DOTS};
+pub use super::series::{palette, shade, Marker, Series, Shape, Style, Tone, INK, MEASURED_DOTS};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
-use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
 
+use super::plot_grid::Chart;
 use super::typeset::{Typeset, FONT};
 static REGISTER: Once = Once::new();
 
@@ -331,15 +331,19 @@ where
         .x_label_area_size(36)
         .y_label_area_size(64)
         .build_cartesian_2d(x0..x1, y0..y1)?;
+    let labels = (x_label_count(axis_width, (x0, x1)), Y_LABELS);
+    // Ours, not plotters' minor grid (ten a label: a grey fill).
+    super::plot_grid::draw_minor(&mut chart, labels)?;
     chart
         .configure_mesh()
-        .x_labels(x_label_count(axis_width, (x0, x1)))
+        .x_labels(labels.0)
+        .y_labels(labels.1)
+        .max_light_lines(0)
         .x_desc(&panel.x_label)
         .y_desc(&panel.y_label)
         .label_style(("sans-serif", LABEL_PX))
         .x_label_formatter(&|v| tick_label(*v, x1 - x0))
         .y_label_formatter(&|v| tick_label(*v, y1 - y0))
-        .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
     for s in &panel.series {
         draw_series(&mut chart, s, raster)?;
@@ -353,7 +357,8 @@ where
     Ok(())
 }
 
-type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+/// At most this many labelled lines on a y axis (plotters' default).
+const Y_LABELS: usize = 10;
 
 /// What a figure is drawn on: pixels (PNG) or vector paths (SVG).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -418,7 +423,7 @@ fn draw_series<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let c = palette(s.color);
+    let c = s.colour();
     let all = || s.x.iter().copied().zip(s.y.iter().copied());
     match s.style {
         // On a bitmap, plotters fills a line wider than a pixel as one

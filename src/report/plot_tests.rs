@@ -252,3 +252,59 @@ fn six_digit_tick_labels_are_spaced_to_fit_the_axis() {
     assert_eq!(x_label_count(1200, (0.0, 10.0)), 10);
     assert_eq!(x_label_count(40, (85000.0, 135000.0)), 2);
 }
+
+/// A replay's sideslip over −6°…12° on a 180 px axis: plotters' minor
+/// grid drew a line every 0.2° (2 px apart, a grey fill); between the
+/// labels every 2° the half step, 1°, is the finest 8 px apart.
+#[test]
+fn the_minor_grid_is_no_finer_than_a_legible_spacing() {
+    use super::super::plot_grid::{minor_lines, GRID_PX};
+    let lines = minor_lines((-6.0, 12.0), 10, 180.0);
+    let odd: Vec<f64> = (-5..=11).step_by(2).map(f64::from).collect();
+    assert_eq!(lines.len(), odd.len(), "{lines:?}");
+    assert!(lines.iter().zip(&odd).all(|(a, b)| (a - b).abs() < 1e-9));
+    // With room, a quarter of a labelled step of 2: 16 px apart, none on
+    // a labelled line (the even values).
+    let fine = minor_lines((-6.0, 12.0), 10, 580.0);
+    // −6…12 every 0.5 less the ten labelled values.
+    assert_eq!(fine.len(), 37 - 10, "{fine:?}");
+    for w in fine.windows(2) {
+        assert!((w[1] - w[0]) * 580.0 / 18.0 >= GRID_PX, "{fine:?}");
+    }
+    assert!(fine
+        .iter()
+        .all(|v| (v / 2.0 - (v / 2.0).round()).abs() > 1e-9));
+    // A fifth of a labelled step of 1000 N, 200 N, where it fits; none on
+    // an axis too short for a half.
+    let force = minor_lines((-3500.0, 3500.0), 10, 700.0);
+    assert!((force[1] - force[0] - 200.0).abs() < 1e-6, "{force:?}");
+    assert!(minor_lines((-3500.0, 3500.0), 10, 80.0).is_empty());
+    assert!(minor_lines((0.0, f64::NAN), 10, 300.0).is_empty());
+}
+
+/// A fit's points pale under its line in the full colour, drawn after
+/// them: the SVG's discs are the pale tint and its line comes last.
+#[test]
+fn pale_points_are_drawn_in_a_tint_and_under_the_line_drawn_after_them() {
+    let x: Vec<f64> = (0..20).map(f64::from).collect();
+    let fig = Figure::stack(vec![Panel {
+        series: vec![
+            Series::line("", &x, &x, 0)
+                .styled(Style::Points(2))
+                .toned(Tone::Pale),
+            Series::line("fitted", &x, &x, 0),
+        ],
+        ..Panel::default()
+    }]);
+    let svg = fig.svg(Path::new("test.svg")).unwrap();
+    let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+    let (full, pale) = (palette(0), shade(palette(0), Tone::Pale));
+    assert_eq!(pale, RGBColor(154, 194, 221));
+    let first_line = svg.find(&format!("stroke=\"{}\"", hex(full)));
+    let last_disc = svg.rfind(&format!("fill=\"{}\"", hex(pale)));
+    assert!(
+        matches!((last_disc, first_line), (Some(d), Some(l)) if d < l),
+        "{svg}"
+    );
+    assert!(!svg.contains(&format!("fill=\"{}\"", hex(full))), "{svg}");
+}

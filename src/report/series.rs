@@ -1,5 +1,5 @@
 //! What a figure's series are: the data, how each is drawn ([`Style`]) and in
-//! which colour ([`palette`]), shared by the panel drawing
+//! which colour ([`palette`], full or pale: [`Tone`]), shared by the panel drawing
 //! ([`super::plot`]) and its key (the legend column beside each panel).
 
 use super::colour::ColourScale;
@@ -81,7 +81,25 @@ pub struct Series {
     pub color: usize,
     /// A marker at every point (with `Style::Points` it replaces the discs).
     pub marker: Option<Marker>,
+    /// How strongly its colour is laid on ([`Tone`]).
+    pub tone: Tone,
 }
+
+/// How strongly a series' colour is laid on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Tone {
+    /// The palette's colour.
+    #[default]
+    Full,
+    /// The palette's colour mixed with white ([`PALE`]): measured points
+    /// under the line fitted to them, so that the line, in the full colour
+    /// and drawn after them, reads over hundreds of points (in one colour
+    /// a close fit's line vanished into its points' band).
+    Pale,
+}
+
+/// The share of white in a [`Tone::Pale`] colour.
+pub const PALE: f64 = 0.55;
 
 impl Series {
     /// A solid line.
@@ -95,6 +113,7 @@ impl Series {
             values: None,
             scale: None,
             marker: None,
+            tone: Tone::Full,
         }
     }
     /// A heat map: cells of size (dx, dy) centred on (x, y), coloured by
@@ -111,6 +130,7 @@ impl Series {
             scale: Some(scale),
             color: 0,
             marker: None,
+            tone: Tone::Full,
         }
     }
 
@@ -124,6 +144,28 @@ impl Series {
     pub fn marked(mut self, marker: Marker) -> Self {
         self.marker = Some(marker);
         self
+    }
+
+    /// The same series in another tone.
+    pub fn toned(mut self, tone: Tone) -> Self {
+        self.tone = tone;
+        self
+    }
+
+    /// The colour it is drawn in: its palette colour in its tone.
+    pub fn colour(&self) -> RGBColor {
+        shade(palette(self.color), self.tone)
+    }
+}
+
+/// Colour `c` in `tone`.
+pub fn shade(c: RGBColor, tone: Tone) -> RGBColor {
+    match tone {
+        Tone::Full => c,
+        Tone::Pale => {
+            let mix = |v: u8| (f64::from(v) + PALE * (255.0 - f64::from(v))).round() as u8;
+            RGBColor(mix(c.0), mix(c.1), mix(c.2))
+        }
     }
 }
 

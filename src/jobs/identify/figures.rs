@@ -15,7 +15,7 @@ use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
 use crate::identify::Channel;
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Panel, Series, Style, Tone};
 use crate::tyre::Tyre;
 
 /// Measured points against the fitted curves of every channel fitted.
@@ -193,7 +193,10 @@ fn panel(
         // past nine loads the colours come again with dashed lines.
         let style = level_style(k);
         let colour = style.colour;
-        series.push(Series::line("", &x, &y, colour).styled(Style::Points(2)));
+        // Pale points under the line in the full colour: in one colour
+        // a close fit's line could not be told from its points.
+        let points = Series::line("", &x, &y, colour).styled(Style::Points(2));
+        series.push(points.toned(Tone::Pale));
         let (xd, ys) = fitted_curve(tyre, ch, c);
         // The line is drawn at the condition's own load, the report's
         // `curves[].fz`: the key says that number, and its level's name

@@ -1,9 +1,9 @@
 //! The key and level styles every tyre-fit figure shares (the swarm's
 //! and the staged Magic Formula fit's): grey swatches for measured
-//! (points) and fitted (a line) first, then a colour per level, its
+//! (pale points) and fitted (a line) first, then a colour per level, its
 //! fitted line's dash and its points' marker, 27 levels told apart.
 
-use crate::report::plot::{Series, Shape, Style, INK};
+use crate::report::plot::{Series, Shape, Style, Tone, INK};
 
 /// The first entries of a fit figure's key, which say how measured and
 /// fitted are drawn: the measured points (grey, drawn as `points`) and
@@ -11,7 +11,9 @@ use crate::report::plot::{Series, Shape, Style, INK};
 /// its key with them; the levels' colours follow.
 pub(super) fn key_entries(points: Style, fitted: usize) -> Vec<Series> {
     vec![
-        Series::line("measured", &[], &[], MEASURED).styled(points),
+        Series::line("measured", &[], &[], MEASURED)
+            .styled(points)
+            .toned(Tone::Pale),
         Series::line("fitted", &[], &[], fitted),
     ]
 }

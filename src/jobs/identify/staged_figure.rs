@@ -21,7 +21,7 @@ pub(super) use super::fit_key::{key_entries, level_style, MEASURED};
 use crate::format::{fixed, plural};
 use crate::identify::grouping::{Levels as Named, Variable};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
-use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style};
+use crate::report::plot::{tick_label, Figure, Marker, Panel, Series, Shape, Style, Tone};
 use crate::tyre::mf::MagicFormula;
 use std::path::{Path, PathBuf};
 
@@ -498,7 +498,9 @@ fn level_series(
     } else {
         ("", label)
     };
-    let points = Series::line(point_label, &xs, &measured, colour).styled(Style::Points(3));
+    let points = Series::line(point_label, &xs, &measured, colour)
+        .styled(Style::Points(3))
+        .toned(Tone::Pale);
     let points = points.marked(Marker {
         shape: style.shape,
         ..RING
@@ -507,9 +509,11 @@ fn level_series(
     (points, line, (e2, y2))
 }
 
-/// How a measured row is drawn: a ring, hollow, so that the level's
-/// fitted line, drawn in the same colour over it, is seen through its
-/// points (over filled dots of its colour a close fit's line vanished).
+/// How a measured row is drawn: a ring, hollow and pale ([`Tone::Pale`]),
+/// so that the level's fitted line, drawn over it in the level's full
+/// colour, reads through its points (over filled dots of its colour a
+/// close fit's line vanished, and over 395 rings of its colour a panel of
+/// the Hoosier file's pure Fy showed bands, not lines).
 const RING: Marker = Marker {
     shape: Shape::Ring,
     size: 3,

@@ -385,7 +385,7 @@ fn displaced(five: &[Prepared], z: f64) -> Displaced<'_> {
         best,
         se,
         off,
-        rows: vec![0..m],
+        rows: std::iter::once(0..m).collect(),
     }
 }
 

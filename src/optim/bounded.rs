@@ -123,6 +123,20 @@ impl BoundedLm {
         p0: &[f64],
         bounds: &[(f64, f64)],
     ) -> (LocalResult, Option<DMatrix<f64>>) {
+        self.minimize_settled(problem, p0, bounds, &|_, _| false)
+    }
+
+    /// [`BoundedLm::minimize_linearised`] that also stops, converged and
+    /// without its trial, where a fresh Jacobian's model predicts a
+    /// decrease `settled(predicted, cost)` accepts (a diagnosis's fold
+    /// refit: the stop of its own model's steps).
+    pub(crate) fn minimize_settled(
+        &self,
+        problem: &dyn Residuals,
+        p0: &[f64],
+        bounds: &[(f64, f64)],
+        settled: &dyn Fn(f64, f64) -> bool,
+    ) -> (LocalResult, Option<DMatrix<f64>>) {
         let n = p0.len();
         let mut it = Iterate::new(problem, p0, bounds, self.tolerance);
         let mut converged = false;
@@ -146,7 +160,12 @@ impl BoundedLm {
             // Where a Jacobian costs replays, a fresh model that promises
             // less than the tolerance has converged: its trial could only
             // be a step too small to go on from.
-            if fresh && secant && model.promises_below(lambda, self.tolerance * it.cost) {
+            // A caller's own stop (`settled`) likewise.
+            let stops = fresh
+                && model.step(lambda).is_some_and(|(_, p)| {
+                    (secant && p < PROMISE_SHARE * self.tolerance * it.cost) || settled(p, it.cost)
+                });
+            if stops {
                 converged = true;
                 break;
             }
@@ -402,13 +421,6 @@ impl ProjectedModel {
             g,
             scale,
         }
-    }
-
-    /// Whether the step at damping `lambda` exists and the decrease the
-    /// model predicts for it is below [`PROMISE_SHARE`] of `decrease`.
-    fn promises_below(&self, lambda: f64, decrease: f64) -> bool {
-        self.step(lambda)
-            .is_some_and(|(_, predicted)| predicted < PROMISE_SHARE * decrease)
     }
 
     /// No free parameter can lower the cost to first order.

@@ -14,13 +14,16 @@
 //! the largest move of one parameter that `P` allows is
 //! `|δ_i| = √(2P·(H⁻¹)_ii)`, that is `|δ_i|/s_i = √(P·(m − n)/C)`
 //! standard errors (`√(2P)` where the residuals are at the noise, `s² =
-//! 1`). A stop at `P ≤ τ·C/m` leaves every parameter within `√τ` of its
-//! standard error of the fold's optimum: [`REFIT_SETTLED`] `τ = 1e-4`,
-//! 0.01 standard errors. The earlier stop at `P ≤ 1e-6·C` left up to
+//! 1`). A stop at `P ≤ τ·C/m` ([`settled`]) leaves every parameter within
+//! `√τ` of its standard error of the fold's optimum:
+//! [`REFIT_SETTLED`](crate::diagnose::fit::REFIT_SETTLED) `τ = 1e-3`, 0.03
+//! standard errors. The stop at `P ≤ 1e-6·C` before it left up to
 //! `√(1e-6·m)`, 0.18 of them on a 600 s sedan's 31,000 rows (0.06–0.16
 //! measured against Levenberg–Marquardt run to convergence): part of the
 //! folds' spread, the reported `fold_std_error`, was where the refits
-//! stopped, not where the data put them.
+//! stopped, not where the data put them. Levenberg–Marquardt, where it
+//! takes over from the model, stops by the same test on its own fresh
+//! models (and on an accepted step's decrease below `τ·C/m`).
 //!
 //! The model is exact to second order in the move from where its Jacobian
 //! was taken; a fold that went far ([`REFIT_FAR`] all-run standard errors)
@@ -31,7 +34,7 @@
 pub(crate) use crate::diagnose::fit::fold_check::training_rows;
 use crate::diagnose::fit::fold_check::{against_start, start_cost, FoldRefit};
 use crate::diagnose::fit::problem::Problem;
-use crate::diagnose::fit::{fit, pair_index, FitOutcome, GlobalSearch, Polish};
+use crate::diagnose::fit::{fit, pair_index, settled, FitOutcome, GlobalSearch, Polish};
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::ProjectedModel;
 use crate::optim::local::Residuals;
@@ -121,13 +124,6 @@ impl FoldModel {
     }
 }
 
-/// A fold refit has converged when the next step of its model would lower
-/// the training cost `C` of its `m` rows by at most `τ·C/m`, this `τ`: each
-/// parameter is then within `√τ` = 0.01 of its standard error of the
-/// fold's optimum (module doc). Measured on the 600 s sedan, against the
-/// earlier `1e-6·C` (up to 0.18 standard errors there): see CHANGELOG.
-pub(super) const REFIT_SETTLED: f64 = 1e-4;
-
 /// How far from where its model's Jacobian was taken (the all-run fit, or
 /// its last fresh one), in all-run standard errors of any parameter, a
 /// fold refit takes a fresh Jacobian before it believes the model's
@@ -139,13 +135,6 @@ pub(super) const REFIT_SETTLED: f64 = 1e-4;
 /// sedan's folds moved 1–21 standard errors; those of its road friction
 /// that moved 13 and 21 stopped 12 and 40 cost units above their optima.
 pub(super) const REFIT_FAR: f64 = 3.0;
-
-/// Whether a step predicted to lower the training cost `cost` of `rows`
-/// residual rows by `predicted` leaves the parameters settled
-/// ([`REFIT_SETTLED`]).
-pub(super) fn settled(predicted: f64, cost: f64, rows: usize) -> bool {
-    predicted <= REFIT_SETTLED * cost / rows.max(1) as f64
-}
 
 /// Replays of a fold refit on its quadratic model before it falls back to
 /// Levenberg–Marquardt. A model step costs one replay, an iteration of

@@ -41,16 +41,17 @@
 //! secondary terms (camber, pressure, load variations) at 0, the
 //! primary ones at a passenger tyre's values.
 
+use super::hold_guard::guarded_refit;
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::{uncertainty, Uncertainty, ABSURD_EFFECT_PERCENT};
 use crate::format::{exact, readable};
 use crate::identify::spare::{
-    candidates, guard, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays,
-    Spared, TieBreak, Tried,
+    candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
+    TieBreak, Tried,
 };
 use crate::optim::bounded::BoundedLm;
-use crate::optim::local::{LocalResult, Residuals};
+use crate::optim::local::LocalResult;
 use serde::Serialize;
 use std::fmt;
 
@@ -469,7 +470,6 @@ pub(super) fn hold_undetermined(
             bounds: &fit.bounds,
             clamp_starts: true,
             tie: TieBreak::LatestInOrder,
-            // A hold the data reject is refused (`guarded_refit`).
             guarded: true,
         };
         let Spared {
@@ -498,52 +498,6 @@ pub(super) fn hold_undetermined(
         held.push((name, value, why));
     }
     held
-}
-
-/// The refit of a hold, `sub` (the stage's problem of `fit` with one
-/// parameter held, within `bounds`), from `warm`, its refit from the
-/// optimum: where that raises the cost past the guard (`spare::guard`,
-/// about 2.5 residual variances or σ rising by 5 % of itself), the
-/// stage's own fit of `sub` from its start values too, and the better.
-///
-/// The guard refuses a hold whose best refit costs past it: a flagged
-/// coefficient is one whose standard error reaches its value, a linear
-/// judgement, and where the trade-off is far from linear the hold costs
-/// what the standard error did not foresee (`RVY1` on MFeval's own MF 6.1
-/// grid, one standard error off, raised combined Fy's σ from 0.064 % to
-/// 0.820 %); the coefficient stays free, with its warning. Judged on the
-/// warm refit alone, a hold the fresh fit makes cheap was refused too
-/// (the Hoosier file's `PKY4` at 60 iterations: σ 1.683 → 1.749 %, 3.9 %
-/// fresh, past 5 % warm), so the fresh fit is tried before refusing.
-fn guarded_refit(
-    fit: &StageFit,
-    sub: &StageProblem,
-    warm: LocalResult,
-    bounds: &[(f64, f64)],
-    refit: &Refit,
-) -> LocalResult {
-    let base = fit.problem.cost(&fit.p);
-    if warm.cost - base <= guard(base, fit.problem.count(), fit.p.len()) {
-        return warm;
-    }
-    // The held one: the first of the stage's names `sub` lacks.
-    let names = &fit.problem.names;
-    let k = (0..names.len())
-        .find(|&i| sub.names.get(i) != Some(&names[i]))
-        .unwrap_or(names.len() - 1);
-    let without = |v: &[Need]| [&v[..k], &v[k + 1..]].concat();
-    let starts = [&fit.starts[..k], &fit.starts[k + 1..]].concat();
-    let fresh = refit(sub, &without(&fit.needs), &starts, bounds);
-    let evaluations = warm.evaluations + fresh.evaluations;
-    let best = if fresh.cost.is_finite() && fresh.cost < warm.cost {
-        fresh
-    } else {
-        warm
-    };
-    LocalResult {
-        evaluations,
-        ..best
-    }
 }
 
 /// The stage's `problem` at `p` with its `k`-th parameter held at

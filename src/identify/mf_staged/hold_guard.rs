@@ -5,11 +5,24 @@
 //! residual variances or σ rising by 5 % of itself, whichever is larger
 //! (`spare.rs`, which the swarm fits share).
 
-use super::holds::{Refit, StageFit};
 use super::params::Need;
 use super::problem::StageProblem;
 use crate::identify::spare::guard;
 use crate::optim::local::{LocalResult, Residuals};
+
+/// The stage's own fit of a problem from its start values: the problem,
+/// each free parameter's levels needed, starts and bounds.
+pub(super) type Refit<'r> =
+    dyn Fn(&StageProblem, &[Need], &[f64], &[(f64, f64)]) -> LocalResult + Sync + 'r;
+
+/// A stage's fit as the guard reads it: its problem at its point `p`, and
+/// each free parameter's levels needed and start value.
+pub(super) struct Fitted<'f, 'a> {
+    pub(super) problem: &'f StageProblem<'a>,
+    pub(super) p: &'f [f64],
+    pub(super) needs: &'f [Need],
+    pub(super) starts: &'f [f64],
+}
 
 /// The refit of a hold, `sub` (the stage's problem of `fit` with one
 /// parameter held, within `bounds`), from `warm`, its refit from the
@@ -27,13 +40,13 @@ use crate::optim::local::{LocalResult, Residuals};
 /// (the Hoosier file's `PKY4` at 60 iterations: σ 1.683 → 1.749 %, 3.9 %
 /// fresh, past 5 % warm), so the fresh fit is tried before refusing.
 pub(super) fn guarded_refit(
-    fit: &StageFit,
+    fit: Fitted,
     sub: &StageProblem,
     warm: LocalResult,
     bounds: &[(f64, f64)],
     refit: &Refit,
 ) -> LocalResult {
-    let base = fit.problem.cost(&fit.p);
+    let base = fit.problem.cost(fit.p);
     if warm.cost - base <= guard(base, fit.problem.count(), fit.p.len()) {
         return warm;
     }
@@ -44,7 +57,7 @@ pub(super) fn guarded_refit(
         .unwrap_or(names.len() - 1);
     let without = |v: &[Need]| [&v[..k], &v[k + 1..]].concat();
     let starts = [&fit.starts[..k], &fit.starts[k + 1..]].concat();
-    let fresh = refit(sub, &without(&fit.needs), &starts, bounds);
+    let fresh = refit(sub, &without(fit.needs), &starts, bounds);
     let evaluations = warm.evaluations + fresh.evaluations;
     let best = if fresh.cost.is_finite() && fresh.cost < warm.cost {
         fresh

@@ -41,7 +41,7 @@
 //! secondary terms (camber, pressure, load variations) at 0, the
 //! primary ones at a passenger tyre's values.
 
-use super::hold_guard::guarded_refit;
+use super::hold_guard::{guarded_refit, Fitted, Refit};
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::{uncertainty, Uncertainty, ABSURD_EFFECT_PERCENT};
@@ -407,11 +407,6 @@ pub(super) struct StageFit<'a> {
     pub(super) starts: Vec<f64>,
 }
 
-/// The stage's own fit of a problem from its start values: the problem,
-/// each free parameter's levels needed, starts and bounds.
-pub(super) type Refit<'r> =
-    dyn Fn(&StageProblem, &[Need], &[f64], &[(f64, f64)]) -> LocalResult + Sync + 'r;
-
 /// Holds the parameters of `fit` the data do not determine at their
 /// `stated` values, one at a time (module notes). The hold is chosen by
 /// refitting the rest from the optimum (Levenberg–Marquardt within the
@@ -453,7 +448,7 @@ pub(super) fn hold_undetermined(
             stated: |k: usize| values[k],
             compensating: |k: usize, dv: f64| u.compensating(k, dv),
             refit: |sub: &StageProblem, x: &[f64], b: &[(f64, f64)]| {
-                guarded_refit(fit_ref, sub, lm.minimize(sub, x, b), b, refit)
+                guarded_refit(fit_ref.at(), sub, lm.minimize(sub, x, b), b, refit)
             },
         };
         // A standard error taken at a bound means nothing: a parameter
@@ -498,6 +493,18 @@ pub(super) fn hold_undetermined(
         held.push((name, value, why));
     }
     held
+}
+
+impl<'a> StageFit<'a> {
+    /// The fit as the guard reads it: problem, point, needs and starts.
+    fn at(&self) -> Fitted<'_, 'a> {
+        Fitted {
+            problem: &self.problem,
+            p: &self.p,
+            needs: &self.needs,
+            starts: &self.starts,
+        }
+    }
 }
 
 /// The stage's `problem` at `p` with its `k`-th parameter held at

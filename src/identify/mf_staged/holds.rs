@@ -51,7 +51,6 @@ use crate::identify::spare::{
     TieBreak, Tried,
 };
 use crate::optim::bounded::BoundedLm;
-use crate::optim::local::LocalResult;
 use serde::Serialize;
 use std::fmt;
 

@@ -102,6 +102,7 @@
 //! paper's own LM.
 
 mod fit_warnings;
+mod hold_guard;
 mod holds;
 mod paper_lm;
 pub use fit_warnings::{LARGE_SIGMA_PERCENT, MIN_POINTS_PER_PARAMETER};

@@ -20,3 +20,10 @@ pub const STEEPEST_BANK: f64 = 0.61;
 /// default 150 is continued to 50 per free parameter), and each iteration
 /// replays every row.
 pub const MOST_STAGE_ITERATIONS: usize = 10_000;
+
+/// The longest simulated run, s (100,000 s, 27.8 h): a history holds
+/// 2,000,000 rows after its first (`io::MAX_ROWS`), one every output step
+/// of at most 0.05 s. A manoeuvre's `end` beyond it is refused at its key
+/// (1e9 s was refused as below its lower limit only; up to 1e6 s passed
+/// on to the rows' refusal, which asked for a step no scenario may set).
+pub const LONGEST_RUN: f64 = 1e5;

@@ -113,7 +113,7 @@ def test_a_bad_keyword_is_an_input_error_naming_key_and_value(root, changes, key
 
 
 def test_a_missing_table_or_tyre_file_is_named(root, tmp_path):
-    with pytest.raises(handling.InputError, match="missing field `manoeuvre`"):
+    with pytest.raises(handling.InputError, match=r"the table `\[manoeuvre\]` is missing"):
         handling.simulate(vehicle=VEHICLE, tyres=root / "tyres" / "gim.toml")
     with pytest.raises(handling.InputError) as e:
         handling.simulate(**sedan_step(root, tyres=tmp_path / "none.toml"))

@@ -62,18 +62,24 @@ pub struct MetricsArgs {
 }
 
 /// An angle column `metrics` reads: refused at its option, with those it
-/// reads (a run's `bank` it does not).
+/// reads (a run's `bank` it does not); a run column that is no angle
+/// (`speed`) said as such, not answered with the nearest angle's name.
 fn angle_column(text: &str) -> Result<handling::io::AngleColumn, String> {
     use handling::io::AngleColumn;
     let known = AngleColumn::read_by_metrics_names();
     AngleColumn::from_name(text.trim())
         .filter(|c| AngleColumn::READ_BY_METRICS.contains(c))
-        .ok_or_else(|| {
-            format!(
+        .ok_or_else(|| match AngleColumn::not_an_angle(text.trim()) {
+            // A column that exists and is no angle is no slip of one's name.
+            Some(why) => format!(
+                "{why}; the angle columns `metrics` reads in degrees are {}",
+                known.join(", ")
+            ),
+            None => format!(
                 "not an angle column `metrics` reads{}: one of {}",
                 handling::format::did_you_mean(text, &known),
                 known.join(", ")
-            )
+            ),
         })
 }
 

@@ -52,6 +52,9 @@ pub enum InputProblem {
         /// The JSON reader's description.
         detail: String,
     },
+    /// A table the file's kind requires, absent (boxed).
+    #[error("{0}")]
+    MissingTable(Box<super::MissingTable>),
     /// The TOML reader's own description of a syntax or structure error.
     #[error("{detail}")]
     Toml {

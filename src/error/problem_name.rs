@@ -11,6 +11,7 @@ impl InputProblem {
             InputProblem::Csv { .. } => "Csv",
             InputProblem::Header { .. } => "Header",
             InputProblem::Toml { .. } => "Toml",
+            InputProblem::MissingTable(_) => "MissingTable",
             InputProblem::Json { .. } => "Json",
             InputProblem::NotUtf8 { .. } => "NotUtf8",
             InputProblem::MissingFile { .. } => "MissingFile",

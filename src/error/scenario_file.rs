@@ -54,6 +54,8 @@ pub enum ScenarioProblem {
         end: f64,
         /// The steps it took.
         steps: usize,
+        /// Why, as far as the scenario tells.
+        cause: super::StallCause,
     },
     /// A step steer above the car's critical speed whose divergence
     /// stalled the integration (a wheel lifting off under load transfer):
@@ -109,9 +111,11 @@ impl fmt::Display for ScenarioProblem {
             ScenarioProblem::LongReplay(r) => r.fmt(f),
             ScenarioProblem::ReplayRun(r) => r.fmt(f),
             ScenarioProblem::UnstableStep(u) => u.fmt(f),
-            ScenarioProblem::Stalled { at, end, steps } => write!(
+            ScenarioProblem::Stalled { at, end, steps, cause } => write!(
                 f,
-                "the integration (Dormand–Prince) stalled at t = {at:.3} s of {end:.3} s: {steps} steps, its step driven towards zero by a model that is not smooth there (a wheel lifting off under load transfer, or forces far beyond any tyre's: linear tyres at a large steer); nothing is written. A smaller manoeuvre keeps the car in the model's range; `method = \"rk4\"` with a fixed `step` runs through and its rows show where the run leaves it"
+                "the integration (Dormand–Prince) stalled at t = {at:.3} s of {end:.3} s: {steps} steps, its step driven towards zero by a model that is not smooth there ({}); nothing is written. {}; `method = \"rk4\"` with a fixed `step` runs through and its rows show where the run leaves it",
+                cause.cause(),
+                cause.advice()
             ),
             ScenarioProblem::StalledAboveCritical { at, end, gradient, critical, speed, loads } => write!(
                 f,

@@ -220,7 +220,8 @@ fn rig_name<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
 /// [`crate::format::nearest_name`]), or the time under a long name; of
 /// several, the nearest (the first of equals): in a capitalised header
 /// `Speed` is two edits from `steer`, and was named for it where `Steer`
-/// stood after it.
+/// stood after it. A column holding `;` or a tab is a whole header of
+/// another separator (its advice says so), no name.
 fn meant(
     name: &str,
     headers: &csv::StringRecord,
@@ -250,6 +251,7 @@ fn meant(
         .iter()
         .enumerate()
         .filter(|(_, h)| !required.contains(h) && !optional.contains(h))
+        .filter(|(_, h)| !h.contains([';', '\t']))
         .filter(|(_, h)| {
             crate::format::nearest_name(h, &[name]).is_some()
                 || time(h)

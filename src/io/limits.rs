@@ -3,6 +3,7 @@
 //! road-wheel steer, a speed on a road, a steer frequency, a start in the
 //! run. Units: rad, m/s, Hz, s.
 
+use crate::constants::LONGEST_RUN;
 use crate::error::{Limit, ParamError};
 
 /// The largest front road-wheel steer a manoeuvre may ask for, rad (45°):
@@ -55,6 +56,6 @@ pub(super) fn frequency(key: &str, f: f64, lo: f64) -> Result<(), ParamError> {
 /// A manoeuvre's `start`, refused at its own key where no end can follow
 /// it (else the end is blamed for a start it cannot lie after).
 pub(super) fn run_start(start: f64) -> Result<(), ParamError> {
-    ParamError::in_range("start", start, -1e-12, 1e6, Limit::StartBeforeEnd)?;
+    ParamError::in_range("start", start, -1e-12, LONGEST_RUN, Limit::StartBeforeEnd)?;
     ParamError::non_negative("start", start)
 }

@@ -64,6 +64,22 @@ impl AngleColumn {
         Self::ALL.into_iter().find(|c| c.name() == name)
     }
 
+    /// A run column `name` that is no angle, said with what it holds and
+    /// its unit (`speed is no angle: a run's speed is in m/s`): answered
+    /// by the nearest angle's name, `--degrees speed` was offered `steer`.
+    pub fn not_an_angle(name: &str) -> Option<String> {
+        let (what, unit) = match name {
+            "t" => ("time", "s"),
+            "speed" => ("forward speed", "m/s"),
+            "ay" => ("lateral acceleration", "m/s²"),
+            "ax" => ("longitudinal acceleration", "m/s²"),
+            _ => return None,
+        };
+        Some(format!(
+            "`{name}` is no angle: a run's {what} is in {unit}, never in degrees"
+        ))
+    }
+
     /// The column's name in a run file.
     pub fn name(self) -> &'static str {
         match self {

@@ -192,7 +192,13 @@ pub struct Scenario {
 fn timing(v: f64, start: f64, end: f64) -> Result<(), ParamError> {
     speed(v)?;
     run_start(start)?;
-    ParamError::in_range("end", end, start, 1e6, Limit::EndAfterStart)
+    ParamError::in_range(
+        "end",
+        end,
+        start,
+        crate::constants::LONGEST_RUN,
+        Limit::EndAfterStart,
+    )
 }
 
 fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {

@@ -4,6 +4,8 @@
 
 mod decimal_comma;
 mod home;
+mod missing_table;
+mod names;
 mod referenced;
 pub(crate) mod vehicle_keys;
 
@@ -37,49 +39,6 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
         .rfind('\n')
         .map_or(before.len(), |i| before.len() - i - 1);
     (line, col + 1)
-}
-
-/// serde's `unknown variant `x`, expected one of `a`, `b`` (or `unknown
-/// field`: a misspelt key) with the nearest
-/// known name suggested after the unknown one, as every other unknown name
-/// is answered (a manoeuvre's `kind = "step_stear"`); other messages, and
-/// ones that already suggest, unchanged.
-fn suggest_variant(message: &str) -> String {
-    let parse = |what: &str| {
-        let rest = message.strip_prefix(&format!("unknown {what} `"))?;
-        let (given, rest) = rest.split_once('`')?;
-        let known = home::listed(rest.strip_prefix(", expected ")?);
-        let clause = Some(what)
-            .filter(|w| *w == "field")
-            .and_then(|_| same_quantity(given, &known))
-            .unwrap_or_else(|| crate::format::did_you_mean(given, &known));
-        (!clause.is_empty()).then(|| format!("unknown {what} `{given}`{clause}{rest}"))
-    };
-    parse("variant")
-        .or_else(|| parse("field"))
-        .unwrap_or_else(|| message.to_string())
-}
-
-/// Keys the manoeuvre kinds (`scenario.rs`) give one quantity under
-/// different names: the steer is a step steer's `steer`, a sine's or a
-/// sweep's `amplitude`, a ramp's `rate`; the frequency is a sine's
-/// `frequency`, a sweep's `f_start` and `f_end`. Spelling alone answers a
-/// sine's `steer` with `speed`.
-const SAME_QUANTITY: &[&[&str]] = &[
-    &["steer", "amplitude", "rate"],
-    &["frequency", "f_start", "f_end"],
-];
-
-/// The known keys that hold what the unknown key `given` holds in another
-/// kind of table, as a clause (` (did you mean `amplitude`?)`).
-fn same_quantity(given: &str, known: &[&str]) -> Option<String> {
-    let group = SAME_QUANTITY.iter().find(|g| g.contains(&given))?;
-    let names: Vec<String> = known
-        .iter()
-        .filter(|k| group.contains(k))
-        .map(|k| format!("`{k}`"))
-        .collect();
-    (!names.is_empty()).then(|| format!(" (did you mean {}?)", names.join(" or ")))
 }
 
 /// toml's "expected newline, `#`" (after a value or a table header the
@@ -254,6 +213,9 @@ impl TomlSource {
     fn toml_error(&self, e: &toml::de::Error, reparse: &Reparse) -> InputError {
         let message = self.plain_message(e);
         let message = home::case_slip(&self.text, &message).unwrap_or(message);
+        if let Some(missing) = self.missing_table(&message, e.span().as_ref(), reparse) {
+            return missing;
+        }
         let (span, key) = self.place(e, &message);
         // A name's place holding no name (`kind = 3`): the names are found
         // with a string there, which serde answers with its list.
@@ -344,7 +306,7 @@ impl TomlSource {
         if let Some(hint) = comma.filter(|_| message == "expected newline, `#`") {
             return hint;
         }
-        let message = suggest_variant(&message);
+        let message = names::suggest_variant(&message);
         // serde calls a TOML date a map: say what the reader wrote.
         let message = match message.strip_prefix("invalid type: map, ") {
             Some(rest) => format!("invalid type: a date, time or table, {rest}"),

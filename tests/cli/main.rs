@@ -592,6 +592,7 @@ mod trips_s104_mend34;
 mod trips_s105_fig41;
 mod trips_s105_lead;
 mod trips_s105_mfhold41;
+mod trips_s105_ui41a;
 mod trips_s105_ui41b;
 mod trips_s105_words41;
 mod trips_s62;

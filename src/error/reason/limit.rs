@@ -81,10 +81,13 @@ pub enum Limit {
     #[error("the largest step must lie in (1e-6, 1] s")]
     MaxStep,
     /// A manoeuvre's end.
-    #[error("the run must end after it starts")]
+    #[error("the run must end after it starts, {}", longest_run())]
     EndAfterStart,
     /// A manoeuvre's start.
-    #[error("a run starts at 0 s or later and before the 1e6 s its end may reach")]
+    #[error(
+        "a run starts at 0 s or later and before the {} s its end may reach",
+        crate::constants::LONGEST_RUN
+    )]
     StartBeforeEnd,
     /// The share of the reached lateral acceleration a design may ask.
     #[error("a design asks at most the lateral acceleration the runs reached")]
@@ -111,7 +114,7 @@ pub enum Limit {
     #[error("ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)")]
     RampTime,
     /// The time a step steer needs to settle.
-    #[error("the run must last at least 2 s after the steer reaches its final value, to reach steady state")]
+    #[error("the run must last at least 2 s after the steer reaches its final value, to reach steady state, {}", longest_run())]
     SettleTime,
     /// A front road-wheel steer angle, rad.
     #[error("no road wheel steers beyond ±45° (0.785 rad; a car's largest mean road-wheel steer is about 35–40°): steer angles are in radians, so is the value in degrees?")]
@@ -199,4 +202,13 @@ pub enum Limit {
         /// The other pressure key is about the unit's factor above it.
         apart: bool,
     },
+}
+
+/// The upper end of a run's `end`, and why: the rows a history holds.
+fn longest_run() -> String {
+    let longest = crate::constants::LONGEST_RUN;
+    format!(
+        "and end by {longest} s ({:.1} h): a history holds at most 2000001 rows, a first and one every [simulation] `step` of at most 0.05 s after it (2000000 steps of 0.05 s are {longest} s, about 0.3 GB of history.csv)",
+        longest / 3600.0
+    )
 }

@@ -62,3 +62,25 @@ pub(super) fn check(
     let e = ParamError::new("step", s.step, reason);
     Err(param_error(src, Some(table), e))
 }
+
+#[cfg(test)]
+mod tests {
+    /// The longest run `end` may ask for is the most rows at the coarsest
+    /// step a scenario may set (`[simulation] step` ≤ 0.05 s): no `end`
+    /// passes its own check only to be refused for a step no scenario
+    /// may set.
+    #[test]
+    fn the_longest_run_is_the_most_rows_at_the_coarsest_step() {
+        assert_eq!(crate::constants::LONGEST_RUN, super::MAX_ROWS * 0.05);
+        let coarsest = super::SimulationSettings {
+            step: 0.05,
+            ..Default::default()
+        };
+        assert!(coarsest.method().is_ok());
+        let coarser = super::SimulationSettings {
+            step: 0.050001,
+            ..Default::default()
+        };
+        assert!(coarser.method().is_err());
+    }
+}

@@ -98,7 +98,7 @@ impl StepSteerSpec {
             "end",
             self.end,
             self.start + self.rise_time + 2.0,
-            1e6,
+            crate::constants::LONGEST_RUN,
             Limit::SettleTime,
         )
     }

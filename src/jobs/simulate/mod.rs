@@ -11,6 +11,7 @@ mod idle_effects;
 mod layout;
 mod limits;
 pub(crate) mod nominal_load;
+mod stall;
 mod straight;
 mod transient;
 mod unfitted;
@@ -22,7 +23,7 @@ use crate::diagnose::report::gap::{run_gap, ChannelGap};
 use crate::diagnose::report::outcome::AssumedFloor;
 use crate::diagnose::report::trust::channel_trust;
 use crate::diagnose::report::{words, ChannelNoise};
-use crate::error::{Error, InputError, InputProblem, PieceRefusal, ScenarioProblem};
+use crate::error::{Error, PieceRefusal};
 use crate::io::{load_scenario, Scenario};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
@@ -129,34 +130,6 @@ const OWN: OwnSet = OwnSet {
     families: &[],
 };
 
-/// Refuses a run whose integration stalled before the manoeuvre's end
-/// ([`crate::sim::ode::step_budget`]): its history would end there.
-fn refuse_stalled(path: &Path, sc: &Scenario, sim: &Simulation) -> Result<(), Error> {
-    let Some(w) = sim.work.filter(|w| w.stalled) else {
-        return Ok(());
-    };
-    let at = sim.history.t.last().copied().unwrap_or(f64::NAN);
-    let end = sc.manoeuvre.end_time();
-    // A step above the critical speed diverges whatever the integrator:
-    // said as such, as the same step run through is (RK4, no load
-    // transfer), not as a model that is not smooth.
-    let above = match &sc.manoeuvre {
-        Manoeuvre::StepSteer(s) => {
-            critical::above_critical(&sc.model, sc.integrator.friction, s.speed)
-        }
-        _ => None,
-    };
-    let problem = match above {
-        Some(a) => a.stalled(at, end),
-        None => ScenarioProblem::Stalled {
-            at,
-            end,
-            steps: w.accepted + w.rejected,
-        },
-    };
-    Err(InputError::problem(path, InputProblem::Scenario(Box::new(problem))).into())
-}
-
 /// Simulates the scenario of the file `path`; `out` is the output folder
 /// (default `out/<scenario name>`), checked against the inputs first.
 /// Everything is computed before anything is written
@@ -174,7 +147,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         sc.integrator
             .simulate_counted(&sc.model, &sc.manoeuvre, sc.initial, counter)
     };
-    refuse_stalled(path, &sc, &sim)?;
+    stall::refuse_stalled(path, &sc, &sim)?;
     let h = &sim.history;
     let integration = integration_words(&sc, &sim);
     let metrics = match sc.manoeuvre {

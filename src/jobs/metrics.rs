@@ -362,10 +362,11 @@ fn peak_time_said(m: &StepMetrics, dt: f64) -> Option<String> {
         (false, Some(_)) => peak_moved_by_noise(m),
         (true, None) => Some(format!("{}: log faster to read it finer", grid_words())),
         (true, Some((sd, found))) if found >= 0.75 && sd / 2f64.sqrt() <= dt => Some(format!(
-            "{}; in {} copies of the run with its noise added again the peak moves by ±{} s, about one sample interval (the copies carry the noise twice): the grid, not the noise, limits it; log faster to read it finer",
+            "{}; in {} copies of the run with its noise added again the peak moves by ±{} s, about one sample interval (the copies carry the noise twice){}: the grid, not the noise, limits it; log faster to read it finer",
             grid_words(),
             crate::metrics::PEAK_DRAWS,
             crate::format::readable(sd, 2),
+            copies_lost(m, found),
         )),
         (true, Some(_)) => peak_moved_by_noise(m).map(|w| {
             format!(
@@ -377,6 +378,26 @@ fn peak_time_said(m: &StepMetrics, dt: f64) -> Option<String> {
     }
 }
 
+/// The noisy copies that find no peak, or only another maximum (past
+/// twice the peak time: `metrics/peak.rs`), of the share `found` that
+/// find it: counted and said, not averaged into the spread.
+fn copies_lost(m: &StepMetrics, found: f64) -> String {
+    let draws = crate::metrics::PEAK_DRAWS;
+    let count = |share: f64| (share * draws as f64).round() as usize;
+    let stray = count(m.yaw_rate_peak_stray_share.unwrap_or(0.0));
+    let lost = draws.saturating_sub(count(found) + stray);
+    match (lost, stray) {
+        (0, 0) => String::new(),
+        (k, 0) => format!(", and {k} of the {draws} find no peak above the threshold at all"),
+        (0, j) => format!(
+            ", and {j} of the {draws} find only another maximum, more than the peak time from it (left out of the spread: not this peak moved)"
+        ),
+        (k, j) => format!(
+            ", and {k} of the {draws} find no peak above the threshold and {j} only another maximum, more than the peak time from it (left out of the spread: not this peak moved)"
+        ),
+    }
+}
+
 /// The warning of a yaw-rate peak the run's noise moves by
 /// [`PEAK_SPREAD_SAID`] of its time or more, or loses in a quarter of
 /// noisy copies or more (`metrics/peak.rs`): its time, and TB with it, are
@@ -385,18 +406,7 @@ fn peak_moved_by_noise(m: &StepMetrics) -> Option<String> {
     let tp = m.yaw_rate_peak_time?;
     let (sd, found) = (m.yaw_rate_peak_time_spread?, m.yaw_rate_peak_found_share?);
     let draws = crate::metrics::PEAK_DRAWS;
-    let count = |share: f64| (share * draws as f64).round() as usize;
-    let stray = count(m.yaw_rate_peak_stray_share.unwrap_or(0.0));
-    let lost = draws.saturating_sub(count(found) + stray);
-    // Copies that find no peak, or another maximum (past twice the peak
-    // time: `metrics/peak.rs`), are counted, not averaged into the spread.
-    let lost = match (lost, stray) {
-        (0, 0) => String::new(),
-        (k, 0) => format!(", and {k} of the {draws} find no peak above the threshold at all"),
-        (k, j) => format!(
-            ", and {k} of the {draws} find no peak above the threshold and {j} only another maximum, more than the peak time from it (left out of the spread: not this peak moved)"
-        ),
-    };
+    let lost = copies_lost(m, found);
     let tb = match m.tb {
         Some(_) => " and TB with it",
         None => "",

@@ -301,6 +301,10 @@ pub enum ParamReason {
     /// A lateral acceleration no steady state holds at the speed (boxed).
     #[error("{0}")]
     NoSteadyState(Box<super::NoSteadyState>),
+    /// Er's weights `e1` and `e2` both 0: Er would weigh nothing and read
+    /// 0 s for any response.
+    #[error("with `e1` = 0 too, Er = e1·E_r + e2·E_ay weighs nothing and reads 0 s whatever the car does: give e1 or e2 a positive weight (both default to 1)")]
+    ErWeightsZero,
     /// A step steer given both of its amplitudes.
     #[error("a step steer takes one of `steer` (rad) and `lateral_acceleration` (m/s²), and both are given: keep one")]
     StepSteerBothAmplitudes,

@@ -164,26 +164,7 @@ fn settings_said(
     clock: &[f64],
 ) -> Vec<String> {
     let mut out = Vec::new();
-    if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
-        let rate = 1.0 / crate::measured::clean::median_interval(clock);
-        out.push(format!(
-            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered (0.4 × {} Hz = {} Hz; a cutoff at or above it is not applied)",
-            crate::error::Num(f),
-            crate::format::rounded(rate, 3),
-            crate::format::rounded(0.4 * rate, 3)
-        ));
-    }
-    let piece = m.t_end - m.t_start;
-    out.extend(windows_said(&m.metrics, settings, clock, m.t_end));
-    out.extend(noise_said::noise_in_variance(
-        &m.metrics,
-        settings.variance_window.min(piece),
-        (settings.e1, settings.e2),
-    ));
     let dt = crate::measured::clean::median_interval(clock);
-    out.extend(gap_said::piece_ended_by_gap(&m.cleaning, m.t_end, dt));
-    out.extend(peak_time_said(&m.metrics, dt));
-    out.extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
     // A cutoff suggested is measured through, so that following it is
     // not warned of again.
     let response_at = |f: f64| {
@@ -194,6 +175,20 @@ fn settings_said(
         let m = measured_step_metrics(run.clone(), min_speed, &at).ok()?;
         Some(m.metrics.yaw_rate_response_time)
     };
+    if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
+        let response = m.metrics.yaw_rate_response_time;
+        out.push(filter_speed::not_filtered(f, dt, response, &response_at));
+    }
+    let piece = m.t_end - m.t_start;
+    out.extend(windows_said(&m.metrics, settings, clock, m.t_end));
+    out.extend(noise_said::noise_in_variance(
+        &m.metrics,
+        settings.variance_window.min(piece),
+        (settings.e1, settings.e2),
+    ));
+    out.extend(gap_said::piece_ended_by_gap(&m.cleaning, m.t_end, dt));
+    out.extend(peak_time_said(&m.metrics, dt));
+    out.extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
     out.extend(filter_speed::filter_measures_itself_with(
         &m.metrics,
         dt,
@@ -367,10 +362,11 @@ fn peak_time_said(m: &StepMetrics, dt: f64) -> Option<String> {
         (false, Some(_)) => peak_moved_by_noise(m),
         (true, None) => Some(format!("{}: log faster to read it finer", grid_words())),
         (true, Some((sd, found))) if found >= 0.75 && sd / 2f64.sqrt() <= dt => Some(format!(
-            "{}; in {} copies of the run with its noise added again the peak moves by ±{} s, about one sample interval (the copies carry the noise twice): the grid, not the noise, limits it; log faster to read it finer",
+            "{}; in {} copies of the run with its noise added again the peak moves by ±{} s, about one sample interval (the copies carry the noise twice){}: the grid, not the noise, limits it; log faster to read it finer",
             grid_words(),
             crate::metrics::PEAK_DRAWS,
             crate::format::readable(sd, 2),
+            copies_lost(m, found),
         )),
         (true, Some(_)) => peak_moved_by_noise(m).map(|w| {
             format!(
@@ -382,6 +378,26 @@ fn peak_time_said(m: &StepMetrics, dt: f64) -> Option<String> {
     }
 }
 
+/// The noisy copies that find no peak, or only another maximum (past
+/// twice the peak time: `metrics/peak.rs`), of the share `found` that
+/// find it: counted and said, not averaged into the spread.
+fn copies_lost(m: &StepMetrics, found: f64) -> String {
+    let draws = crate::metrics::PEAK_DRAWS;
+    let count = |share: f64| (share * draws as f64).round() as usize;
+    let stray = count(m.yaw_rate_peak_stray_share.unwrap_or(0.0));
+    let lost = draws.saturating_sub(count(found) + stray);
+    match (lost, stray) {
+        (0, 0) => String::new(),
+        (k, 0) => format!(", and {k} of the {draws} find no peak above the threshold at all"),
+        (0, j) => format!(
+            ", and {j} of the {draws} find only another maximum, more than the peak time from it (left out of the spread: not this peak moved)"
+        ),
+        (k, j) => format!(
+            ", and {k} of the {draws} find no peak above the threshold and {j} only another maximum, more than the peak time from it (left out of the spread: not this peak moved)"
+        ),
+    }
+}
+
 /// The warning of a yaw-rate peak the run's noise moves by
 /// [`PEAK_SPREAD_SAID`] of its time or more, or loses in a quarter of
 /// noisy copies or more (`metrics/peak.rs`): its time, and TB with it, are
@@ -390,11 +406,7 @@ fn peak_moved_by_noise(m: &StepMetrics) -> Option<String> {
     let tp = m.yaw_rate_peak_time?;
     let (sd, found) = (m.yaw_rate_peak_time_spread?, m.yaw_rate_peak_found_share?);
     let draws = crate::metrics::PEAK_DRAWS;
-    let lost = draws - (found * draws as f64).round() as usize;
-    let lost = match lost {
-        0 => String::new(),
-        k => format!(", and {k} of the {draws} find no peak above the threshold at all"),
-    };
+    let lost = copies_lost(m, found);
     let tb = match m.tb {
         Some(_) => " and TB with it",
         None => "",

@@ -29,6 +29,7 @@ fn moderate() -> StepMetrics {
         filter_hz: None,
         yaw_rate_peak_time_spread: None,
         yaw_rate_peak_found_share: None,
+        yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
         yaw_rate_peak_unmeasured: false,
     }

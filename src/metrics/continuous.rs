@@ -238,6 +238,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         filter_hz: None,
         yaw_rate_peak_time_spread: None,
         yaw_rate_peak_found_share: None,
+        yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
         yaw_rate_peak_unmeasured: false,
     })

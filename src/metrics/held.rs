@@ -269,13 +269,12 @@ impl Peak {
         let v = &c.r.values;
         let at = peak::peak_index(t, v, times.tr, level);
         let filtered = |x: &[f64]| low_pass.apply(x);
-        let spread = at.and(peak::peak_spread(
-            t,
-            v,
-            (times.tr, level),
-            c.r.noise,
-            &filtered,
-        ));
+        // A copy's peak counts within the peak time of the reported one
+        // (peak.rs: past twice it is another maximum).
+        let spread = at.and_then(|i| {
+            let window = (t[i], t[i] - times.t0);
+            peak::peak_spread(t, v, (times.tr, level), c.r.noise, &filtered, window)
+        });
         Peak {
             at,
             threshold,
@@ -347,6 +346,7 @@ fn metrics_of(
         filter_hz: low_pass.hz,
         yaw_rate_peak_time_spread: peak.spread.map(|s| s.sd),
         yaw_rate_peak_found_share: peak.spread.map(|s| s.found),
+        yaw_rate_peak_stray_share: peak.spread.map(|s| s.stray),
         yaw_rate_overshoot_spread: peak.spread.map(|s| 100.0 * s.overshoot_sd),
         yaw_rate_peak_unmeasured: false,
     }

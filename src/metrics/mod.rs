@@ -170,6 +170,11 @@ impl MetricSettings {
         ParamError::positive("variance_window", self.variance_window)?;
         ParamError::non_negative("e1", self.e1)?;
         ParamError::non_negative("e2", self.e2)?;
+        if self.e1 == 0.0 && self.e2 == 0.0 {
+            // Said at the second weight: the one that left Er with none.
+            let reason = crate::error::ParamReason::ErWeightsZero;
+            return Err(ParamError::new("e2", self.e2, reason));
+        }
         ParamError::non_negative("min_overshoot", self.min_overshoot)?;
         ParamError::in_range(
             "min_overshoot",
@@ -277,13 +282,19 @@ pub struct StepMetrics {
     /// The low-pass applied, Hz (none: unfiltered).
     pub filter_hz: Option<f64>,
     /// How far the run's own noise moves the peak time: its standard
-    /// deviation over noisy copies of the record that find a peak, s
+    /// deviation over noisy copies of the record that find it, s
     /// (`peak.rs`); `None` without a peak or without noise.
     #[serde(default)]
     pub yaw_rate_peak_time_spread: Option<f64>,
-    /// The share of those copies that find a peak at all.
+    /// The share of those copies that find the peak (within the peak
+    /// time of it).
     #[serde(default)]
     pub yaw_rate_peak_found_share: Option<f64>,
+    /// The share that find a maximum only farther from it: another
+    /// maximum (the next one, a noise bump of the steady state), left out
+    /// of the spread and said apart.
+    #[serde(default)]
+    pub yaw_rate_peak_stray_share: Option<f64>,
     /// How far the run's own noise moves the overshoot: its standard
     /// deviation over the same copies, percentage points of the step.
     #[serde(default)]

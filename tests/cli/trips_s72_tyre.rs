@@ -17,8 +17,8 @@ fn stdout(o: &Output) -> String {
 /// A points file whose every load is negative (a TTC/SAE rig's z axis
 /// points down) was evaluated as wheels off the road: all-zero forces,
 /// exit 0. Refused at each load, as `identify` refuses a rig file's, for
-/// any model; a mix of negative and positive loads is still evaluated,
-/// its negative ones off the road.
+/// any model; a negative load among others is refused too (a wheel off
+/// the road is at 0).
 #[test]
 fn a_points_file_whose_every_load_is_negative_is_refused_as_identify_does() {
     let dir = tempfile::tempdir().unwrap();
@@ -35,27 +35,36 @@ fn a_points_file_whose_every_load_is_negative_is_refused_as_identify_does() {
         }
         assert!(!e.contains("off the road"), "{e}");
     }
-    // A load of 0 among them is a wheel off the road: not every load is
-    // negative, and the file is evaluated as before.
+    // A negative load among positive ones or zeros is refused too, at its
+    // cell, without the advice to negate the column (session 105: it was
+    // evaluated as a wheel off the road); a load of 0 is one.
     for mixed in [
         "fz,kappa,alpha,camber,speed\n-4000,0,0.05,0,16.7\n2000,0.1,0.05,0,16.7\n",
         "fz,kappa,alpha,camber,speed\n-4000,0,0.05,0,16.7\n0,0.1,0.05,0,16.7\n",
     ] {
         let (o, written) = eval(dir.path(), &mf61(), mixed, &[]);
-        assert!(o.status.success(), "{}", stderr(&o));
+        let e = stderr(&o);
+        assert!(!o.status.success(), "{e}");
+        assert!(written.is_empty(), "{written}");
         assert!(
-            !without_temp_names(&stderr(&o)).contains("negate"),
-            "{}",
-            stderr(&o)
+            e.contains("p.csv:2:1: column `fz`: -4000 N is negative"),
+            "{e}"
         );
-        let n = if mixed.contains("\n0,") { 2 } else { 1 };
-        let said = format!(
-            "{n} point{} at fz ≤ 0 (off the road): no force",
-            if n == 1 { "" } else { "s" }
-        );
-        assert!(stdout(&o).contains(&said), "{}", stdout(&o));
-        assert_eq!(column(&written, "fy")[0], 0.0);
+        assert!(!without_temp_names(&e).contains("negate"), "{e}");
     }
+    let (o, written) = eval(
+        dir.path(),
+        &mf61(),
+        "fz,kappa,alpha,camber,speed\n0,0,0.05,0,16.7\n2000,0.1,0.05,0,16.7\n",
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("1 point at fz ≤ 0 (off the road): no force"),
+        "{}",
+        stdout(&o)
+    );
+    assert_eq!(column(&written, "fy")[0], 0.0);
 }
 
 /// The MF 6.1 fixture with `FREFF` = 0.8: its effective rolling radius

@@ -155,12 +155,13 @@ fn a_load_the_vertical_model_does_not_carry_is_refused_at_its_row() {
     assert!(rl.iter().all(|r| *r > 0.3 && *r < 0.3945), "{rl:?}");
 }
 
-/// A TOML tyre at a negative load gave no force and no word, where a
+/// A TOML tyre at zero load gave no force and no word, where a
 /// Magic Formula file's points off the road were counted.
 #[test]
 fn a_toml_tyre_off_the_road_is_counted_as_a_magic_formula_one_is() {
     let dir = tempfile::tempdir().unwrap();
-    let points = "fz,kappa,alpha,camber,speed\n-1000,0.05,0.05,0,20\n0,0.05,0.05,0,20\n3000,0.05,0.05,0,20\n";
+    let points =
+        "fz,kappa,alpha,camber,speed\n0,0.05,0.05,0,20\n0,0.05,0.05,0,20\n3000,0.05,0.05,0,20\n";
     for toml in ["pac89_adams_example.toml", "unitire.toml", "gim.toml"] {
         let (o, written) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
         assert!(o.status.success(), "{toml}: {}", stderr(&o));

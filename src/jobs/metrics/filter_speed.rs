@@ -71,6 +71,53 @@ pub(crate) fn filter_measures_itself_with(
     })
 }
 
+/// The warning where the cut-off `f` (Hz) asked is not below 0.4 × the
+/// run's sampling rate (every `dt` s) and the run is read unfiltered: said
+/// as the default where it is one (a log at 25 Hz or slower meets the
+/// default 10 Hz so, without the user asking for it), with the cut-offs
+/// that do filter it with the filter's own rise within
+/// [`FILTER_RISE_SHARE`] of the yaw rate's response time (`response`, s;
+/// `response_at` measures it through a cut-off), or that none does. The
+/// overshoot's threshold and every time are then the unfiltered run's.
+pub(super) fn not_filtered(
+    f: f64,
+    dt: f64,
+    response: f64,
+    response_at: &dyn Fn(f64) -> Option<f64>,
+) -> String {
+    let rate = 1.0 / dt;
+    let top = 0.4 * rate;
+    let whose = match f == crate::metrics::MEASURED_FILTER_HZ {
+        true => " (the default of `--filter-hz`)",
+        false => "",
+    };
+    // The filter rises in about 0.45/f s (tests below): the first guess
+    // of the cut-off whose rise is the share of the response.
+    let guess = 0.45 / (FILTER_RISE_SHARE * response);
+    let least = (response > 0.0).then(|| least_cutoff(guess, dt, response_at));
+    let advice = match least.filter(|l| *l < top) {
+        Some(l) => format!(
+            "--filter-hz from {} Hz to below {} Hz filters it, its own rise (10–90 %) within {} % of the yaw rate's response time of {} s",
+            crate::format::rounded(l, 2),
+            crate::format::rounded(top, 3),
+            crate::format::fixed(100.0 * FILTER_RISE_SHARE, 0),
+            crate::format::significant(response, 3),
+        ),
+        None => format!(
+            "no cut-off below {} Hz filters it without its own rise (10–90 %) passing {} % of the yaw rate's response time of {} s: read it unfiltered (--filter-hz 0), or log faster",
+            crate::format::rounded(top, 3),
+            crate::format::fixed(100.0 * FILTER_RISE_SHARE, 0),
+            crate::format::significant(response, 3),
+        ),
+    };
+    format!(
+        "the low-pass at {} Hz{whose} is not below 0.4 × the run's sampling rate: the run is not filtered (0.4 × {} Hz = {} Hz; a cutoff at or above it is not applied), and its metrics, the overshoot's noise threshold with them, are the unfiltered run's; {advice}",
+        crate::error::Num(f),
+        crate::format::rounded(rate, 3),
+        crate::format::rounded(top, 3),
+    )
+}
+
 /// The least cutoff, two significant digits rounded up, from the first
 /// guess `guess`, Hz: the guess scales the cutoff against the response
 /// time the slow filter stretched, and through the faster filter the

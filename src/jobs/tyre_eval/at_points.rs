@@ -3,7 +3,7 @@
 //! Python `Tyre.forces`): the same rules as the CLI's, by the same
 //! functions — a value that is no finite number, one outside its physical
 //! range or an angle that reads in degrees, a negative speed, a file of
-//! only negative loads (`physical.rs`), a pressure at or below 0 or not in
+//! negative loads (`physical.rs`), a pressure at or below 0 or not in
 //! Pa (the whole array by its median, or one value among pressures in Pa:
 //! `pressure.rs`), loads in kN — each said at its argument and
 //! index; and the warning the CLI gives of slip ratios beyond ±1

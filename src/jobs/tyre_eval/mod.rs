@@ -3,10 +3,10 @@
 //! Pa) in; the same points with `fx, fy, mz` (and `mx, my` for the Magic
 //! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
 //! vertical model: on every row, the free radius at zero or negative load)
-//! out. A point at zero or negative load has its wheel off the road: no
-//! force, for every model, and those points counted; a file whose every
-//! load is negative is refused, each load at its cell, as a rig logged in
-//! SAE's axes (`physical.rs`, as `identify` says it). A load the vertical
+//! out. A point at zero load has its wheel off the road: no force, for
+//! every model, and those points counted; a negative load is refused at
+//! its cell (a file whose every load is negative as a rig logged in SAE's
+//! axes: `physical.rs`, as `identify` says it). A load the vertical
 //! model carries at no loaded radius above 0 (limit checks off, a 100 kN
 //! load on an FSAE tyre) is refused at its row: MFeval's closed form gives
 //! a radius of 0 or below there. A Magic Formula tyre is evaluated in one of MFeval's modes

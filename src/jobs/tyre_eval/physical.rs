@@ -3,10 +3,10 @@
 //! beyond ±10, a slip angle beyond ±90° or a camber beyond ±45°, said as
 //! degrees where it reads as an angle in degrees, a speed beyond 300 m/s
 //! or below 0, a pressure above 5 MPa), and is refused at its cell before
-//! anything is evaluated; and a file whose every load is negative, each
-//! load at its cell, as `identify` refuses a rig file's (a point at zero
-//! or negative load among positive ones is a wheel off the road,
-//! evaluated with no force).
+//! anything is evaluated; and every negative load, at its cell, as
+//! `identify` refuses a rig file's (a file whose every load is negative
+//! said as a rig in SAE's axes); a point at zero load is a wheel off the
+//! road, evaluated with no force.
 //!
 //! A camber is refused by the one rule `identify` refuses a rig's by, in
 //! the same words (`error/camber.rs`): beyond ±45° ([`MOST_CAMBER`],
@@ -23,6 +23,9 @@
 use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
 use crate::io::camber_in_degrees;
 use std::f64::consts::FRAC_PI_2;
+
+/// The highest inflation pressure evaluated, Pa ([`PHYSICAL`]'s).
+pub(super) const MAX_PRESSURE: f64 = 5e6;
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
 /// end, high end, unit, what the ends are). Ends included.
@@ -59,15 +62,15 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     (
         "pressure",
         0.0,
-        5e6,
+        MAX_PRESSURE,
         "Pa",
         "5 MPa, above any pneumatic tyre's inflation",
     ),
 ];
 
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
-/// range, a speed within it below 0, and every load of a column of
-/// negative loads: its row and the problem.
+/// range, a speed within it below 0, and every negative load: its row
+/// and the problem.
 pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
     let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
         return Vec::new();
@@ -105,7 +108,10 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
                 unit,
                 why,
             }
-        } else if every {
+        } else if name == "fz" && value < 0.0 {
+            // A load below 0 is no wheel's: one off the road is at 0. A
+            // row of -4000 N among positive loads was evaluated as off the
+            // road, with zero forces, and only counted.
             InputProblem::NegativeLoad { value, every }
         } else {
             return None;

@@ -56,10 +56,13 @@ pub(super) fn read_points(
         .collect();
     let mut errors = not_physical(points, &c, &inputs, pressure.as_deref());
     errors.extend(bad_cells);
+    // Pressures in another unit are said with the rest, in one run: a
+    // file with 2.6, 260 and -1 was refused at -1 alone, and at the two
+    // others only once it was mended.
+    errors.extend(pressure_units(points, &c, pressure.as_deref(), known));
     if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
         return Err(e.into());
     }
-    refuse_pressure_units(points, &c, pressure.as_deref(), known)?;
     // A car's loads written in kN; the points off the road do not count.
     if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
         return Err(c.error_at(points, i, "fz", slip.into()).into());
@@ -116,26 +119,28 @@ fn not_physical(
         .collect()
 }
 
-/// A `pressure` written in kPa, bar or psi refused (a .tir clamps it to
-/// its range without a word of the unit), read against the pressures
-/// `known` of the tyre. One unit for the whole column is said once, by
-/// its median; cells in different units (2.2 in bar beside 220 in kPa)
-/// each with its own.
-fn refuse_pressure_units(
+/// Every `pressure` written in kPa, bar or psi (a .tir clamps it to its
+/// range without a word of the unit), read against the pressures `known`
+/// of the tyre, as errors at their cells. One unit for the whole column is
+/// said once, by its median; cells in different units (2.2 in bar beside
+/// 220 in kPa) each with its own. Only the positive pressures within the
+/// physical range are read so: the others are refused as such
+/// ([`not_physical`]), and their indices are mapped back to the file's.
+fn pressure_units(
     points: &Path,
     c: &crate::io::Columns,
     pressure: Option<&[f64]>,
     known: Option<pressure::Known>,
-) -> Result<(), Error> {
+) -> Vec<crate::error::InputError> {
     let Some(p) = pressure else {
-        return Ok(());
+        return Vec::new();
     };
-    let errors = pressure::not_in_pa(p, known)
-        .into_iter()
-        .map(|(i, slip)| c.error_at(points, i, "pressure", slip.into()))
+    let kept: Vec<usize> = (0..p.len())
+        .filter(|&i| p[i].is_finite() && p[i] > 0.0 && p[i] <= physical::MAX_PRESSURE)
         .collect();
-    match crate::error::InputError::all_of(points, errors) {
-        Some(e) => Err(e.into()),
-        None => Ok(()),
-    }
+    let values: Vec<f64> = kept.iter().map(|&i| p[i]).collect();
+    pressure::not_in_pa(&values, known)
+        .into_iter()
+        .map(|(k, slip)| c.error_at(points, kept[k], "pressure", slip.into()))
+        .collect()
 }

@@ -19,6 +19,12 @@
 use crate::tyre::{PointForces, Tyre};
 use serde::Serialize;
 
+/// The camber below which a point counts as at zero for the warning,
+/// rad (0.001 rad = 0.057°): a rig's zero-camber rows read ±0.0003 rad
+/// of noise about it (the Hoosier 1656 N sweep), and a tyre not reading
+/// camber gives them the force it gives at 0, so they are none to say.
+pub const CAMBER_RESOLUTION: f64 = 1e-3;
+
 /// The points the probe re-evaluates at most (the first ones where the
 /// column is set): a model reads a column everywhere or nowhere.
 const PROBED: usize = 256;
@@ -93,8 +99,15 @@ impl Unread {
             Some(MfNoPressure::NoNompres) => "the file has no NOMPRES, without which its pressure terms are off (MFeval's dpi = 0)",
             Some(MfNoPressure::TermsZero) => "every one of its pressure coefficients (PPX1–4, PPY1–5, PPZ1–2, PPMX1, PFZ1, QSY8) is 0",
         };
+        let zero = match self.column {
+            "camber" => format!(
+                "; a camber within ±{} rad counts as 0 here (a rig's noise about zero)",
+                crate::error::Num(CAMBER_RESOLUTION)
+            ),
+            _ => String::new(),
+        };
         format!(
-            "this {model} tyre does not respond to `{}`: its forces and moments are the same at any value ({set}); {why}",
+            "this {model} tyre does not respond to `{}`: its forces and moments are the same at any value ({set}); {why}{zero}",
             self.column
         )
     }
@@ -139,10 +152,11 @@ pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> 
     let mut out = Vec::new();
     for (column, k, changed) in probes {
         let values = if k == 5 { p.pressure } else { p.columns[k] };
-        // Slip ratio and camber are set where non-zero; a pressure at
-        // every point that gives one.
+        // Slip ratio is set where non-zero, camber from its resolution
+        // on; a pressure at every point that gives one.
+        let least = if k == 3 { CAMBER_RESOLUTION } else { 0.0 };
         let set: Vec<usize> = (0..values.len())
-            .filter(|&i| k == 5 || values[i] != 0.0)
+            .filter(|&i| k == 5 || (values[i].abs() >= least && values[i] != 0.0))
             .filter(|&i| fz[i] > 0.0)
             .collect();
         if set.is_empty() {

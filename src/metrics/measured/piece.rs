@@ -223,6 +223,7 @@ fn withhold_unmeasured_peak(m: &mut StepMetrics, spans: &[Span], reach: f64) -> 
     m.tb = None;
     m.yaw_rate_peak_time_spread = None;
     m.yaw_rate_peak_found_share = None;
+    m.yaw_rate_peak_stray_share = None;
     m.yaw_rate_overshoot_spread = None;
     m.yaw_rate_peak_unmeasured = true;
     let bound = match span.bound {

@@ -20,3 +20,10 @@ pub const STEEPEST_BANK: f64 = 0.61;
 /// default 150 is continued to 50 per free parameter), and each iteration
 /// replays every row.
 pub const MOST_STAGE_ITERATIONS: usize = 10_000;
+
+/// The highest inflation pressure a tyre is tested or evaluated at, Pa
+/// (5 MPa): above any pneumatic tyre's (a car's 200–300 kPa, a truck's
+/// up to 1 MPa, a track bicycle's 1.4 MPa). `tyre-eval` refuses a point's
+/// pressure above it and `identify` a rig file's: one limit, so that no
+/// file `identify` writes from such a column reads back without a word.
+pub const MOST_PRESSURE: f64 = 5e6;

@@ -589,6 +589,7 @@ mod trips_s104_camber34;
 mod trips_s104_fix34b;
 mod trips_s104_lead;
 mod trips_s104_mend34;
+mod trips_s105_fix36a;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

@@ -99,8 +99,16 @@ impl Levels {
             })
         });
         // A request no test has in SI: its likeliest unit, though it
-        // selects no level (`--camber 2`: 2°, between levels).
-        let (unit, factor) = slips[0];
+        // selects no level (`--camber 2`: 2°, between levels); a pressure
+        // in the first unit that makes it a pneumatic tyre's, as
+        // `tyre-eval` reads a point's (2.6 is 2.6 bar, not 2.6 kPa).
+        let [least, most] = crate::error::INFLATION_PRESSURES;
+        let inflated = |&(_, f): &(&str, f64)| (least..=most).contains(&(want * f));
+        let (unit, factor) = match self.variable {
+            Variable::Pressure => slips.iter().copied().find(inflated),
+            _ => None,
+        }
+        .unwrap_or(slips[0]);
         selecting.or_else(|| {
             self.variable
                 .implausible(want)

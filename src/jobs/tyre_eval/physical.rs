@@ -20,6 +20,7 @@
 //! `CAMMIN`/`CAMMAX` with a warning as MFeval does (`ranges.rs`), a model
 //! with no camber range saying them (`camber.rs`).
 
+use crate::constants::MOST_PRESSURE;
 use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
 use crate::io::camber_in_degrees;
 use std::f64::consts::FRAC_PI_2;
@@ -59,7 +60,7 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     (
         "pressure",
         0.0,
-        5e6,
+        MOST_PRESSURE,
         "Pa",
         "5 MPa, above any pneumatic tyre's inflation",
     ),

@@ -27,3 +27,10 @@ pub const MOST_STAGE_ITERATIONS: usize = 10_000;
 /// (1e9 s was refused as below its lower limit only; up to 1e6 s passed
 /// on to the rows' refusal, which asked for a step no scenario may set).
 pub const LONGEST_RUN: f64 = 1e5;
+
+/// The highest inflation pressure a tyre is tested or evaluated at, Pa
+/// (5 MPa): above any pneumatic tyre's (a car's 200–300 kPa, a truck's
+/// up to 1 MPa, a track bicycle's 1.4 MPa). `tyre-eval` refuses a point's
+/// pressure above it and `identify` a rig file's: one limit, so that no
+/// file `identify` writes from such a column reads back without a word.
+pub const MOST_PRESSURE: f64 = 5e6;

@@ -92,6 +92,7 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
         InputProblem::SteerBeyondQuarterTurn { value, .. } => (Some("steer"), Some(*value)),
         InputProblem::NegativeLoad { value, .. } => (Some("fz"), Some(*value)),
         InputProblem::NonPositivePressure { value } => (Some("pressure"), Some(*value)),
+        InputProblem::RigPressureAboveAny(e) => (Some("pressure"), Some(e.value)),
         InputProblem::AngleInDegrees { column, value, .. } => (Some(column), Some(*value)),
         InputProblem::WrongSign { channel, slope, .. } => {
             (Some(channel.column()), Some(slope.slope))

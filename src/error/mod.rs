@@ -44,6 +44,7 @@ mod rig;
 mod rig_exchanged;
 mod rig_load_lbf;
 mod rig_moment_knm;
+mod rig_pressure;
 mod rig_sign;
 mod runs_selection;
 mod scenario_file;
@@ -100,10 +101,11 @@ pub use reason::{
     Waveform, Wheelbase, DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use replay_run::ReplayRunProblem;
-pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use rig::{Variable, INFLATION_PRESSURES, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use rig_exchanged::{LoadAndForceExchanged, EXCHANGED_SHARE};
 pub use rig_load_lbf::{RigLoadInLbf, LBF_SLIP, MAX_MEDIAN_GRIP};
 pub use rig_moment_knm::{RigMomentInKnm, MIN_RIG_ARM};
+pub use rig_pressure::RigPressureAboveAny;
 pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};

@@ -209,6 +209,9 @@ pub enum InputProblem {
     /// `fz` and `fy` exchanged (`rig_exchanged.rs`).
     #[error(transparent)]
     LoadAndForceExchanged(#[from] super::rig_exchanged::LoadAndForceExchanged),
+    /// A rig file's pressure above any tyre's (`rig_pressure.rs`).
+    #[error(transparent)]
+    RigPressureAboveAny(#[from] super::rig_pressure::RigPressureAboveAny),
     /// A non-positive inflation pressure.
     #[error("column `pressure`: {} Pa is not a positive pressure", Num(*value))]
     NonPositivePressure {
@@ -312,16 +315,18 @@ pub enum InputProblem {
     #[error("no longitudinal data (columns `kappa` and `fx`) to group")]
     NoLongitudinal,
     /// A rig channel with the opposite sign to FORMATS.md's at small slip.
-    #[error("{}", wrong_sign(*channel, *position, slope, *fy_slope))]
+    #[error("{}", wrong_sign(*channel, *position, slope, *beside))]
     WrongSign {
         /// The channel.
         channel: RigChannel,
         /// Its 1-based position in the header.
         position: usize,
-        /// Its slope near zero slip.
+        /// Its slope near zero slip ([`RigChannel::Alpha`]: `fy`'s).
         slope: SmallSlipSlope,
-        /// The lateral force's slope, N/rad (for [`RigChannel::Mz`]).
-        fy_slope: Option<f64>,
+        /// The other channel's slope: the lateral force's, N/rad, beside
+        /// [`RigChannel::Mz`]; the aligning moment's, N·m/rad, beside
+        /// [`RigChannel::Alpha`].
+        beside: Option<f64>,
     },
     /// A requested camber or pressure that no level of the file lies near.
     #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), level_list(*variable, levels), variable.in_option_unit(*separation))]

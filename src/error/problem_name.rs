@@ -36,6 +36,7 @@ impl InputProblem {
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
             InputProblem::LoadAndForceExchanged(_) => "LoadAndForceExchanged",
+            InputProblem::RigPressureAboveAny(_) => "RigPressureAboveAny",
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
             InputProblem::NegativeSpeed { .. } => "NegativeSpeed",
             InputProblem::NotPhysical { .. } => "NotPhysical",

@@ -30,21 +30,21 @@ fn messages_read_as_the_text_they_replace_wrong_signs() {
         channel: RigChannel::Fy,
         position: 3,
         slope: slope(-12345.678, 12.3456, 6, 5, false),
-        fy_slope: None,
+        beside: None,
     };
     assert_eq!(fy.to_string(), "column `fy` (column 3 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad) its least-squares slope against `alpha` is -12346 N/rad (standard error 12 N/rad) from 11 samples (6 with alpha > 0, 5 with alpha < 0); FORMATS.md (ISO 8855) requires a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha). The file is likely in the SAE or another sign convention: negate the `fy` column");
     let mz = InputProblem::WrongSign {
         channel: RigChannel::Mz,
         position: 4,
         slope: slope(-150.0, 2.0, 5, 5, true),
-        fy_slope: Some(50000.0),
+        beside: Some(50000.0),
     };
     assert_eq!(mz.to_string(), "column `mz` (column 4 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad, |kappa| ≤ 0.035) its least-squares slope against `alpha` is -150.0 N·m/rad (standard error 2.0 N·m/rad) from 10 samples (5 with alpha > 0, 5 with alpha < 0), while that of `fy` is 50000 N/rad; FORMATS.md (ISO 8855) requires `mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign. The file is likely in the SAE or another sign convention: negate the `mz` column");
     let fx = InputProblem::WrongSign {
         channel: RigChannel::Fx,
         position: 2,
         slope: slope(-3000.0, 10.0, 6, 6, true),
-        fy_slope: None,
+        beside: None,
     };
     assert_eq!(fx.to_string(), "column `fx` (column 2 of the header) has the wrong sign: near zero slip (|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad) its least-squares slope against `kappa` is -3000 N (standard error 10 N) from 12 samples (6 with kappa > 0, 6 with kappa < 0); FORMATS.md (ISO 8855) requires a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa). The file is likely in the SAE or another sign convention: negate the `fx` column");
 }

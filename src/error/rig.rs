@@ -14,6 +14,12 @@ pub const MIN_MEDIAN_LOAD: f64 = 100.0;
 /// a pressure written in kPa, bar or psi reads 1–1000.
 pub const MIN_MEDIAN_PRESSURE: f64 = 1e4;
 
+/// The pressures a pneumatic tyre is inflated to, Pa: a racing slick's
+/// 55 kPa (8 psi) to a truck's 900 kPa, rounded outwards. A value of a
+/// few units is read in the first of kPa, bar and psi that lands it here
+/// (`io/rig_rows.rs`, and a `--pressure` no level lies near).
+pub const INFLATION_PRESSURES: [f64; 2] = [50e3, 1e6];
+
 /// A grouping variable of rig data.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]

@@ -1,6 +1,7 @@
 //! A rig channel's sign at small slip (FORMATS.md, ISO 8855): which
 //! channels it fixes, the least-squares slope found near zero slip, and the
-//! message of a channel in another sign convention. Slopes in N/rad, N·m/rad
+//! message of a channel in another sign convention, or of a slip-angle
+//! column reversed (both `fy` and `mz` against it). Slopes in N/rad, N·m/rad
 //! or N per unit slip ratio.
 
 use crate::format::{plural, significant};
@@ -14,6 +15,10 @@ pub enum RigChannel {
     Mz,
     /// Longitudinal force, against the slip ratio.
     Fx,
+    /// The slip angle itself: `fy` and `mz` both slope the wrong way
+    /// against it, which one reversed column makes (negating `fy` and then
+    /// `mz` instead mirrors the tyre's offsets about zero slip).
+    Alpha,
 }
 
 impl RigChannel {
@@ -23,19 +28,20 @@ impl RigChannel {
             RigChannel::Fy => "fy",
             RigChannel::Mz => "mz",
             RigChannel::Fx => "fx",
+            RigChannel::Alpha => "alpha",
         }
     }
     /// The slip column the channel is judged against.
     fn slip(self) -> &'static str {
         match self {
-            RigChannel::Fy | RigChannel::Mz => "alpha",
+            RigChannel::Fy | RigChannel::Mz | RigChannel::Alpha => "alpha",
             RigChannel::Fx => "kappa",
         }
     }
     /// The slope's unit.
     fn unit(self) -> &'static str {
         match self {
-            RigChannel::Fy => "N/rad",
+            RigChannel::Fy | RigChannel::Alpha => "N/rad",
             RigChannel::Mz => "N·m/rad",
             RigChannel::Fx => "N",
         }
@@ -43,7 +49,7 @@ impl RigChannel {
     /// The sign FORMATS.md requires, in words.
     fn requires(self) -> &'static str {
         match self {
-            RigChannel::Fy => "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
+            RigChannel::Fy | RigChannel::Alpha => "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
             RigChannel::Mz => "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
             RigChannel::Fx => "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
         }
@@ -69,12 +75,13 @@ pub struct SmallSlipSlope {
 }
 
 /// The wrong-sign message: the slope found, the window it was fitted in,
-/// what FORMATS.md requires and the likely fix.
+/// what FORMATS.md requires and the likely fix (`beside`: the other
+/// channel's slope, `fy`'s beside `mz`, `mz`'s beside a reversed `alpha`).
 pub(super) fn wrong_sign(
     channel: RigChannel,
     position: usize,
     s: &SmallSlipSlope,
-    fy_slope: Option<f64>,
+    beside: Option<f64>,
 ) -> String {
     let (column, slip, unit) = (channel.column(), channel.slip(), channel.unit());
     let x = s.small_slip;
@@ -92,7 +99,14 @@ pub(super) fn wrong_sign(
         s.above,
         s.below
     );
-    let versus = fy_slope.map_or(String::new(), |f| {
+    if channel == RigChannel::Alpha {
+        return format!(
+            "column `alpha` (column {position} of the header) looks reversed: near zero slip ({window}) both forces slope the wrong way against it: `fy`'s least-squares slope is {described}, and `mz`'s {} N·m/rad; FORMATS.md (ISO 8855) requires {}, and `mz` the sign of `fy`. Both channels reversed against the slip angle is the slip angle's sign: negate the `alpha` column (negating `fy` and `mz` instead fits the same slopes but mirrors the tyre's offsets about zero slip: its ply steer, conicity and camber thrust change sign)",
+            significant(beside.unwrap_or(f64::NAN), 4),
+            channel.requires()
+        );
+    }
+    let versus = beside.map_or(String::new(), |f| {
         format!(", while that of `fy` is {} N/rad", significant(f, 4))
     });
     format!(

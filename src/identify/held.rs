@@ -15,6 +15,11 @@ use std::fmt;
 /// What the swarm fits' stated value is, as a held line names it.
 const START: &str = "the model's start value";
 
+/// Where PAC89's start values come from: the only model whose terms the
+/// camber levels free (`tyre/pac89.rs`).
+const PAC89_START: &str =
+    "PAC89's are the Adams/Tire documentation's example tyre's, whichever of its fits is written";
+
 /// Why a value was held rather than fitted.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "why", rename_all = "kebab-case")]
@@ -122,14 +127,17 @@ impl fmt::Display for HeldFor {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             HeldFor::Given => f.write_str("given with --hold"),
+            // Where the value comes from is said with it: PAC89's two fits
+            // once held these at two values (the start's, and 0) in the
+            // same words, whichever `--local` chose.
             HeldFor::LoadLevels { have } => write!(
                 f,
-                "load terms, which need more load levels than the data's {}",
+                "load terms, which need more load levels than the data's {}: held at {START}s",
                 plural(*have, "level", "levels")
             ),
             HeldFor::CamberLevels { have } => write!(
                 f,
-                "camber terms, which need more camber levels than the data's {}",
+                "camber terms, which need more camber levels than the data's {}: held at {START}s ({PAC89_START}), so the file's response to camber is that tyre's, not one these data measured; give --hold with each to hold it elsewhere (0: no response to camber)",
                 plural(*have, "level", "levels")
             ),
             HeldFor::ByDesign => f.write_str("not fitted by this model's identification"),

@@ -8,7 +8,11 @@
 //! `Sh = a8·γ + a9·Fz + a10`, `Sv = a11·Fz·γ + a12·Fz + a13` — linear in
 //! their coefficients, so solved together by least squares — and
 //! `BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|)` fitted separately (PSO + LM).
-//! Camber terms are held at zero with one camber level. An optional final
+//! With one camber level the camber terms a5, a8, a11 are held at the
+//! start tyre's values, as the direct swarm fit holds them (Zhang et al.
+//! hold them at zero; two values for one hold, chosen by `--local`, wrote
+//! a camber thrust of 225 N or of 0 at 4 kN and 2.9°), and the other
+//! terms fitted to what they leave. An optional final
 //! joint polish fits a0..a13 to all the raw data from the stage-2 values.
 
 use super::data::{Condition, RigPoint};
@@ -122,8 +126,13 @@ fn tyre(a: [f64; 14]) -> Tyre {
     })
 }
 
-/// Runs both stages (and the joint polish) on the conditions.
-pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, FitError> {
+/// Runs both stages (and the joint polish) on the conditions, the camber
+/// terms held at `start`'s (a0..a13) where the conditions have one camber.
+pub fn identify(
+    conditions: &[Condition],
+    settings: &FitSettings,
+    start: &[f64; 14],
+) -> Result<TwoStage, FitError> {
     if conditions.len() < 3 {
         return Err(FitError::TooFewConditions {
             method: "two-stage PAC89",
@@ -145,7 +154,8 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
             (a.min(g), b.max(g))
         });
     let with_camber = cambers.1 - cambers.0 > 0.1;
-    let a = stage2(&stage1, with_camber, &pso);
+    let held = (!with_camber).then(|| LATERAL_CAMBER_TERMS.map(|i| start[i]));
+    let a = stage2(&stage1, held, &pso);
     let per_condition = |t: &Tyre| {
         conditions
             .iter()
@@ -216,51 +226,43 @@ fn stage1_of(c: &Condition, k: usize, pso: &Pso) -> Stage1 {
     }
 }
 
-/// Least squares of stage 1's coefficient `k` over its conditions against
-/// the regressors `row` gives each: one of [`stage2`]'s linear laws in load
-/// and camber, written once.
-fn fit_coefficient(stage1: &[Stage1], k: usize, row: impl Fn(&Stage1) -> Vec<f64>) -> Vec<f64> {
+/// Least squares of `y` over stage 1's conditions against the regressors
+/// `row` gives each: one of [`stage2`]'s linear laws in load and camber,
+/// written once.
+fn fit_law(
+    stage1: &[Stage1],
+    row: impl Fn(&Stage1) -> Vec<f64>,
+    y: impl Fn(&Stage1) -> f64,
+) -> Vec<f64> {
     lstsq(
         &stage1.iter().map(row).collect::<Vec<_>>(),
-        &stage1.iter().map(|s| s.coefficients[k]).collect::<Vec<_>>(),
+        &stage1.iter().map(y).collect::<Vec<_>>(),
     )
 }
 
-/// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves (camber
-/// terms zero without camber data).
-fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
+/// The camber terms a5, a8, a11 in a0..a13.
+const LATERAL_CAMBER_TERMS: [usize; 3] = [5, 8, 11];
+
+/// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves; the
+/// camber terms fitted, or `held` at those values (a5, a8, a11) without
+/// camber data, the other terms fitted to what they leave.
+fn stage2(stage1: &[Stage1], held: Option<[f64; 3]>, pso: &Pso) -> [f64; 14] {
     let mut a = [0.0; 14];
+    let coefficient = |k: usize| move |s: &Stage1| s.coefficients[k];
     // C = a0.
     a[0] = stage1.iter().map(|s| s.coefficients[1]).sum::<f64>() / stage1.len() as f64;
     // D = a1·Fz² + a2·Fz.
-    let d = fit_coefficient(stage1, 2, |s| vec![s.fz_kn * s.fz_kn, s.fz_kn]);
+    let d = fit_law(stage1, |s| vec![s.fz_kn * s.fz_kn, s.fz_kn], coefficient(2));
     a[1] = d[0];
     a[2] = d[1];
     // E = a6·Fz + a7.
-    let e = fit_coefficient(stage1, 3, |s| vec![s.fz_kn, 1.0]);
+    let e = fit_law(stage1, |s| vec![s.fz_kn, 1.0], coefficient(3));
     a[6] = e[0];
     a[7] = e[1];
     // Sh = a8·γ + a9·Fz + a10, Sv = a11·Fz·γ + a12·Fz + a13.
-    let sh = fit_coefficient(stage1, 4, |s| {
-        if with_camber {
-            vec![s.camber_deg, s.fz_kn, 1.0]
-        } else {
-            vec![0.0, s.fz_kn, 1.0]
-        }
-    });
-    a[8] = sh[0];
-    a[9] = sh[1];
-    a[10] = sh[2];
-    let sv = fit_coefficient(stage1, 5, |s| {
-        if with_camber {
-            vec![s.fz_kn * s.camber_deg, s.fz_kn, 1.0]
-        } else {
-            vec![0.0, s.fz_kn, 1.0]
-        }
-    });
-    a[11] = sv[0];
-    a[12] = sv[1];
-    a[13] = sv[2];
+    let [sh, sv] = offsets(stage1, held);
+    a[8..11].copy_from_slice(&sh);
+    a[11..14].copy_from_slice(&sv);
     // BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|), separately.
     let bcd: Vec<(f64, f64, f64)> = stage1
         .iter()
@@ -273,7 +275,7 @@ fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
         })
         .collect();
     let bmax = bcd.iter().map(|x| x.2.abs()).fold(0.0, f64::max);
-    let a5_bounds = if with_camber { (-0.2, 0.2) } else { (0.0, 0.0) };
+    let a5_bounds = held.map_or((-0.2, 0.2), |h| (h[0], h[0]));
     let p = fit(
         &Bcd(&bcd),
         &[(0.5 * bmax, 10.0 * bmax), (0.2, 50.0), a5_bounds],
@@ -281,8 +283,39 @@ fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
     );
     a[3] = p[0];
     a[4] = p[1];
-    a[5] = if with_camber { p[2] } else { 0.0 };
+    a[5] = held.map_or(p[2], |h| h[0]);
     a
+}
+
+/// The offsets' laws `Sh = a8·γ + a9·Fz + a10` and `Sv = a11·Fz·γ + a12·Fz
+/// + a13` from the stage-1 curves: (a8, a9, a10) and (a11, a12, a13), the
+/// camber terms fitted or `held` (a5, a8, a11), the rest fitted to the
+/// offsets less the held terms' share.
+fn offsets(stage1: &[Stage1], held: Option<[f64; 3]>) -> [[f64; 3]; 2] {
+    let law = |k: usize, camber: fn(&Stage1) -> f64, h: Option<f64>| -> [f64; 3] {
+        match h {
+            None => {
+                let x = fit_law(
+                    stage1,
+                    |s| vec![camber(s), s.fz_kn, 1.0],
+                    |s| s.coefficients[k],
+                );
+                [x[0], x[1], x[2]]
+            }
+            Some(h) => {
+                let x = fit_law(
+                    stage1,
+                    |s| vec![s.fz_kn, 1.0],
+                    |s| s.coefficients[k] - h * camber(s),
+                );
+                [h, x[0], x[1]]
+            }
+        }
+    };
+    [
+        law(4, |s| s.camber_deg, held.map(|h| h[1])),
+        law(5, |s| s.fz_kn * s.camber_deg, held.map(|h| h[2])),
+    ]
 }
 
 /// The joint polish of a0..a13 on every raw point from the stage-2 values
@@ -321,20 +354,13 @@ mod tests {
 
     #[test]
     fn two_stage_recovers_a_pac89_tyre() {
-        let truth = Tyre::Pac89(Pac89 {
-            a: {
-                // The camber terms are unidentifiable at zero camber: zero them
-                // in the truth as stage 2 does.
-                let mut a = crate::tyre::pac89::ADAMS_EXAMPLE_A;
-                a[5] = 0.0;
-                a[8] = 0.0;
-                a[11] = 0.0;
-                a
-            },
-            ..Pac89::adams_example()
-        });
+        let truth = Tyre::Pac89(Pac89::adams_example());
         let (data, noise) = super::super::data::identification_conditions(&truth, 0.01, 3);
-        let r = identify(&data, &FitSettings::new(1)).unwrap();
+        // The camber terms are unidentifiable at zero camber: held at the
+        // start's, here zero, which the curves at zero camber do not see.
+        let start = [0.0; 14];
+        let r = identify(&data, &FitSettings::new(1), &start).unwrap();
+        assert_eq!(LATERAL_CAMBER_TERMS.map(|i| r.polished[i]), [0.0; 3]);
         // Stage 1 fits each curve to the noise; stage 2 is an exact model
         // of the stage-1 laws, so it stays near the noise too.
         assert!(
@@ -370,6 +396,7 @@ mod tests {
 #[cfg(test)]
 mod seed_style {
     use super::*;
+    use crate::tyre::pac89::ADAMS_EXAMPLE_A;
 
     /// Zhang et al.'s (2021) residual levels on data like theirs: a tyre that
     /// is not a PAC89 (the bundled UniTire) at Zhang & Li's (2017) three
@@ -381,9 +408,13 @@ mod seed_style {
     fn two_stage_residuals_on_a_unitire_tyre_are_in_zhang_et_al_range() {
         let truth: Tyre = toml::from_str(include_str!("../../tyres/unitire.toml")).unwrap();
         let (data, _) = crate::identify::data::identification_conditions(&truth, 0.01, 4);
-        let r = identify(&data, &FitSettings::new(1)).unwrap();
+        let r = identify(&data, &FitSettings::new(1), &ADAMS_EXAMPLE_A).unwrap();
         assert!(r.stage1_mean_sigma < 1.0, "stage 1 {}", r.stage1_mean_sigma);
         assert!(r.stage2_mean_sigma < 1.8, "stage 2 {}", r.stage2_mean_sigma);
         assert!(r.stage2_mean_sigma >= r.stage1_mean_sigma);
+        // One camber level: the camber terms are the start's, as the
+        // direct fit holds them.
+        let held = LATERAL_CAMBER_TERMS.map(|i| r.polished[i]);
+        assert_eq!(held, LATERAL_CAMBER_TERMS.map(|i| ADAMS_EXAMPLE_A[i]));
     }
 }

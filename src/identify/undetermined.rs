@@ -440,8 +440,7 @@ fn spare(
     // and its warning says so (`parameters.rs`).
     let on_bound = |k: usize| {
         let (lo, hi) = stated.bounds[problem.free[k]];
-        let w = hi - lo;
-        p[k] <= lo + 1e-6 * w || p[k] >= hi - 1e-6 * w
+        p[k] < lo || p[k] > hi || super::parameters::on_search_bound(p[k], (lo, hi))
     };
     let flagged: Vec<usize> = (0..p.len())
         .filter(|&k| spread.flagged(k, p[k]) && !on_bound(k))

@@ -171,6 +171,9 @@ fn checked_pressure(path: &Path, c: &Columns, p: Vec<f64>) -> Result<Vec<f64>, I
     // One cell in kPa among Pa: refused at it, not dropped as a sample
     // between levels.
     super::rig_rows::refuse_rows_not_in_pa(path, c, &p, None)?;
+    // A column a thousand times too large passes the median: refused at
+    // each cell above any tyre's, as `tyre-eval` refuses a point's.
+    super::rig_rows::refuse_pressures_above_any(path, c, &p)?;
     Ok(p)
 }
 
@@ -327,14 +330,14 @@ fn check_signs(
     mz: Option<&[f64]>,
     longitudinal: Option<(&[f64], &[f64])>,
 ) -> Result<(), InputError> {
-    let refuse = |channel: RigChannel, slope: SmallSlipSlope, fy_slope: Option<f64>| {
+    let refuse = |channel: RigChannel, slope: SmallSlipSlope, beside: Option<f64>| {
         InputError::problem(
             path,
             InputProblem::WrongSign {
                 channel,
                 position: c.column(channel.column()),
                 slope,
-                fy_slope,
+                beside,
             },
         )
     };
@@ -350,10 +353,20 @@ fn check_signs(
         let pairs =
             |y: &[f64]| -> Vec<(f64, f64)> { near.iter().map(|&i| (alpha[i], y[i])).collect() };
         if let Some(fy_slope) = Slope::fit(&pairs(fy)) {
-            if fy_slope.clearly_negative() {
-                return Err(refuse(RigChannel::Fy, fy_slope.reported(combined), None));
-            }
             let mz_slope = mz.and_then(|mz| Slope::fit(&pairs(mz)));
+            if fy_slope.clearly_negative() {
+                // Both channels reversed against the slip angle: the slip
+                // angle's column is the one reversed.
+                let reversed = mz_slope.filter(Slope::clearly_negative);
+                return Err(match reversed {
+                    Some(m) => refuse(
+                        RigChannel::Alpha,
+                        fy_slope.reported(combined),
+                        Some(m.slope),
+                    ),
+                    None => refuse(RigChannel::Fy, fy_slope.reported(combined), None),
+                });
+            }
             if let Some(mz_slope) = mz_slope {
                 if fy_slope.clearly_positive() && mz_slope.clearly_negative() {
                     return Err(refuse(

@@ -6,11 +6,15 @@
 //! range or counted as a sample between levels: refused here at its
 //! cell, with the reading that lands among the column's values. Rig
 //! `fy` and `mz` columns exchanged are refused as such, not as an `mz` in
-//! N·mm (`refuse_swapped_fy_mz`).
+//! N·mm (`refuse_swapped_fy_mz`). A rig pressure above any tyre's (a
+//! column a thousand times too large, whose median passes) is refused at
+//! each cell by the limit `tyre-eval` applies
+//! ([`crate::constants::MOST_PRESSURE`]).
 
 use super::Columns;
+use crate::constants::MOST_PRESSURE;
 use crate::error::{unit_slips, InputError, PressureMeant, UnitSlip, Variable};
-use crate::error::{MAX_RIG_ARM, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+use crate::error::{RigPressureAboveAny, MAX_RIG_ARM, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 use std::path::Path;
 
 /// Pressures (Pa) and what they are.
@@ -21,7 +25,10 @@ pub(crate) type Known = ([f64; 2], &'static str);
 /// rounded outwards. A median that lands here in one of kPa, bar and psi
 /// (in that order) is said in it: 83 reads as 83 kPa, 2.2 as 2.2 bar, 30
 /// as 30 psi.
-pub(crate) const INFLATION: Known = ([50e3, 1e6], "a pneumatic tyre's inflation pressures");
+pub(crate) const INFLATION: Known = (
+    crate::error::INFLATION_PRESSURES,
+    "a pneumatic tyre's inflation pressures",
+);
 
 /// Refuses every positive pressure of `p` below [`MIN_MEDIAN_PRESSURE`]
 /// at its cell of `file` (the points file `path`), each with the reading
@@ -69,6 +76,28 @@ pub(crate) fn rows_not_in_pa(p: &[f64], known: Option<Known>) -> Vec<(usize, Uni
             (i, slip)
         })
         .collect()
+}
+
+/// Refuses every pressure of `p` above [`MOST_PRESSURE`] at its cell of
+/// `file` (the rig file `path`): no tyre is tested there, and a column
+/// written a thousand or a hundred times too large has a median that the
+/// unit rule of too small a one passes.
+pub(crate) fn refuse_pressures_above_any(
+    path: &Path,
+    file: &Columns,
+    p: &[f64],
+) -> Result<(), InputError> {
+    let errors = (0..p.len())
+        .filter(|&i| p[i] > MOST_PRESSURE)
+        .map(|i| {
+            let above = RigPressureAboveAny {
+                value: p[i],
+                limit: MOST_PRESSURE,
+            };
+            file.error_at(path, i, "pressure", above.into())
+        })
+        .collect();
+    InputError::all_of(path, errors).map_or(Ok(()), Err)
 }
 
 /// The first reading of `value` in kPa, bar or psi that lands among the

@@ -590,6 +590,7 @@ mod trips_s104_fix34b;
 mod trips_s104_lead;
 mod trips_s104_mend34;
 mod trips_s105_fig41;
+mod trips_s105_fix36a;
 mod trips_s105_fix36b;
 mod trips_s105_lead;
 mod trips_s105_mfhold41;

@@ -101,8 +101,16 @@ impl Levels {
         // A request no test has in SI: its likeliest unit, though it
         // selects no level (`--camber 2`: 2°, between levels); so is a
         // camber past 20° on a file whose levels all lie within 20°
-        // (`--camber 0.5`, 28.6°, beside levels at 0° to 3.2°).
-        let (unit, factor) = slips[0];
+        // (`--camber 0.5`, 28.6°, beside levels at 0° to 3.2°); a pressure
+        // in the first unit that makes it a pneumatic tyre's, as
+        // `tyre-eval` reads a point's (2.6 is 2.6 bar, not 2.6 kPa).
+        let [least, most] = crate::error::INFLATION_PRESSURES;
+        let inflated = |&(_, f): &(&str, f64)| (least..=most).contains(&(want * f));
+        let (unit, factor) = match self.variable {
+            Variable::Pressure => slips.iter().copied().find(inflated),
+            _ => None,
+        }
+        .unwrap_or(slips[0]);
         let steep =
             self.variable == Variable::Camber && want.abs() > FAR_CAMBER && large < FAR_CAMBER;
         selecting.or_else(|| {

@@ -7,7 +7,9 @@
 //! by the load its line is drawn at (the report's `curves[].fz`, with its
 //! level's name where that differs), the key opening with what is
 //! measured (points) and what fitted (lines), the lines drawn over every
-//! load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
+//! load's points; where the model gives every load one curve (a linear
+//! tyre's), that curve drawn once in ink, keyed so, and the loads keyed by
+//! their points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
 use super::level_names::LevelNames;
 use super::staged_figure::{key_entries, level_style, MEASURED};
@@ -15,7 +17,7 @@ use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
 use crate::identify::Channel;
-use crate::report::plot::{Figure, Panel, Series, Style, Tone};
+use crate::report::plot::{Figure, Panel, Series, Style, Tone, INK};
 use crate::tyre::Tyre;
 
 /// Measured points against the fitted curves of every channel fitted.
@@ -168,7 +170,7 @@ fn panel(
     // The key says which marks are measured (points) and which fitted
     // (lines), in grey, before the loads' colours: a line per load in its
     // points' colour.
-    let mut series = key_entries(Style::Points(2), MEASURED);
+    let (mut series, one) = key_of(tyre, ch, conditions);
     // Every load's fitted line is drawn after every load's points: a line
     // drawn before the next load's points lay under them where two loads'
     // curves cross or meet (the aligning moment's near zero slip and past
@@ -193,18 +195,22 @@ fn panel(
         // past nine loads the colours come again with dashed lines.
         let style = level_style(k);
         let colour = style.colour;
-        // Pale points under the line in the full colour: in one colour
-        // a close fit's line could not be told from its points.
-        let points = Series::line("", &x, &y, colour).styled(Style::Points(2));
-        series.push(points.toned(Tone::Pale));
-        let (xd, ys) = fitted_curve(tyre, ch, c);
         // The line is drawn at the condition's own load, the report's
         // `curves[].fz`: the key says that number, and its level's name
         // where the terminal names the level otherwise (1639.7 N in the
         // 1656 N level).
         let label = super::condition_values::own_load(c.fz, names);
-        lines.push(Series::line(&label, &xd, &ys, colour).styled(style.line));
+        let on_points = if one.is_some() { label.as_str() } else { "" };
+        // Pale points under the line in the full colour: in one colour
+        // a close fit's line could not be told from its points.
+        let points = Series::line(on_points, &x, &y, colour).styled(Style::Points(2));
+        series.push(points.toned(Tone::Pale));
+        if one.is_none() {
+            let (xd, ys) = fitted_curve(tyre, ch, c);
+            lines.push(Series::line(&label, &xd, &ys, colour).styled(style.line));
+        }
     }
+    lines.extend(one.map(|(x, y)| Series::line("", &x, &y, INK)));
     series.extend(lines);
     let sigma = if y2 > 0.0 {
         100.0 * (e2 / y2).sqrt()
@@ -228,6 +234,108 @@ fn panel(
     }
 }
 
+/// The key's entry of a panel's one fitted curve ([`one_curve`]).
+const ONE_CURVE: &str = "fitted: one curve for every load";
+
+/// A panel's key entries for measured and fitted, and its one fitted
+/// curve where the model gives every load one (a linear tyre's, the loads
+/// pooled): drawn once in ink and keyed so, the loads then keyed by their
+/// points (four coinciding lines showed the last load's colour while the
+/// key listed four).
+fn key_of(tyre: &Tyre, ch: Channel, conditions: &[&Condition]) -> (Vec<Series>, OneCurve) {
+    let mut key = key_entries(Style::Points(2), MEASURED);
+    let one = one_curve(tyre, ch, conditions);
+    if one.is_some() {
+        key[1] = Series::line(ONE_CURVE, &[], &[], INK);
+    }
+    (key, one)
+}
+
+/// A panel's one fitted curve ([`one_curve`]): x as shown, y.
+type OneCurve = Option<(Vec<f64>, Vec<f64>)>;
+
+/// The fitted curve of every condition of a panel where the model gives
+/// them one (no law of load: a linear tyre's, the loads pooled), over
+/// their slips together: x as shown, y. `None` for one condition, or
+/// curves that differ anywhere by more than a billionth of their size.
+fn one_curve(tyre: &Tyre, ch: Channel, conditions: &[&Condition]) -> OneCurve {
+    let axis = match ch {
+        Channel::LongitudinalForce => SlipAxis::Ratio,
+        _ => SlipAxis::Angle,
+    };
+    let (lo, hi) = conditions
+        .iter()
+        .flat_map(|c| &c.points)
+        .map(|q| q.slip())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if conditions.len() < 2 || lo >= hi {
+        return None;
+    }
+    let xs: Vec<f64> = (0..=200)
+        .map(|i| lo + (hi - lo) * f64::from(i) / 200.0)
+        .collect();
+    let curve = |c: &Condition| -> Vec<f64> {
+        let speed = c.points.first().map_or(10.0, |q| q.speed);
+        xs.iter()
+            .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
+            .collect()
+    };
+    let first = curve(conditions[0]);
+    let size = first.iter().fold(0.0, |m: f64, y| m.max(y.abs()));
+    let same = |ys: Vec<f64>| {
+        ys.iter()
+            .zip(&first)
+            .all(|(a, b)| (a - b).abs() <= 1e-9 * size)
+    };
+    conditions[1..]
+        .iter()
+        .all(|c| same(curve(c)))
+        .then(|| (xs.iter().map(|a| slip_shown(ch, *a)).collect(), first))
+}
+
 #[cfg(test)]
 #[path = "figures_tests.rs"]
 mod tests;
+
+#[cfg(test)]
+mod one_curve_tests {
+    use super::*;
+    use crate::identify::data::identification_conditions;
+    use crate::tyre::{Linear, Pac89};
+
+    /// A linear tyre's three loads: one ink line over the slips of all,
+    /// the loads keyed by their points; a PAC89's: a line per load.
+    #[test]
+    fn one_curve_for_every_load_is_drawn_and_keyed_once() {
+        let linear = Tyre::Linear(Linear::new(60_000.0));
+        let (conds, _) = identification_conditions(&linear, 0.01, 1);
+        let at: Vec<&Condition> = conds.iter().collect();
+        let names = LevelNames::default();
+        let p = panel(
+            "linear",
+            &linear,
+            Channel::LateralForce,
+            &at,
+            (0.0, None),
+            &names,
+        );
+        let lines: Vec<&Series> = p.series.iter().filter(|s| s.style == Style::Line).collect();
+        let drawn: Vec<&&Series> = lines.iter().filter(|s| !s.x.is_empty()).collect();
+        assert_eq!(drawn.len(), 1, "one line drawn");
+        assert_eq!(drawn[0].color, INK);
+        let keyed: Vec<&str> = p.series.iter().map(|s| s.label.as_str()).collect();
+        assert_eq!(
+            keyed
+                .iter()
+                .filter(|l| !l.is_empty())
+                .copied()
+                .collect::<Vec<_>>(),
+            ["measured", ONE_CURVE, "2800 N", "5700 N", "8600 N"]
+        );
+        let pac89 = Tyre::Pac89(Pac89::adams_example());
+        assert!(one_curve(&pac89, Channel::LateralForce, &at).is_none());
+        assert!(one_curve(&linear, Channel::LateralForce, &at[..1]).is_none());
+    }
+}

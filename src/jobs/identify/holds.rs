@@ -104,7 +104,7 @@ fn value_text(h: &Held) -> String {
 
 /// The parameters of `fits` held for another reason than `--hold` (the
 /// levels of the data, the model's design), at their value in `written`
-/// (PAC89's two-stage result holds its camber terms at zero); one that
+/// (PAC89's two fits hold its camber terms at the start's alike); one that
 /// another of the fits fitted (Gim's contact length, held by the lateral
 /// fit and fitted to the aligning moment) is not held.
 pub(crate) fn held_by_fits(fits: &[&Fit], written: &Tyre) -> Vec<Held> {

@@ -30,6 +30,25 @@ use serde::Serialize;
 /// The largest |α| a linear tyre is fitted to, degrees.
 pub(crate) const WINDOW_DEG: f64 = 2.0;
 
+/// The slip a file's digits resolve, rad: 2° written to six decimals in
+/// rad (0.034907) lies 2e-5° past 2°, and the mean of a bin of samples
+/// at ±2° lands a rounding error either side of it.
+const SLIP_ROUNDING: f64 = 1e-6;
+
+/// Whether a point of slip angle `slip` (rad) lies within the window, its
+/// samples thinned in slip bins `bin` wide (rad; 0: not thinned): the
+/// centre of its bin within ±[`WINDOW_DEG`], else its slip, to within
+/// [`SLIP_ROUNDING`]. Symmetric about zero slip: a bin's mean lies
+/// anywhere in the bin, and judged by it the bin at −2.0° was left out of
+/// a symmetric sweep where the one at +2.0° was kept.
+pub(crate) fn in_window(slip: f64, bin: f64) -> bool {
+    // A bin below the resolution of the slips thinned nothing (`thin.rs`).
+    let centre = Some((slip / bin).round() * bin)
+        .filter(|c| bin > 0.0 && c.is_finite())
+        .unwrap_or(slip);
+    centre.abs() <= WINDOW_DEG.to_radians() + SLIP_ROUNDING
+}
+
 /// The window of a linear fit, as written to the report.
 #[derive(Debug, Clone, Serialize)]
 pub struct LinearWindow {
@@ -164,13 +183,13 @@ impl LinearWindow {
     }
 }
 
-/// `conditions` kept to the window (a condition left with fewer than two
-/// points dropped, its load said: two of a file's loads vanished without
-/// a word), and the window's account (no trail yet).
-pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWindow) {
-    let max = WINDOW_DEG.to_radians();
+/// `conditions` (thinned in slip bins `bin` wide, rad) kept to the window
+/// ([`in_window`]; a condition left with fewer than two points dropped,
+/// its load said: two of a file's loads vanished without a word), and the
+/// window's account (no trail yet).
+pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>, LinearWindow) {
     let total: usize = conditions.iter().map(|c| c.points.len()).sum();
-    let beyond = judged(&conditions, max);
+    let beyond = judged(&conditions, bin);
     if let Beyond::FollowLine { .. } = beyond {
         // The data never leave their line: every point is the line's.
         let reach = largest_slip(&conditions);
@@ -189,7 +208,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
     let (kept, left): (Vec<Condition>, Vec<Condition>) = conditions
         .into_iter()
         .map(|mut c| {
-            c.points.retain(|p| p.slip().abs() <= max);
+            c.points.retain(|p| in_window(p.slip(), bin));
             c
         })
         .partition(|c| c.points.len() >= 2);
@@ -207,17 +226,18 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
     (kept, w)
 }
 
-/// Whether the points of `conditions` beyond `max` (rad) depart from
-/// their condition's line within it (module notes).
-fn judged(conditions: &[Condition], max: f64) -> Beyond {
+/// Whether the points of `conditions` (thinned in bins `bin` wide)
+/// beyond the window depart from their condition's line within it
+/// (module notes).
+fn judged(conditions: &[Condition], bin: f64) -> Beyond {
     let departures: Vec<(f64, bool)> = conditions
         .iter()
-        .filter_map(|c| departure(c, max))
+        .filter_map(|c| departure(c, bin))
         .collect();
     let beyond = conditions
         .iter()
         .flat_map(|c| &c.points)
-        .any(|p| p.slip().abs() > max);
+        .any(|p| !in_window(p.slip(), bin));
     let largest = departures.iter().map(|d| d.0).fold(0.0, f64::max);
     let n = departures.iter().filter(|d| d.1).count();
     match (beyond, departures.len(), n) {
@@ -235,15 +255,15 @@ fn judged(conditions: &[Condition], max: f64) -> Beyond {
     }
 }
 
-/// The departure of condition `c`'s points beyond `max` (rad) from the
-/// line through its points within it, as a share of the line's force
-/// there (RMS), and whether it saturates; `None` where it has fewer than
-/// [`JUDGED_POINTS`] within or none beyond.
-fn departure(c: &Condition, max: f64) -> Option<(f64, bool)> {
+/// The departure of condition `c`'s points (thinned in bins `bin` wide)
+/// beyond the window from the line through its points within it, as a
+/// share of the line's force there (RMS), and whether it saturates;
+/// `None` where it has fewer than [`JUDGED_POINTS`] within or none beyond.
+fn departure(c: &Condition, bin: f64) -> Option<(f64, bool)> {
     let pairs = |inside: bool| -> Vec<(f64, f64)> {
         c.points
             .iter()
-            .filter(|p| (p.slip().abs() <= max) == inside && p.fy().is_finite())
+            .filter(|p| in_window(p.slip(), bin) == inside && p.fy().is_finite())
             .map(|p| (p.slip(), p.fy()))
             .collect()
     };
@@ -346,5 +366,29 @@ impl LinearWindow {
 pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
     if let Tyre::Linear(l) = tyre {
         l.pneumatic_trail = t;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Symmetric about zero slip: the 0.25° bins at −2° and +2° both in
+    /// wherever their means lie in them, the next ones out; unthinned, a
+    /// file's rounding of ±2° in.
+    #[test]
+    fn the_window_keeps_the_bins_at_both_its_ends() {
+        let bin = 0.25f64.to_radians();
+        for deg in [2.0f64, -2.0, 2.0 + 1e-9, -2.0 - 1e-9, 2.1, -2.1, 1.9, 0.0] {
+            assert!(in_window(deg.to_radians(), bin), "{deg}");
+        }
+        for deg in [2.13f64, -2.13, 2.25, -2.25] {
+            assert!(!in_window(deg.to_radians(), bin), "{deg}");
+        }
+        for rad in [0.034907, -0.034907] {
+            assert!(in_window(rad, 0.0), "{rad}");
+        }
+        assert!(!in_window(0.0352, 0.0));
+        assert!(!in_window(-2.1f64.to_radians(), 0.0));
     }
 }

@@ -11,7 +11,7 @@
 //! condition, is what the rest of the misfit makes. Said where the shift
 //! takes σ down by at least [`SAID_SHARE`] of itself. Units: N, rad.
 
-use super::linear_window::{JUDGED_POINTS, WINDOW_DEG};
+use super::linear_window::{in_window, JUDGED_POINTS, WINDOW_DEG};
 use super::notes::Note;
 use crate::format::{fixed, readable};
 use crate::identify::data::{Condition, RigPoint, SlipAxis, Sweep};
@@ -26,12 +26,13 @@ pub(crate) const SAID_SHARE: f64 = 0.2;
 /// give, N (`None`: fewer than [`JUDGED_POINTS`] points within the window,
 /// or no spread of slip among them).
 fn unexplained(tyre: &Tyre, c: &Condition) -> Option<f64> {
-    let max = WINDOW_DEG.to_radians();
+    // The window's rule unthinned: within ±2° to a file's rounding, so
+    // that the points at −2° count as those at +2° do.
     let within: Vec<(f64, f64)> = c
         .points
         .iter()
         .filter(|p| matches!(p.sweep, Sweep::Lateral { .. }))
-        .filter(|p| p.fy().is_finite() && p.slip().abs() <= max)
+        .filter(|p| p.fy().is_finite() && in_window(p.slip(), 0.0))
         .map(|p| (p.slip(), p.fy()))
         .collect();
     let intercept = intercept(&within)?;

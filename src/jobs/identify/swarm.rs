@@ -119,9 +119,10 @@ fn first_fit(
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
         && first == Channel::LateralForce
         && o.hold.is_empty();
-    let (fit, stages) = two_stage::beside_direct(asks_two_stage, conditions, settings, || {
-        fit_channel_holding(tyre0, first, conditions, settings, &o.hold)
-    });
+    let (fit, stages) =
+        two_stage::beside_direct(asks_two_stage, (tyre0, conditions), settings, || {
+            fit_channel_holding(tyre0, first, conditions, settings, &o.hold)
+        });
     let fit = fit
         .map_err(|e| thinned_too_far(e, &grouped.report, conditions))
         .map_err(on_data(o, None))?;
@@ -306,7 +307,7 @@ fn fitted_conditions(
     let mut window = None;
     if model.as_str() == "linear" && first == Channel::LateralForce {
         let smallest = linear_window::smallest_slip(&conditions);
-        let (kept, w) = linear_window::windowed(conditions);
+        let (kept, w) = linear_window::windowed(conditions, grouped.report.slip_bin);
         if kept.is_empty() && w.points_left_out > 0 {
             return Err(FitError::NoSmallSlip {
                 data: o.data.clone(),

@@ -55,18 +55,24 @@ pub struct TwoStageReport {
 /// direct fit's polish leaves a core idle while it factors its Jacobian
 /// (serial in the `levenberg-marquardt` crate), which the stages fill.
 /// Each is computed as it would be alone, so the results do not depend on
-/// the overlap.
+/// the overlap. The stages hold what the data's one camber level cannot
+/// fit at `start`'s values, as the direct fit does: one value for one
+/// hold, whichever fit is written.
 pub(super) fn beside_direct<F>(
     asks: bool,
-    conditions: &[Condition],
+    (start, conditions): (&Tyre, &[Condition]),
     settings: &FitSettings,
     direct: F,
 ) -> (Result<Fit, Error>, Option<Result<TwoStage, FitError>>)
 where
     F: FnOnce() -> Result<Fit, Error> + Send,
 {
+    let start = match start {
+        Tyre::Pac89(p) => p.a,
+        _ => Pac89::adams_example().a,
+    };
     rayon::join(direct, || {
-        asks.then(|| pac89_two_stage::identify(conditions, settings))
+        asks.then(|| pac89_two_stage::identify(conditions, settings, &start))
     })
 }
 

@@ -20,12 +20,10 @@
 //! `CAMMIN`/`CAMMAX` with a warning as MFeval does (`ranges.rs`), a model
 //! with no camber range saying them (`camber.rs`).
 
+use crate::constants::MOST_PRESSURE;
 use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
 use crate::io::camber_in_degrees;
 use std::f64::consts::FRAC_PI_2;
-
-/// The highest inflation pressure evaluated, Pa ([`PHYSICAL`]'s).
-pub(super) const MAX_PRESSURE: f64 = 5e6;
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
 /// end, high end, unit, what the ends are). Ends included.
@@ -62,7 +60,7 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     (
         "pressure",
         0.0,
-        MAX_PRESSURE,
+        MOST_PRESSURE,
         "Pa",
         "5 MPa, above any pneumatic tyre's inflation",
     ),

@@ -136,7 +136,7 @@ fn pressure_units(
         return Vec::new();
     };
     let kept: Vec<usize> = (0..p.len())
-        .filter(|&i| p[i].is_finite() && p[i] > 0.0 && p[i] <= physical::MAX_PRESSURE)
+        .filter(|&i| p[i].is_finite() && p[i] > 0.0 && p[i] <= crate::constants::MOST_PRESSURE)
         .collect();
     let values: Vec<f64> = kept.iter().map(|&i| p[i]).collect();
     pressure::not_in_pa(&values, known)

@@ -1,6 +1,7 @@
 //! Tests of `holds.rs`: the book defaults, the held lines' words.
 
 use super::*;
+use crate::identify::mf_staged::book_defaults::PACEJKA_BOOK;
 use crate::identify::mf_staged::Stage;
 
 /// Every coefficient a stage fits has its book default, and the

@@ -101,6 +101,7 @@
 //! `holds.rs` what a parameter is held at and why; `paper_lm.rs` the
 //! paper's own LM.
 
+mod book_defaults;
 mod fit_warnings;
 mod hold_guard;
 mod holds;
@@ -115,7 +116,8 @@ mod stages;
 mod start;
 mod uncertainty;
 
-pub use holds::{pacejka_book_default, HoldReason, HoldSource, Holding};
+pub use book_defaults::pacejka_book_default;
+pub use holds::{HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
 pub(crate) use params::fixed_bounds;
 pub use params::Stage;

@@ -101,6 +101,9 @@ mod tests {
         assert!(said.contains(":2:1: missing field `mass`"), "{said}");
         // A required key written in capitals is no missing table.
         let said = parsed("Name = \"x\"\n[vehicle]\nmass = 1.0\n");
-        assert!(said.contains("`Name`") && !said.contains("is missing"), "{said}");
+        assert!(
+            said.contains("`Name`") && !said.contains("is missing"),
+            "{said}"
+        );
     }
 }

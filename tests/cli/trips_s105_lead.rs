@@ -37,7 +37,7 @@ fn a_friction_and_a_cg_height_the_runs_contradict_are_warned() {
         warned[1].contains("g·t/(2h) = 3.04 m/s²") && warned[1].contains("cg_height 2.5 m"),
         "{said}"
     );
-    let kinds: Vec<&str> = d["notes"]
+    let kinds: Vec<&str> = d["note_details"]
         .as_array()
         .unwrap()
         .iter()

@@ -192,7 +192,6 @@ fn a_staged_hold_that_lowers_sigma_says_the_free_fit_stopped_short() {
     let said = String::from_utf8_lossy(&o.stdout).into_owned();
     assert!(o.status.success(), "{}", stderr(&o));
     let clause = ": lower held than free, so the fit with it free had stopped short of its optimum (a local minimum, or its iteration cap); the held fit, the better, is kept";
-    let mut lower = 0;
     for line in said.lines().filter(|l| l.contains("% held against ")) {
         let tail = line.rsplit("; σ ").next().unwrap();
         let held: f64 = tail.split(' ').next().unwrap().parse().unwrap();
@@ -206,9 +205,11 @@ fn a_staged_hold_that_lowers_sigma_says_the_free_fit_stopped_short() {
             .parse()
             .unwrap();
         assert_eq!(held < free, line.ends_with(clause), "{line}");
-        lower += usize::from(held < free);
     }
-    assert!(lower >= 1, "{said}");
+    // The staged fit now refuses the costly holds whose fits left a later
+    // hold below its free σ on this grid, so the case may not arise here:
+    // `holds_tests::a_hold_that_lowers_sigma_says_the_free_fit_stopped_short`
+    // states the words; every line here must agree with its numbers.
 }
 
 /// Points of pure and combined slip: at each load (2, 4, 6 kN) and camber

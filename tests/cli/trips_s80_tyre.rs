@@ -202,9 +202,11 @@ fn a_staged_fit_far_off_or_on_too_few_points_is_warned_of() {
     }
     let dir = scratch(&[("wild.csv", &wild), ("few.csv", &few)]);
     for (name, line) in [
-        // σ 86 % since a fit ended on a bound is started a second time
-        // (89 % before); what is checked is the warning above 50 %.
-        ("wild", "    warning: σ 86 %, above 50 %: the fit does not reproduce the measured `fy` (its error is over half the channel's RMS); its coefficients are no model of these data"),
+        // σ 81 % since the staged fit refuses a hold that costs σ past
+        // what the data allow (86 % before, 89 % before a fit ended on a
+        // bound was started a second time); what is checked is the
+        // warning above 50 %.
+        ("wild", "    warning: σ 81 %, above 50 %: the fit does not reproduce the measured `fy` (its error is over half the channel's RMS); its coefficients are no model of these data"),
         ("few", "    warning: 13 points for 7 free parameters, fewer than the 5 per parameter a fit needs to rest on the data rather than match them; do not rely on the tyre beyond the points"),
     ] {
         let o = run_in(

@@ -222,7 +222,7 @@ fn a_linear_fit_of_a_saturating_force_keeps_its_window_and_says_the_departure() 
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout).into_owned();
-    assert!(said.contains("  linear window: fitted to |alpha| <= 2 deg only (15 points; 78 points with larger |alpha| left out, where the force saturates: in 1 of the 1 condition judged they depart from the window's line by up to "), "{said}");
+    assert!(said.contains("  linear window: fitted to |alpha| <= 2 deg only (17 points; 76 points with larger |alpha| left out, where the force saturates: in 1 of the 1 condition judged they depart from the window's line by up to "), "{said}");
     let report = read_json(&dir.path().join("lin_fit.report.json"));
     let w = &report["linear_window"];
     assert_eq!(w["beyond"]["beyond_window"], "saturates", "{w}");

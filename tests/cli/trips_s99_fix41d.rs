@@ -217,7 +217,8 @@ fn a_campaign_with_no_gap_has_no_best_candidate_in_the_fleet() {
     let line = lines.next().unwrap();
     let row: Vec<&str> = line.split(',').collect();
     let at = |name: &str| head.iter().position(|h| *h == name).unwrap();
-    assert!(line.ends_with(",no_significant_gap"), "{csv}");
+    // `kind`, then the campaign's own `name` (the last column).
+    assert!(line.ends_with(",no_significant_gap,carB"), "{csv}");
     assert_eq!(row[at("best")], "", "{csv}");
     assert_eq!(row[at("best_reduction_percent")], "", "{csv}");
     assert!(

@@ -107,3 +107,14 @@ fn a_held_line_says_the_value_held_and_the_stated_one() {
     assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 standard errors the data allow)"), "{near}");
     assert_eq!(HoldReason::Given.said("PKY4"), "given with --hold");
 }
+
+/// A hold that lowers σ says the free fit stopped short; one that raises
+/// it, or moves no printed digit, says nothing more (MFeval's grid held
+/// QSX6 at σ 0.355 % against 0.404 % free, unsaid, before the guard
+/// refused its costly neighbour's hold).
+#[test]
+fn a_hold_that_lowers_sigma_says_the_free_fit_stopped_short() {
+    assert!(held_below_free(0.355, 0.404).contains("had stopped short of its optimum"));
+    assert_eq!(held_below_free(0.404, 0.355), "");
+    assert_eq!(held_below_free(0.3550000001, 0.3550000002), "");
+}

@@ -287,10 +287,10 @@ fn stage2(stage1: &[Stage1], held: Option<[f64; 3]>, pso: &Pso) -> [f64; 14] {
     a
 }
 
-/// The offsets' laws `Sh = a8·γ + a9·Fz + a10` and `Sv = a11·Fz·γ + a12·Fz
-/// + a13` from the stage-1 curves: (a8, a9, a10) and (a11, a12, a13), the
-/// camber terms fitted or `held` (a5, a8, a11), the rest fitted to the
-/// offsets less the held terms' share.
+/// The offsets' laws `Sh = a8·γ + a9·Fz + a10` and
+/// `Sv = a11·Fz·γ + a12·Fz + a13` from the stage-1 curves: (a8, a9, a10)
+/// and (a11, a12, a13), the camber terms fitted or `held` (a5, a8, a11),
+/// the rest fitted to the offsets less the held terms' share.
 fn offsets(stage1: &[Stage1], held: Option<[f64; 3]>) -> [[f64; 3]; 2] {
     let law = |k: usize, camber: fn(&Stage1) -> f64, h: Option<f64>| -> [f64; 3] {
         match h {

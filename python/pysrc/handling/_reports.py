@@ -108,7 +108,12 @@ class StepMetrics:
     deviation over noisy copies of the record, s (None without a peak or
     without noise; an upper estimate)."""
     yaw_rate_peak_found_share: Optional[float]
-    """The share of those noisy copies that find a peak at all."""
+    """The share of those noisy copies that find the peak (within one peak
+    time of it)."""
+    yaw_rate_peak_stray_share: Optional[float]
+    """The share that find a maximum only farther from it (another maximum:
+    the next one, a noise bump of the steady state), left out of the
+    spread."""
     yaw_rate_overshoot_spread: Optional[float]
     """How far the run's own noise moves the overshoot: its standard
     deviation over the same copies, percentage points (an upper estimate)."""

@@ -5,7 +5,8 @@
 //! a centre of gravity in the wrong unit, would otherwise be diagnosed as
 //! a gap of the runs. Judged on the 99th percentile of |u·r| over all runs
 //! (a logger's spike is no turn), u·r being the lateral acceleration of
-//! steady turning that every run carries (ISO 8855; m/s², m/s, rad/s).
+//! steady turning that every run carries, less what a logged bank gives
+//! (ISO 8855; m/s², m/s, rad/s, rad).
 
 use crate::diagnose::campaign::{BaseTyres, Campaign};
 use crate::diagnose::report::{Note, VehicleLimit};
@@ -26,18 +27,13 @@ const REACH_QUANTILE: f64 = 0.99;
 
 /// The notes on a vehicle or road the runs of `c` contradict.
 pub(crate) fn contradicted(c: &Campaign) -> Vec<Note> {
-    let mut turning: Vec<f64> = c
-        .runs
-        .iter()
-        .flat_map(|r| r.speed.iter().zip(&r.yaw_rate).map(|(u, r)| (u * r).abs()))
-        .filter(|v| v.is_finite())
-        .collect();
+    let g = crate::constants::G;
+    let mut turning: Vec<f64> = c.runs.iter().flat_map(|r| demand(r, g)).collect();
     turning.sort_by(f64::total_cmp);
     let Some(reached) = quantile(&turning, REACH_QUANTILE) else {
         return Vec::new();
     };
     let mut notes = Vec::new();
-    let g = crate::constants::G;
     if friction_limits(c) && reached > FRICTION_SLACK * c.friction * g {
         notes.push(Note::RunsBeyondVehicle {
             limit: VehicleLimit::Friction {
@@ -60,6 +56,22 @@ pub(crate) fn contradicted(c: &Campaign) -> Vec<Note> {
         });
     }
     notes
+}
+
+/// The lateral acceleration the road asks of a run's tyres at each sample,
+/// |u·r| less what a bank gives, g·|sin θ| (m/s²): on a banked oval the
+/// bank carries part of u·r, so a run there is not judged against μ·g by
+/// its whole u·r (the generous sign: the bank taken as helping).
+fn demand(run: &crate::measured::MeasuredRun, g: f64) -> Vec<f64> {
+    let bank = |i: usize| run.bank.as_ref().and_then(|b| b.get(i)).copied();
+    run.speed
+        .iter()
+        .zip(&run.yaw_rate)
+        .enumerate()
+        .map(|(i, (u, r))| (u * r).abs() - bank(i).map_or(0.0, |b| g * b.sin().abs()))
+        .filter(|v| v.is_finite())
+        .map(|v| v.max(0.0))
+        .collect()
 }
 
 /// Whether the campaign's base tyres have a friction limit the road's

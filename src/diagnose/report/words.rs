@@ -555,7 +555,7 @@ fn beyond_vehicle(
     use crate::format::significant;
     let g = crate::constants::G;
     let head = format!(
-        "the runs turn at up to {} m/s² ({} g; 99th percentile of |speed × yaw_rate|)",
+        "the runs turn at up to {} m/s² ({} g; 99th percentile of |speed × yaw_rate|, less a logged bank's g·|sin θ|)",
         significant(reached, 3),
         significant(reached / g, 2)
     );

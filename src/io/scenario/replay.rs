@@ -213,7 +213,7 @@ fn in_degrees(src: &TomlSource, r: &ReplaySpec, e: &InputError) -> Option<InputE
         return None;
     }
     let at = at.as_ref().map_or_else(
-        || "its header".to_string(),
+        || "its rows".to_string(),
         |l| format!("line {}, column {}", l.line, l.column),
     );
     let p = ReplayRunProblem::InDegrees {

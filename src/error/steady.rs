@@ -33,6 +33,36 @@ fn no_steady_words(speed: f64, ay: f64, limit: Option<f64>) -> String {
             "{head}: beyond the vehicle's lateral limit at this speed, {} m/s² with these tyres and this road (the largest steady ay, within 45° of steer and sideslip)",
             crate::format::readable(l, 3)
         ),
+        // Within 1 % of the largest steady ay found: at the limit, where
+        // the bisection cannot tell "beyond" from a solver that fails on
+        // the flat top of the ay-steer curve (9.9 m/s² against 9.81 with
+        // friction 1 read only "did not converge").
+        Some(l) if l.abs() < ay.abs() => format!(
+            "{head}: at the vehicle's lateral limit at this speed, where the largest steady ay found is {} m/s² with these tyres and this road, within 1 % of the asked: the solver did not converge this close to the limit; ask for less than {} m/s²",
+            crate::format::readable(l, 3),
+            crate::format::readable(l, 3)
+        ),
         _ => format!("{head}: the solver did not converge"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An ay asked within 1 % above the largest steady ay found is said to
+    /// be at the limit, with a value that holds; clearly beyond, beyond;
+    /// no limit found, the solver's failure.
+    #[test]
+    fn an_ay_at_the_limit_is_said_at_it_not_as_a_solver_failure() {
+        let at = no_steady_words(22.2222, 9.9, Some(9.81));
+        assert!(at.ends_with("at the vehicle's lateral limit at this speed, where the largest steady ay found is 9.81 m/s² with these tyres and this road, within 1 % of the asked: the solver did not converge this close to the limit; ask for less than 9.81 m/s²"), "{at}");
+        let beyond = no_steady_words(22.2222, 11.0, Some(9.81));
+        assert!(
+            beyond.contains("beyond the vehicle's lateral limit at this speed, 9.81 m/s²"),
+            "{beyond}"
+        );
+        let none = no_steady_words(22.2222, 9.9, None);
+        assert!(none.ends_with("the solver did not converge"), "{none}");
     }
 }

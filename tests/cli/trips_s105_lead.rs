@@ -157,3 +157,24 @@ fn a_batch_campaign_named_otherwise_than_its_file_is_listed_by_both_names() {
     assert!(row.starts_with("a,") && row.ends_with(",small"), "{csv}");
     assert!(out.join("a").join("report.html").is_file());
 }
+
+/// A steady ay asked 1 % above the largest the car holds (9.9 m/s² on the
+/// bundled Gim sedan at 22.2 m/s, friction 1, whose limit is 9.81) read
+/// only "the solver did not converge", where 11 m/s² was said beyond the
+/// limit: now at the limit, with a value to ask for.
+#[test]
+fn a_steady_ay_just_past_the_limit_is_said_at_the_limit() {
+    let tyres = root().join("tyres");
+    let scenario = format!(
+        "name = \"g\"\n{VEHICLE}[tyres]\nfront = \"{}\"\nrear = \"{}\"\n{SMALL_ANGLE}[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nlateral_acceleration = 9.9\nstart = 1.0\nrise_time = 0.1\nend = 8.0\n",
+        tyres.join("gim_sedan_front.toml").display(),
+        tyres.join("gim_sedan_rear.toml").display()
+    );
+    let dir = scratch(&[("g.toml", &scenario)]);
+    let said = fails_cleanly("simulate", &dir.path().join("g.toml"), dir.path());
+    assert!(
+        said.contains("at the vehicle's lateral limit at this speed, where the largest steady ay found is 9.81 m/s²")
+            && said.contains("ask for less than 9.81 m/s²"),
+        "{said}"
+    );
+}

@@ -216,14 +216,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
     let banked = c.runs.iter().any(|r| r.bank.is_some());
     let rolled = c.runs.iter().all(|r| r.roll.is_some() && r.ay.is_some());
     // Linear base tyres have no limit for a friction scale to lower.
-    let linear = |t: &crate::tyre::Tyre| matches!(t, crate::tyre::Tyre::Linear(_));
-    let linear_base = match &c.tyres {
-        crate::diagnose::campaign::BaseTyres::Given(f, r) => linear(f) && linear(r),
-        crate::diagnose::campaign::BaseTyres::Rig { model, .. } => {
-            *model == crate::tyre::ModelName::Linear
-        }
-        crate::diagnose::campaign::BaseTyres::FromRuns => false,
-    };
+    let linear_base = c.tyres.linear();
     let mut notes = Vec::new();
     let effects = c
         .effects

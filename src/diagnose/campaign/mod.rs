@@ -164,6 +164,21 @@ pub enum BaseTyres {
     FromRuns,
 }
 
+impl BaseTyres {
+    /// Whether the base tyres are linear on both axles (given files of the
+    /// linear model, or the linear model fitted to rig data): no limit for
+    /// a friction to set or a friction scale to lower. Axles identified
+    /// from the runs are not said linear here.
+    pub fn linear(&self) -> bool {
+        let linear = |t: &Tyre| matches!(t, Tyre::Linear(_));
+        match self {
+            BaseTyres::Given(f, r) => linear(f) && linear(r),
+            BaseTyres::Rig { model, .. } => *model == ModelName::Linear,
+            BaseTyres::FromRuns => false,
+        }
+    }
+}
+
 /// A loaded and checked campaign.
 #[derive(Debug, Clone)]
 pub struct Campaign {

@@ -11,7 +11,6 @@
 use crate::diagnose::campaign::{BaseTyres, Campaign};
 use crate::diagnose::report::{Note, VehicleLimit};
 use crate::measured::clean::quantile;
-use crate::tyre::Tyre;
 
 /// How far beyond μ·g the runs' |u·r| may go before the friction is
 /// contradicted: downforce (not in the base model), a banked road and the
@@ -78,10 +77,5 @@ fn demand(run: &crate::measured::MeasuredRun, g: f64) -> Vec<f64> {
 /// friction scales: linear tyres and axles identified from the runs have
 /// none, so the stated friction acts on nothing.
 fn friction_limits(c: &Campaign) -> bool {
-    let linear = |t: &Tyre| matches!(t, Tyre::Linear(_));
-    match &c.tyres {
-        BaseTyres::Given(f, r) => !(linear(f) && linear(r)),
-        BaseTyres::Rig { model, .. } => *model != crate::tyre::ModelName::Linear,
-        BaseTyres::FromRuns => false,
-    }
+    !matches!(c.tyres, BaseTyres::FromRuns) && !c.tyres.linear()
 }

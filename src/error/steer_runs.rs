@@ -13,7 +13,7 @@ use crate::format::readable;
 /// Runs whose yaw rate is far smaller than a neutral car's for their
 /// steer (a steer in degrees or a steering-wheel angle), of a campaign.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}{}", format!("{} of the {} runs", self.runs.len(), self.of), self.runs.iter().map(|(run, m)| format!("{run} ({}× smaller, median r·l/(u·δ) = {})", readable(1.0 / m, 2), readable(*m, 3))).collect::<Vec<_>>().join(", "), self.advice(), self.others())]
+#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}", format!("{} of the {} runs", self.runs.len(), self.of), self.runs.iter().map(|(run, m)| format!("{run} ({}× smaller, median r·l/(u·δ) = {})", readable(1.0 / m, 2), readable(*m, 3))).collect::<Vec<_>>().join(", "), self.advice())]
 pub struct SteerInDegreesRuns {
     /// Each run that reads so (its file) and its median r·l/(u·δ).
     pub runs: Vec<(String, f64)>,
@@ -41,21 +41,41 @@ pub enum OtherRun {
 }
 
 impl SteerInDegreesRuns {
-    /// What to do: a fix in the files of the runs in degrees (when all
-    /// runs are, the run's own refusal advises `degrees`).
+    /// Every other run of the campaign in one clause, counted once ("the
+    /// other 7 runs: 6 read in radians by their held steer …; sweep.csv
+    /// reads …"), then what to do: a fix in the files of the runs in
+    /// degrees (when all runs are, the run's own refusal advises
+    /// `degrees`). "1 run does not (their steer …)" and a second count
+    /// after it read as two tallies of one campaign.
     fn advice(&self) -> String {
-        format!(
-            "{} not (their steer, judged against their yaw rate, is in radians, as it should be), and `degrees = [\"steer\"]` under [runs] would convert every run's steer, theirs too (a campaign has no per-run unit): convert the steer of {} to radians in {} (× π/180 = 0.0174533 from degrees), or leave {} out of the campaign",
-            crate::format::plural(self.radians, "run does", "runs do"),
-            if self.runs.len() == 1 { "this run" } else { "these runs" },
-            if self.runs.len() == 1 { "its file" } else { "their files" },
-            if self.runs.len() == 1 { "it" } else { "them" },
-        )
+        let one = self.runs.len() == 1;
+        let rest = self.radians + self.others.len();
+        let fix = format!(
+            "`degrees = [\"steer\"]` under [runs] would convert every run's steer, those in radians too (a campaign has no per-run unit): convert the steer of {} to radians in {} (× π/180 = 0.0174533 from degrees), or leave {} out of the campaign",
+            if one { "this run" } else { "these runs" },
+            if one { "its file" } else { "their files" },
+            if one { "it" } else { "them" },
+        );
+        if rest == 0 {
+            return fix;
+        }
+        let held = (self.radians > 0).then(|| match self.radians {
+            1 => "1 reads in radians by its held steer against its yaw rate, as it should"
+                .to_string(),
+            n => format!(
+                "{n} read in radians by their held steer against their yaw rate, as they should"
+            ),
+        });
+        let other = match rest {
+            1 => "the other run".to_string(),
+            n => format!("the other {n} runs"),
+        };
+        let said: Vec<String> = held.into_iter().chain(self.others()).collect();
+        format!("{other}: {}. {fix}", said.join("; "))
     }
 
-    /// The other runs by name, so that every run of the campaign is
-    /// accounted for (empty where there is none).
-    fn others(&self) -> String {
+    /// The other runs by name, by what their steer was judged by.
+    fn others(&self) -> Vec<String> {
         let group = |kind: OtherRun, one: &str, many: &str| {
             let names: Vec<&str> = self
                 .others
@@ -66,7 +86,7 @@ impl SteerInDegreesRuns {
             let verb = if names.len() == 1 { one } else { many };
             (!names.is_empty()).then(|| format!("{} {verb}", names.join(", ")))
         };
-        let said: Vec<String> = [
+        [
             group(
                 OtherRun::Swept,
                 "reads in radians by its swept steer against the lagged yaw rate",
@@ -85,15 +105,7 @@ impl SteerInDegreesRuns {
         ]
         .into_iter()
         .flatten()
-        .collect();
-        let other = match self.others.len() {
-            1 => "the other run".to_string(),
-            n => format!("the other {n} runs"),
-        };
-        match said.is_empty() {
-            true => String::new(),
-            false => format!("; {other}: {}", said.join("; ")),
-        }
+        .collect()
     }
 }
 
@@ -111,9 +123,8 @@ mod tests {
         };
         let s = e.to_string();
         assert!(s.contains("in 1 of the 8 runs: step.csv"), "{s}");
-        assert!(s.contains("6 runs do not"), "{s}");
         assert!(
-            s.ends_with("; the other run: sweep.csv reads in radians by its swept steer against the lagged yaw rate"),
+            s.contains("? the other 7 runs: 6 read in radians by their held steer against their yaw rate, as they should; sweep.csv reads in radians by its swept steer against the lagged yaw rate. `degrees"),
             "{s}"
         );
         let none = SteerInDegreesRuns {

@@ -90,6 +90,14 @@ pub fn campaigns(dir: &Path) -> Result<(Vec<PathBuf>, Vec<String>), Error> {
     out.sort();
     let mut skipped: Vec<String> = skipped.iter().map(|p| name_of(p)).collect();
     skipped.sort();
+    // A sub-folder holding a campaign file's runs is that campaign's data,
+    // not a campaign that fails for want of vehicle.toml.
+    let held = runs_holders(&out);
+    out.retain(|p| !held.iter().any(|(folder, _)| folder == p));
+    skipped.extend(
+        held.iter()
+            .map(|(folder, by)| format!("{} (the runs of {by})", name_of(folder))),
+    );
     if out.is_empty() {
         return Err(InputError::NoCampaign {
             path: dir.to_path_buf(),
@@ -112,12 +120,33 @@ pub fn campaigns(dir: &Path) -> Result<(Vec<PathBuf>, Vec<String>), Error> {
     Ok((out, skipped))
 }
 
+/// The sub-folders of `entries` without a `vehicle.toml` that hold the
+/// runs folder a campaign file of `entries` names (`[runs] dir`), each
+/// with that file's name: a batch of `campA.toml` and `dataA/runs` read
+/// `dataA` as a second campaign, failed.
+fn runs_holders(entries: &[PathBuf]) -> Vec<(PathBuf, String)> {
+    let runs: Vec<(PathBuf, String)> = entries
+        .iter()
+        .filter(|p| p.is_file())
+        .filter_map(|p| Some((PathBuf::from(runs_folder_of(p)?), name_of(p))))
+        .collect();
+    entries
+        .iter()
+        .filter(|p| p.is_dir() && !p.join("vehicle.toml").is_file())
+        .filter_map(|p| {
+            let folder = p.canonicalize().ok()?;
+            let (_, by) = runs.iter().find(|(r, _)| r.starts_with(&folder))?;
+            Some((p.clone(), by.clone()))
+        })
+        .collect()
+}
+
 /// The note of a batch folder's entries that are not campaigns (None:
 /// every entry is one).
 fn skipped_note(skipped: &[String]) -> Option<String> {
     (!skipped.is_empty()).then(|| {
         format!(
-            "{} of the batch folder skipped, not a campaign (neither a sub-folder nor a .toml file): {}",
+            "{} of the batch folder skipped, not a campaign (neither a sub-folder nor a .toml file, or a campaign file's runs): {}",
             plural(skipped.len(), "entry", "entries"),
             skipped.join(", ")
         )

@@ -509,8 +509,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  yaw-rate overshoot       {:>10} %",
             match m.yaw_rate_overshoot {
                 Some(percent) => format!("{percent:.2}"),
-                // Withheld: a warning says why; no bound is known.
-                None if m.yaw_rate_peak_unmeasured => "—".into(),
+                // Withheld, or beyond a spin's: a warning says why.
+                None if m.yaw_rate_peak_unmeasured || m.overshoot_unresolved() => "—".into(),
                 None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
             }
         ),
@@ -545,7 +545,7 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         ));
     }
     // A withheld peak's warning says why; it is no overshoot below a bound.
-    if m.yaw_rate_peak_time.is_none() && !m.yaw_rate_peak_unmeasured {
+    if m.yaw_rate_peak_time.is_none() && !m.yaw_rate_peak_unmeasured && !m.overshoot_unresolved() {
         let why = match m.yaw_rate_filter_ringing {
             0.0 => "the larger of min_overshoot and what the noise and the steady scatter allow".to_string(),
             // The filter's own overshoot on the steer step: a maximum

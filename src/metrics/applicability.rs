@@ -237,6 +237,10 @@ fn sliding_words(
             beta.to_degrees(),
             kinematic_turn(share, g.words(), u, m.steer_step)
         ),
+        _ if beta.abs() > std::f64::consts::FRAC_PI_2 => format!(
+            "the steady sideslip is {:.1}°, past a quarter turn: the car has spun, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+            beta.to_degrees()
+        ),
         _ => format!(
             "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
             beta.to_degrees()
@@ -289,6 +293,12 @@ pub fn applicability_with_grip(
     }
     if let Some(percent) = m.yaw_rate_overshoot.filter(|p| *p > SPIN_OVERSHOOT) {
         out.push(overshoot_words(percent, speed, overshoot));
+    }
+    if m.overshoot_unresolved() {
+        out.push(format!(
+            "no yaw-rate overshoot is measured: the yaw rate scatters over the steady window so far that a maximum would have to stand {} % above the steady value to be told from it, beyond the {SPIN_OVERSHOOT:.0} % of a spin; the run cannot say whether it overshoots, and its peak time, overshoot and TB are left out",
+            crate::format::rounded(m.yaw_rate_peak_threshold, 3)
+        ));
     }
     out
 }

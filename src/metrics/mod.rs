@@ -310,6 +310,19 @@ pub struct StepMetrics {
 pub(crate) const MIN_STEP: f64 = 1.745e-4;
 
 impl StepMetrics {
+    /// No overshoot can be told from this run: no maximum stands above its
+    /// peak threshold, and that threshold (the noise and the steady
+    /// window's scatter, doubled) lies beyond
+    /// [`applicability::SPIN_OVERSHOOT`] — a maximum would have to be more
+    /// than twice the steady value to be seen, so "no overshoot below it"
+    /// says nothing (a spinning car's yaw rate scattered by 310 % of its
+    /// step and read "< 619 %").
+    pub fn overshoot_unresolved(&self) -> bool {
+        self.yaw_rate_overshoot.is_none()
+            && !self.yaw_rate_peak_unmeasured
+            && self.yaw_rate_peak_threshold > applicability::SPIN_OVERSHOOT
+    }
+
     /// The warning of a response that has not settled in the steady window
     /// (`settled` false), for the report's `warnings`: in the typed report,
     /// so that `--json`, `metrics.json` and the terminal say the same.

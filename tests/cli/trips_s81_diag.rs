@@ -123,7 +123,8 @@ fn one_run_in_degrees_is_named_and_the_key_said_to_convert_all() {
     assert!(e.contains("step_100kph_2ms2.csv (62× smaller"), "{e}");
     assert!(e.contains("step_100kph_6ms2.csv (65× smaller"), "{e}");
     assert!(
-        e.contains("5 runs do not (their steer, judged against their yaw rate, is in radians, as it should be), and `degrees = [\"steer\"]` under [runs] would convert every run's steer, theirs too"),
+        e.contains("5 read in radians by their held steer against their yaw rate, as they should")
+            && e.contains("`degrees = [\"steer\"]` under [runs] would convert every run's steer, those in radians too"),
         "{e}"
     );
     assert!(

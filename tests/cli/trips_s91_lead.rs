@@ -51,7 +51,7 @@ fn runs_in_degrees_among_runs_in_radians_are_said_beside_the_other_refusals() {
             // The short run was refused before its steer was judged, and
             // the sweep holds no steer to judge (fresh-eyes round 19 read
             // "The other 7 runs do not" here).
-            && lines[2].contains("4 runs do not (their steer, judged against their yaw rate, is in radians"),
+            && lines[2].contains("the other 6 runs: 4 read in radians by their held steer against their yaw rate, as they should; "),
         "{e}"
     );
     assert!(!e.contains("(the first of"), "{e}");

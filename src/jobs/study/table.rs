@@ -116,7 +116,12 @@ fn empty_cells(m: &StepMetrics) -> String {
         return String::new();
     }
     let mut why = Vec::new();
-    if m.yaw_rate_peak_time.is_none() {
+    if m.overshoot_unresolved() {
+        why.push(format!(
+            "no overshoot measured: a yaw-rate maximum would have to stand {} % above the steady value to be told from its scatter, beyond a spin's 100 %",
+            crate::format::rounded(m.yaw_rate_peak_threshold, 3)
+        ));
+    } else if m.yaw_rate_peak_time.is_none() {
         why.push(format!(
             "no yaw-rate maximum stands more than {} % above the steady value (the peak threshold, yaw_rate_peak_threshold): an overshoot below it, not a measured 0",
             crate::format::rounded(m.yaw_rate_peak_threshold, 3)

@@ -94,6 +94,14 @@ impl MeasuredDifference {
             ),
             false => String::new(),
         };
+        // Equal to the last digit everywhere: no line holds a largest.
+        if self.largest == 0.0 {
+            return format!(
+                "`{}` model − measured over {}: equal at every point (no difference)",
+                self.channel,
+                crate::format::plural(self.points, "point", "points"),
+            );
+        }
         format!(
             "`{}` model − measured over {}: mean {} {unit}, RMS {} {unit}{share}, largest {} {unit} at line {}",
             self.channel,

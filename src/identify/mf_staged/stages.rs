@@ -189,8 +189,9 @@ fn stage_fit(
     let first = continued(problem, first, bounds, run);
     // Ended near-singular from the data's estimates: the template's
     // values tried too (`template_start.rs`).
+    let with = (run.start, run.template, run.max_iterations);
     let (first, from, before) =
-        super::template_start::from_template(problem, free, first, bounds, run);
+        super::template_start::from_template(problem, free, first, bounds, with);
     let (first, starts) = (
         continued(problem, first, bounds, run),
         from.unwrap_or(starts),

@@ -15,24 +15,25 @@
 use super::params::Need;
 use super::problem::StageProblem;
 use super::release::released_fit;
-use super::stages::StageRun;
 use super::start::template_value;
 use super::uncertainty::uncertainty;
 use super::StartScheme;
 use crate::optim::local::LocalResult;
+use crate::tyre::mf::MagicFormula;
 
 /// The better of `first` (the stage's fit from the data's estimates) and
 /// a fit of `problem` from the template's values within `bounds`, where
-/// `first` ends near-singular (module notes): the result, the starts of
-/// the fit kept (`None`: the first's) and what was said.
+/// `first` ends near-singular (module notes), for a stage of `start` with
+/// `template` and an iteration cap of `iterations`: the result, the
+/// starts of the fit kept (`None`: the first's) and what was said.
 pub(super) fn from_template(
     problem: &StageProblem,
     free: &[(&'static str, Need)],
     first: LocalResult,
     bounds: &[(f64, f64)],
-    run: &StageRun,
+    (start, template, iterations): (StartScheme, Option<&MagicFormula>, usize),
 ) -> (LocalResult, Option<Vec<f64>>, Option<String>) {
-    let Some(t) = run.template.filter(|_| run.start == StartScheme::Data) else {
+    let Some(t) = template.filter(|_| start == StartScheme::Data) else {
         return (first, None, None);
     };
     let u = uncertainty(problem, &first.params);
@@ -49,7 +50,7 @@ pub(super) fn from_template(
             template_value(t, n).map_or(*p, |v| v.clamp(lo.min(*hi), hi.max(*lo)))
         })
         .collect();
-    let second = released_fit(problem, free, &starts, bounds, run.max_iterations);
+    let second = released_fit(problem, free, &starts, bounds, iterations);
     let sigma_of = |p: &[f64]| problem.sigma_percent(p);
     let (was, now) = (sigma_of(&first.params), sigma_of(&second.params));
     let better = second.cost.is_finite() && second.cost < first.cost;

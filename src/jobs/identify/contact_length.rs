@@ -7,7 +7,6 @@
 //! Not held: the length is the aligning fit's one parameter, and a value
 //! held would fit nothing. Units: m.
 
-use super::notes::Note;
 use crate::format::{fixed, readable};
 use crate::tyre::Tyre;
 
@@ -21,7 +20,7 @@ pub(crate) const TYRE_CONTACT_LENGTHS: (f64, f64) = (0.03, 0.3);
 /// aligning moment at `sigma` % (its fit's σ), lies outside
 /// [`TYRE_CONTACT_LENGTHS`] (`None`: another model, or a length a tyre
 /// has).
-pub(crate) fn size_warning(t: &Tyre, sigma: f64) -> Option<Note> {
+pub(crate) fn size_warning(t: &Tyre, sigma: f64) -> Option<String> {
     let Tyre::Gim(g) = t else {
         return None;
     };
@@ -31,11 +30,11 @@ pub(crate) fn size_warning(t: &Tyre, sigma: f64) -> Option<Note> {
         return None;
     }
     let side = if l > hi { "longer" } else { "shorter" };
-    Some(Note::warned(format!(
+    Some(format!(
         "contact_length = {} m is {side} than any tyre's contact patch ({lo}–{hi} m: a bicycle tyre's about 0.04 m, a car tyre's 0.1–0.25 m, a truck tyre's about 0.3 m): it is what the aligning moment's curve asked of the gim model's, not the tyre's (σ {} %): the aligning moment data are not a gim tyre's shape, or their mz channel is weak or offset; the written file's aligning moment and pneumatic trail carry it, so do not take its length or its trail as the tyre's",
         readable(l, 4),
         fixed(sigma, 1)
-    )))
+    ))
 }
 
 #[cfg(test)]
@@ -46,24 +45,18 @@ mod tests {
     fn a_contact_length_no_tyre_has_is_warned_of_and_a_car_tyres_is_not() {
         let long = Tyre::Gim(crate::tyre::Gim::new(40_000.0, 0.4011, 1.5));
         let note = size_warning(&long, 41.1).expect("0.40 m is said");
-        assert!(note.warning);
         assert!(
-            note.text.starts_with(
+            note.starts_with(
                 "contact_length = 0.4011 m is longer than any tyre's contact patch (0.03–0.3 m"
             ),
-            "{}",
-            note.text
+            "{note}"
         );
-        assert!(note.text.contains("(σ 41.1 %)"), "{}", note.text);
+        assert!(note.contains("(σ 41.1 %)"), "{note}");
         let car = Tyre::Gim(crate::tyre::Gim::new(40_000.0, 0.18, 1.0));
         assert!(size_warning(&car, 5.0).is_none());
         let short = Tyre::Gim(crate::tyre::Gim::new(40_000.0, 0.01, 1.0));
         let note = size_warning(&short, 5.0).expect("1 cm is said");
-        assert!(
-            note.text.contains("is shorter than any tyre's"),
-            "{}",
-            note.text
-        );
+        assert!(note.contains("is shorter than any tyre's"), "{note}");
         let other = Tyre::Linear(crate::tyre::Linear::new(40_000.0));
         assert!(size_warning(&other, 5.0).is_none());
     }

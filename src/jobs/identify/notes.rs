@@ -78,10 +78,8 @@ pub(crate) fn later_fit_notes(r: &SwarmReport, f: &Fit) -> Vec<Note> {
         })
         .collect();
     if f.channel == Channel::AligningMoment {
-        notes.extend(super::contact_length::size_warning(
-            &r.tyre,
-            f.sigma_percent,
-        ));
+        let length = super::contact_length::size_warning(&r.tyre, f.sigma_percent);
+        notes.extend(length.map(Note::warned));
     }
     notes.extend(sigma_notes(f, &r.level_names()));
     notes

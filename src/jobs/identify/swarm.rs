@@ -91,10 +91,6 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         _ => &d.lateral,
     };
     ranges::set_first_sample_slips(&mut r, first_data);
-    if let Some(w) = r.linear_window.as_mut() {
-        // The window's line says how far its bins' samples reach.
-        w.samples_reach_deg = r.sample_slips[0].map(|(lo, hi)| lo.abs().max(hi.abs()).to_degrees());
-    }
     let inputs = further::Inputs {
         first,
         has_mz: d.data.mz.is_some(),

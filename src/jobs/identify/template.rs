@@ -11,9 +11,20 @@ use crate::io::tir::TirDocument;
 use crate::tyre::mf::MagicFormula;
 use std::path::Path;
 
+/// The template given (`None`: no `--template`): its document and its
+/// tyre, or the refusal of a file of another kind.
+pub(super) fn read_given(
+    path: Option<&Path>,
+) -> Result<(Option<TirDocument>, Option<MagicFormula>), InputError> {
+    match path.map(read).transpose()? {
+        Some((doc, tyre)) => Ok((Some(doc), Some(tyre))),
+        None => Ok((None, None)),
+    }
+}
+
 /// The template at `path`: its document and its tyre, or the refusal of
 /// a file of another kind.
-pub(super) fn read(path: &Path) -> Result<(TirDocument, MagicFormula), InputError> {
+fn read(path: &Path) -> Result<(TirDocument, MagicFormula), InputError> {
     let named =
         |e: InputError| crate::io::file_kind::not_a_tir(path, Wanted::Template).unwrap_or(e);
     let doc = TirDocument::read(path).map_err(named)?;

@@ -10,8 +10,10 @@
 //! header, with the file's own line numbers; and a template's `PKY1`,
 //! `PKY4` on MFeval's branch, said as read.
 
+use super::StartArg;
 use crate::error::{Error, FitError};
 use crate::format::{exact, readable};
+use crate::identify::mf_staged::Stage;
 use crate::jobs::tyre_eval::of_text;
 use crate::tyre::mf::MagicFormula;
 use std::path::Path;
@@ -30,8 +32,8 @@ pub(super) fn with_file_checks(path: &Path, head: &str, body: &str) -> (String, 
 }
 
 /// Refuses the `.tir` `text` whose pure Fx the paper's scheme fitted
-/// (`paper`: `--start paper`, the stage run) when its longitudinal slip
-/// stiffness turns negative
+/// (`start` paper and the stage among those `fitted`) when its
+/// longitudinal slip stiffness turns negative
 /// inside its own load range (the data's): the scheme has no physical
 /// bounds, and on noise-free MF data it stopped at `PKX1` 1.59, `PKX2`
 /// −3.99, negative from 5597 N of the data's 6000 N, the pure Fx stage
@@ -40,7 +42,13 @@ pub(super) fn with_file_checks(path: &Path, head: &str, body: &str) -> (String, 
 /// the words name. The other schemes keep `PKX1` in its box, and a
 /// template's own coefficients carried past its range stay a warning (the
 /// user's tyre, not this fit's).
-pub(super) fn refuse_paper_turn(path: &Path, text: &str, paper: bool) -> Result<(), Error> {
+pub(super) fn refuse_paper_turn(
+    start: StartArg,
+    path: &Path,
+    text: &str,
+    fitted: &[Stage],
+) -> Result<(), Error> {
+    let paper = start == StartArg::Paper && fitted.contains(&Stage::PureFx);
     let Some(t) = of_text(path, text).longitudinal_turn.filter(|_| paper) else {
         return Ok(());
     };

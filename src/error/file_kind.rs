@@ -127,6 +127,13 @@ pub enum Wanted {
     Sweep,
     /// A stiffness study (`study`'s).
     Study,
+    /// A Magic Formula `.tir` whose coefficients start the staged fit
+    /// (`identify --template`).
+    Template,
+    /// A Magic Formula property file, which a `.tir` name promises (a
+    /// TOML tyre saved under that name is read as one and fails at its
+    /// first line).
+    TirContent,
 }
 
 impl Wanted {
@@ -138,6 +145,8 @@ impl Wanted {
             Wanted::Points => "the points `handling tyre-eval <tyre> <points>` evaluates (a CSV with `fz`, `kappa`, `alpha`, `camber`, `speed`)",
             Wanted::Sweep => "an equilibrium sweep (a TOML file with [vehicle], [tyres] and [sweep]), which `handling equilibria` reads",
             Wanted::Study => "a stiffness study (a TOML file with [vehicle], [tyres], [manoeuvre] and [stiffness] or [rbf]), which `handling study` reads",
+            Wanted::Template => "a Magic Formula tyre property file (.tir, with [MODEL] and FITTYP), which `handling identify --template` takes: its coefficients start the staged fit and its layout is the written file's",
+            Wanted::TirContent => "a Magic Formula tyre property file (.tir, with [MODEL] and FITTYP), which its .tir name promises: rename it .toml, and it is read as the tyre file it is",
         }
     }
 }

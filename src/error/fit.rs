@@ -172,6 +172,13 @@ pub enum FitError {
         /// The coefficient, its value and the limit.
         source: super::ParamError,
     },
+    /// The paper's unbounded scheme took a longitudinal slip stiffness
+    /// negative inside the loads fitted (`jobs/identify/written_checks.rs`).
+    #[error("{turn}; no file is written: a tyre whose force opposes its slip inside the loads it was fitted on is no tyre (the default start, `--start data`, keeps each coefficient within physical bounds)")]
+    PaperTurn {
+        /// Where and how the stiffness turns, said.
+        turn: String,
+    },
     /// Rig data with a lateral force and no slip angle (`alpha` 0 in
     /// every sample) and no longitudinal sweep to fit instead: every model
     /// refuses it, as a fit there returns its start values.

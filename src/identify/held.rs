@@ -353,7 +353,7 @@ mod tests {
         };
         assert_eq!(
             held.said("c9"),
-            "not determined by these data: fitted free it was -0.1947 ± 0.317 (one standard error of it alone moves the fit by 10.7 % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at -0.828, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, where the data would not put it), and the rest refitted; to hold it at a value of your own, give --hold c9=VALUE"
+            "not determined by these data: fitted free it was -0.1947 ± 0.317 (one standard error of it alone moves the fit by 10.7 % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at -0.828, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, by its linearisation), and the rest refitted; to hold it at a value of your own, give --hold c9=VALUE"
         );
         let json = serde_json::to_value(held).unwrap();
         assert!(

@@ -466,6 +466,7 @@ fn spare(
         clamp_starts: false,
         tie: TieBreak::LeastDetermined,
         guarded: true,
+        stated_first: false,
     };
     let ways = HoldWays {
         without: |k: usize, value: f64| problem.holding(p, k, value),

@@ -34,8 +34,14 @@ pub(crate) fn recognise(path: &Path) -> Option<FileKind> {
         .lines()
         .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
         .unwrap_or("");
-    if ext == "tir" || text.lines().any(|l| l.trim_start().starts_with("[MODEL]")) {
+    if text.lines().any(|l| l.trim_start().starts_with("[MODEL]")) {
         return Some(FileKind::Tir);
+    }
+    // A `.tir` name on a file without [MODEL] that reads as one of the
+    // project's TOML files (a TOML tyre saved as `.tir`) is that file.
+    if ext == "tir" {
+        let toml = text.parse::<toml::Table>().ok();
+        return Some(toml.and_then(|t| toml_kind(&t)).unwrap_or(FileKind::Tir));
     }
     if ext == "json" || first.trim_start().starts_with('{') {
         return Some(FileKind::Json);
@@ -179,6 +185,16 @@ pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
 pub(crate) fn not_this_toml(path: &Path, wanted: Wanted, own: &[FileKind]) -> Option<InputError> {
     let kind = recognise(path)?;
     (!own.contains(&kind)).then(|| refusal(path, kind, wanted))
+}
+
+/// The refusal of the file at `path` given as a Magic Formula `.tir`
+/// (`wanted`: `identify --template`'s, or any reader's of a `.tir` name)
+/// that failed to read as one, where it is plainly another kind (a TOML
+/// tyre, a scenario, a rig CSV): said as what it is and which command
+/// reads it, in place of the `.tir` reader's "missing key FITTYP";
+/// `None` where it may be a `.tir` with a slip (its reader's error stands).
+pub(crate) fn not_a_tir(path: &Path, wanted: Wanted) -> Option<InputError> {
+    not_this_toml(path, wanted, &[FileKind::Tir])
 }
 
 /// The refusal of the file at `path`, of `kind`, where `wanted` was

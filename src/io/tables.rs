@@ -80,8 +80,12 @@ pub fn load_tyre_with_ranges(path: &Path) -> Result<(Tyre, Option<FittedRanges>)
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("tir"))
     {
-        let tyre = Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?));
-        return Ok((tyre, None));
+        // A TOML tyre saved as `.tir` is named as one, not read as a
+        // `.tir` that fails at its first line.
+        let tir = super::tir::load_tir(path).map_err(|e| {
+            super::file_kind::not_a_tir(path, crate::error::Wanted::TirContent).unwrap_or(e)
+        })?;
+        return Ok((Tyre::MagicFormula(Box::new(tir)), None));
     }
     let (src, ranges) = super::fitted_ranges::split(&TomlSource::read(path)?)?;
     let tyre: Tyre = src.parse()?;

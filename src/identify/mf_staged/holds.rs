@@ -48,8 +48,8 @@ use super::problem::StageProblem;
 use super::uncertainty::{uncertainty, Uncertainty, ABSURD_EFFECT_PERCENT};
 use crate::format::{exact, readable};
 use crate::identify::spare::{
-    candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
-    TieBreak, Tried,
+    candidates, held_at, held_at_tried, lean_clause, spare, standard_errors_away, HoldFit,
+    HoldWays, Spared, TieBreak, Tried,
 };
 use crate::optim::bounded::BoundedLm;
 use serde::Serialize;
@@ -242,7 +242,7 @@ impl fmt::Display for HoldReason {
                  channel's RMS, which the other parameters' trade-off undoes): {}",
                 readable(*fitted, 5),
                 readable(*se, 4),
-                held_at(
+                held_at_tried(
                     &format!("the {source}"),
                     *stated,
                     *held,
@@ -443,6 +443,7 @@ pub(super) fn hold_undetermined(
             clamp_starts: true,
             tie: TieBreak::LatestInOrder,
             guarded: true,
+            stated_first: true,
         };
         let Spared {
             kept,

@@ -101,7 +101,7 @@ fn a_held_line_says_the_value_held_and_the_stated_one() {
         }
     };
     let far = rule(0.084).said("QDZ1");
-    assert!(far.ends_with("held at 0.00534, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit, where the data would not put it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
+    assert!(far.ends_with("held at 0.00534, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit: held there first, with the rest refitted, it raised the cost past what a hold may, so the data reject it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
     let near = rule(0.004);
     assert_eq!(near.said("QDZ1"), near.to_string());
     assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 standard errors the data allow)"), "{near}");

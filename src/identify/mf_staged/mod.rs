@@ -114,6 +114,7 @@ mod sigma;
 mod spread;
 mod stages;
 mod start;
+mod template_start;
 mod uncertainty;
 
 pub use book_defaults::pacejka_book_default;

@@ -187,9 +187,18 @@ fn stage_fit(
     }
     let first = released_fit(problem, free, &starts, bounds, run.max_iterations);
     let first = continued(problem, first, bounds, run);
+    // Ended near-singular from the data's estimates: the template's
+    // values tried too (`template_start.rs`).
+    let with = (run.start, run.template, run.max_iterations);
+    let (first, from, before) =
+        super::template_start::from_template(problem, free, first, bounds, with);
+    let (first, starts) = (
+        continued(problem, first, bounds, run),
+        from.unwrap_or(starts),
+    );
     let Some(k) = (0..starts.len()).find(|&k| at_bound(first.params[k], bounds[k]).is_some())
     else {
-        return (first, starts, None);
+        return (first, starts, before);
     };
     let name = problem.names[k];
     let template = run.template.and_then(|t| template_value(t, name));
@@ -201,7 +210,7 @@ fn stage_fit(
         (bounds, stated),
         run.max_iterations,
     ) else {
-        return (first, starts, None);
+        return (first, starts, before);
     };
     let second = continued(problem, second, bounds, run);
     let evaluations = first.evaluations + second.evaluations;
@@ -222,7 +231,7 @@ fn stage_fit(
                 ..second
             },
             from,
-            Some(said),
+            Some(both(before, said)),
         )
     } else {
         (
@@ -231,9 +240,14 @@ fn stage_fit(
                 ..first
             },
             starts,
-            Some(said),
+            Some(both(before, said)),
         )
     }
+}
+
+/// The second starts' words, the template's first (`None`: only `said`).
+fn both(before: Option<String>, said: String) -> String {
+    before.map_or_else(|| said.clone(), |b| format!("{b}; {said}"))
 }
 
 /// Iterations per free parameter a stage's last step may take where it

@@ -37,25 +37,34 @@ pub(crate) fn own_values_note(r: &SwarmReport) -> Option<String> {
     })
 }
 
-/// A condition's own load `fz` as the report's `curves[].fz` writes it,
-/// with its level's name where that differs (`1639.7 N (1656 N level)`),
-/// else the level's name alone: the figure's key of the line drawn at it.
+/// A condition's own load `fz` to 0.1 N ([`own_load_text`]), with its
+/// level's name where that differs (`1639.7 N (1656 N level)`), else the
+/// level's name alone: the figure's key of the line drawn at it.
 pub(crate) fn own_load(fz: f64, names: &LevelNames) -> String {
     let level = names.load(fz);
     if Variable::Load.display(fz) == level {
         level
     } else {
-        format!("{fz} N ({level} level)")
+        format!("{} ({level} level)", own_load_text(fz))
     }
 }
 
+/// A condition's own load, N, to 0.1 N whatever its digits: the report's
+/// `curves[].fz` is the median of the samples fitted, which has as many
+/// digits as the samples do or one more, and said as written one key read
+/// `524 N`, `1639.7 N`, `2736.55 N`, three rules for one quantity.
+fn own_load_text(fz: f64) -> String {
+    format!("{} N", crate::format::fixed(fz, 1))
+}
+
 /// The words of `c`'s values that its level is named otherwise: the load
-/// as the report writes it (`1639.7 N in the 1656 N level`), a camber or
-/// pressure as the terminal spells it.
+/// to 0.1 N (`1639.7 N in the 1656 N level`), a camber or pressure as the
+/// terminal spells it.
 fn differing(c: &CurveReport, names: &LevelNames) -> Vec<String> {
     let mut out = Vec::new();
     if Variable::Load.display(c.fz) != names.load(c.fz) {
-        out.push(format!("{} N in the {} level", c.fz, names.load(c.fz)));
+        let own = own_load_text(c.fz);
+        out.push(format!("{own} in the {} level", names.load(c.fz)));
     }
     let mut other = |variable: Variable, v: f64| {
         let (own, level) = (variable.display(v), names.name(variable, v));
@@ -104,5 +113,9 @@ mod tests {
         // The figure's key: the report's number beside the level's name.
         assert_eq!(own_load(1639.7, &names), "1639.7 N (1656 N level)");
         assert_eq!(own_load(1656.0, &names), "1656 N");
+        // One rule for every load of a key: 0.1 N (the Hoosier file's
+        // loads once read 524 N, 1639.7 N and 2736.55 N in one key).
+        assert_eq!(own_load_text(524.0), "524.0 N");
+        assert_eq!(own_load_text(2736.57), "2736.6 N");
     }
 }

@@ -72,6 +72,11 @@ pub struct LinearWindow {
     /// Whether the points beyond the window depart from its line (module
     /// notes): the window cut, or not needed.
     pub beyond: Beyond,
+    /// The largest |α| of the samples of the points fitted, degrees, the
+    /// written `[fitted_ranges]`' (`None`: not known): past
+    /// `max_abs_alpha_deg` by up to half a bin, as a bin within the window
+    /// is judged by its centre and its samples spread about it.
+    pub samples_reach_deg: Option<f64>,
 }
 
 /// What the points beyond a linear fit's window do (module notes).
@@ -154,12 +159,13 @@ impl LinearWindow {
                 self.points_fitted
             ),
             Beyond::Saturates { departure_percent, conditions: n, judged } => format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out, where the force saturates: in {n} of the {} judged they depart from the window's line by up to {} % RMS, beyond its noise{conditions})",
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out, where the force saturates: in {n} of the {} judged they depart from the window's line by up to {} % RMS, beyond its noise{conditions}){}",
                 self.max_abs_alpha_deg,
                 crate::format::plural(self.points_fitted, "point", "points"),
                 crate::format::plural(self.points_left_out, "point", "points"),
                 crate::format::plural(judged, "condition", "conditions"),
-                crate::format::readable(departure_percent, 2)
+                crate::format::readable(departure_percent, 2),
+                self.reach()
             ),
             // Nothing left out: the window is not needed, said as where the
             // points beyond it follow the line (one file said "fitted to
@@ -169,17 +175,34 @@ impl LinearWindow {
                 self.points_fitted
             ),
             Beyond::NotJudged | Beyond::NoPointPast => format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out{}{conditions})",
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({}; {} with larger |alpha| left out{}{conditions}){}",
                 self.max_abs_alpha_deg,
                 crate::format::plural(self.points_fitted, "point", "points"),
                 crate::format::plural(self.points_left_out, "point", "points"),
                 match self.beyond {
                     Beyond::NotJudged => format!(": no condition has {JUDGED_POINTS} points within the window to tell whether the force departs from its line beyond it"),
                     _ => String::new(),
-                }
+                },
+                self.reach()
             ),
         };
         vec![window, format!("{mark} {trail}")]
+    }
+
+    /// Where the samples of the points fitted reach past the window, the
+    /// clause that says so: the window judges a slip bin by its centre
+    /// (`in_window`), and its samples spread half a bin about it, so the
+    /// written `[fitted_ranges]` reach past the window's |α| (2.11° on the
+    /// Hoosier file, where the line said "<= 2 deg only" alone). Empty
+    /// where they do not.
+    fn reach(&self) -> String {
+        match self.samples_reach_deg {
+            Some(r) if r > self.max_abs_alpha_deg + SLIP_ROUNDING.to_degrees() => format!(
+                "; a slip-angle bin is in the window by its centre, and the samples of those fitted reach |alpha| = {} deg, the [fitted_ranges] written",
+                crate::format::fixed(r, 2)
+            ),
+            _ => String::new(),
+        }
     }
 }
 
@@ -202,6 +225,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
             trail_points: 0,
             loads_left_out: Vec::new(),
             beyond,
+            samples_reach_deg: None,
         };
         return (conditions, w);
     }
@@ -222,6 +246,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
         trail_points: 0,
         loads_left_out: left.iter().map(|c| c.fz).collect(),
         beyond,
+        samples_reach_deg: None,
     };
     (kept, w)
 }
@@ -372,6 +397,37 @@ pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The window line says how far its bins' samples reach where they
+    /// pass ±2° (the Hoosier file's 2.11°), and nothing where they do not.
+    #[test]
+    fn a_window_line_says_how_far_its_bins_samples_reach() {
+        let mut w = LinearWindow {
+            max_abs_alpha_deg: WINDOW_DEG,
+            points_fitted: 17,
+            points_left_out: 62,
+            pneumatic_trail: None,
+            trail_sigma_percent: None,
+            trail_points: 0,
+            loads_left_out: Vec::new(),
+            beyond: Beyond::NotJudged,
+            samples_reach_deg: Some(2.112),
+        };
+        let line = &w.lines(" ")[0];
+        assert!(
+            line.starts_with(
+                "  linear window: fitted to |alpha| <= 2 deg only (17 points; 62 points"
+            ),
+            "{line}"
+        );
+        assert!(line.ends_with("; a slip-angle bin is in the window by its centre, and the samples of those fitted reach |alpha| = 2.11 deg, the [fitted_ranges] written"), "{line}");
+        w.samples_reach_deg = Some(1.99);
+        assert!(
+            w.lines(" ")[0].ends_with("beyond it)"),
+            "{}",
+            w.lines(" ")[0]
+        );
+    }
 
     /// Symmetric about zero slip: the 0.25° bins at −2° and +2° both in
     /// wherever their means lie in them, the next ones out; unthinned, a

@@ -17,6 +17,7 @@ mod curvature_hold;
 pub use curvature_hold::CurvatureHeld;
 mod command;
 mod condition_values;
+mod contact_length;
 mod local_scope;
 pub use command::{RecordedHold, RecordedOptions};
 mod level_names;
@@ -52,6 +53,7 @@ pub use unused_columns::Measured;
 mod fit_key;
 mod staged_figure;
 mod staged_run;
+mod template;
 mod template_version;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};

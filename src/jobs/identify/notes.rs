@@ -15,7 +15,7 @@ use super::level_names::LevelNames;
 use super::SwarmReport;
 use crate::format::{fixed, readable};
 use crate::identify::mf_staged::MIN_POINTS_PER_PARAMETER;
-use crate::identify::{Fit, HeldFor, ParameterReport};
+use crate::identify::{Channel, Fit, HeldFor, ParameterReport};
 use crate::jobs::tyre_eval::{gives_none, Output};
 use serde::Serialize;
 
@@ -39,7 +39,7 @@ impl Note {
             warning: false,
         }
     }
-    fn warned(text: String) -> Self {
+    pub(crate) fn warned(text: String) -> Self {
         Note {
             text,
             warning: true,
@@ -77,6 +77,10 @@ pub(crate) fn later_fit_notes(r: &SwarmReport, f: &Fit) -> Vec<Note> {
             ))
         })
         .collect();
+    if f.channel == Channel::AligningMoment {
+        let length = super::contact_length::size_warning(&r.tyre, f.sigma_percent);
+        notes.extend(length.map(Note::warned));
+    }
     notes.extend(sigma_notes(f, &r.level_names()));
     notes
 }

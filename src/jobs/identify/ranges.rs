@@ -241,6 +241,10 @@ pub(crate) fn set_first_sample_slips(r: &mut super::SwarmReport, d: &RigData) {
     let (slips, spans) = sample_reach(d, axis, &r.grouping.levels, &r.conditions, window);
     r.sample_slips[k] = slips;
     r.sample_spans = union(&r.sample_spans, &spans);
+    if let (Some(w), Some((lo, hi))) = (r.linear_window.as_mut(), slips) {
+        // The window's line says how far its bins' samples reach.
+        w.samples_reach_deg = Some(lo.abs().max(hi.abs()).to_degrees());
+    }
 }
 
 /// How far from zero slip angle the samples of a linear tyre's fit reach

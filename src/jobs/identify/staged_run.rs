@@ -25,8 +25,7 @@ use crate::tyre::StagedFit;
 pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error> {
     let out = o.output_path();
     let lock = claimed_outputs(o, &out)?;
-    let template = o.template.as_deref().map(TirDocument::read).transpose()?;
-    let template_tyre = template.as_ref().map(|d| d.template()).transpose()?;
+    let (template, template_tyre) = super::template::read_given(o.template.as_deref())?;
     let template_warning = template_curve_warning(template.as_ref(), template_tyre.as_ref());
     // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
     let (data, moments, lifted) = super::read_lifted(o)?;
@@ -78,6 +77,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // The file's own checks, as `tyre-eval` makes them of it.
     let body = crate::io::tir::tir_text(&written, template.as_ref())?;
     let (tir, file_warnings) = super::written_checks::with_file_checks(&out, &head, &body);
+    super::written_checks::refuse_paper_turn(o.start, &out, &tir, &fitted)?;
     let back = read_back_difference(&tir, &id.tyre, &prepared)?;
     let figures =
         super::staged_figure::stage_figures(&id.tyre, &fitted, &prepared.rows, named, &out);

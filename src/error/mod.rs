@@ -19,6 +19,7 @@ mod effect_limit;
 mod file_kind;
 mod fit;
 mod foreign_format;
+mod header_unit;
 mod hold_rule;
 mod input;
 mod lateral_slope;
@@ -75,6 +76,7 @@ pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
 pub use foreign_format::ForeignFormat;
+pub use header_unit::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice};
 pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};

@@ -190,12 +190,14 @@ pub enum InputProblem {
     #[error("a run needs at least two samples")]
     TooFewSamples,
     /// A road-wheel steer beyond ±90° over more than 1 % of the run.
-    #[error("column `steer`: {} rad is beyond ±90° (the run's 99th percentile of |steer| is {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)? A steer in degrees is converted in the file, or {}", Num(*value), super::units::declare("steer"))]
+    #[error("column `steer`: {} rad is beyond ±90° (the run's 99th percentile of |steer| is {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)? A steer in degrees is converted in the file, or {}", Num(*value), super::units::declare("steer", *by))]
     SteerBeyondQuarterTurn {
         /// The first steer beyond ±90°, rad.
         value: f64,
         /// The 99th percentile of |steer|, rad.
         p99: f64,
+        /// Where the reader takes the column in degrees.
+        by: super::DeclaredBy,
     },
     /// A negative vertical load.
     #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md){}", Num(*value), if *every { "; every load of the file is: a rig whose z axis points down (SAE's axes) logs them so; negate the column" } else { "" })]
@@ -409,6 +411,9 @@ pub enum InputProblem {
         /// Where it appears first.
         first: DuplicateAt,
     },
+    /// A known column stated in another unit than its own (`header_unit.rs`).
+    #[error(transparent)]
+    UnitInHeader(#[from] super::header_unit::HeaderUnit),
     /// A header column a slip of spelling away from a column the command
     /// reads and the file lacks: it would be ignored, and its values lost.
     #[error("column `{found}` is not one this command reads: did you mean `{meant}`? Rename it (a column the command does not read is ignored, and the values of `{meant}` taken as absent)")]

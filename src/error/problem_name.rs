@@ -63,6 +63,7 @@ impl InputProblem {
             InputProblem::DeadSteer { .. } => "DeadSteer",
             InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::Misspelled { .. } => "Misspelled",
+            InputProblem::UnitInHeader(_) => "UnitInHeader",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::YawIgnoresSteer { .. } => "YawIgnoresSteer",

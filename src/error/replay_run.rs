@@ -51,7 +51,8 @@ pub enum ReplayRunProblem {
     },
     /// An angle column the run logs in degrees (its size or its ratio to
     /// `ay` says so), refused at the scenario's `run`: `detail` is the run
-    /// reader's refusal with its advice for this scenario's key.
+    /// reader's refusal, whose advice names this scenario's key (the
+    /// reader was told it reads for a replay).
     InDegrees {
         /// The run file.
         run: Box<str>,
@@ -59,8 +60,7 @@ pub enum ReplayRunProblem {
         at: Box<str>,
         /// The angle column (`steer`, `yaw_rate`).
         column: &'static str,
-        /// The run reader's refusal, its advice on where to declare the
-        /// column taken out.
+        /// The run reader's refusal.
         detail: Box<str>,
     },
     /// A `degrees` entry naming a column the run does not have.
@@ -72,17 +72,6 @@ pub enum ReplayRunProblem {
         /// The run's columns.
         header: Vec<String>,
     },
-}
-
-/// A run reader's refusal without its advice on where a column in degrees
-/// is declared (`metrics --degrees`, a campaign's `[runs]`, a replay's
-/// `[manoeuvre]`): the scenario's own key is said in its place.
-fn undeclared(detail: &str) -> &str {
-    [", or declare it so:", ", or say so:"]
-        .iter()
-        .filter_map(|tail| detail.find(tail))
-        .min()
-        .map_or(detail, |cut| &detail[..cut])
 }
 
 impl fmt::Display for ReplayRunProblem {
@@ -127,11 +116,9 @@ impl fmt::Display for ReplayRunProblem {
                     crate::format::significant(*median, 3)
                 )
             }
-            ReplayRunProblem::InDegrees { run, at, column, detail } => write!(
-                f,
-                "the run {run}, at {at}: {}; a column the run logs in degrees is declared so in this scenario: `degrees = [\"{column}\"]` under [manoeuvre]",
-                undeclared(detail)
-            ),
+            ReplayRunProblem::InDegrees { run, at, detail, .. } => {
+                write!(f, "the run {run}, at {at}: {detail}")
+            }
             ReplayRunProblem::DegreesAbsent { run, column, header } => {
                 write!(
                     f,

@@ -10,14 +10,11 @@ use super::number::Num;
 use crate::format::{fixed, plural, significant};
 use thiserror::Error;
 
-/// How a `column` in degrees (deg/s) is declared, in each place a run is
-/// read: a campaign folder has no `[runs]`, so a campaign file naming it
-/// is where its degrees are declared (a user of a folder was told only
-/// "is the column in degrees?").
-pub(super) fn declare(column: &str) -> String {
-    format!(
-        "declare it so: `--degrees {column}` to `metrics`, `degrees = [\"{column}\"]` under [runs] in a campaign file (a campaign folder is read so by a campaign file whose [runs] has `dir` = its runs folder) or under a replay's [manoeuvre]"
-    )
+/// How a `column` in degrees (deg/s) is declared to the reader that read
+/// it (`by`): its own key only (a replay's refusal named `metrics
+/// --degrees` and a campaign's `[runs]`, which a scenario has not).
+pub(super) fn declare(column: &str, by: super::DeclaredBy) -> String {
+    format!("declare it so: {}", by.declaration(column))
 }
 
 /// A column whose values are in another unit than `FORMATS.md`'s.
@@ -26,7 +23,7 @@ pub(super) fn declare(column: &str) -> String {
 pub enum UnitSlip {
     /// A yaw rate beyond what any car reaches, over more than 1 % of the
     /// run (a spike alone is repaired later).
-    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3, or {}", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3), declare("yaw_rate"))]
+    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3, or {}", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3), declare("yaw_rate", *by))]
     YawRate {
         /// The first yaw rate beyond the limit, as read.
         value: f64,
@@ -34,6 +31,8 @@ pub enum UnitSlip {
         p99: f64,
         /// The largest yaw rate accepted, rad/s.
         limit: f64,
+        /// Where the reader takes the column in degrees.
+        by: super::DeclaredBy,
     },
     /// A lateral acceleration beyond what any car reaches, over more than
     /// 1 % of the run.
@@ -175,7 +174,7 @@ pub enum UnitSlip {
     },
     /// A yaw rate whose speed × yaw rate is 57 times the lateral
     /// acceleration: in deg/s, below the size check's limit.
-    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? Convert it, or say so: `degrees = [\"yaw_rate\"]` under [runs] in a campaign or a replay's [manoeuvre], `--degrees yaw_rate` to `metrics`", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning))]
+    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? Convert it, or {}", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning), declare("yaw_rate", *by))]
     YawRateInDegPerS {
         /// The yaw rate at the first turning sample, as read.
         value: f64,
@@ -185,6 +184,8 @@ pub enum UnitSlip {
         samples: usize,
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
+        /// Where the reader takes the column in degrees.
+        by: super::DeclaredBy,
     },
     /// A yaw rate 57 times too small against `ay`: declared in deg/s while
     /// in rad/s.

@@ -4,9 +4,13 @@
 //! infinite value is an error naming the file, the line and the column.
 
 mod aliases;
+mod bytes;
 mod records;
+mod units;
 
-use crate::error::{one_column_separator, DuplicateAt, InputError, InputProblem};
+use bytes::{header_further_down, not_utf8};
+
+use crate::error::{one_column_separator, DeclaredBy, DuplicateAt, InputError, InputProblem};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -107,37 +111,6 @@ fn line_of(bytes: &[u8], p: &csv::Position) -> usize {
         line += 1;
     }
     line
-}
-
-/// Where the CSV reader found a byte that is not UTF-8: the byte, its
-/// 1-based line and its 1-based CSV column (field).
-struct BadByte {
-    byte: u8,
-    line: usize,
-    column: usize,
-}
-
-/// The byte that is not UTF-8 behind the reader's error `e`, if that is
-/// what `e` is: the reader gives the record and the field, not the byte
-/// or its line (the first bad byte from the record's start is the one,
-/// and a quoted field may span lines, so the line is counted to it).
-/// A comment line the reader skips may hold any bytes: only a record's
-/// are refused.
-fn not_utf8(bytes: &[u8], e: &csv::Error) -> Option<BadByte> {
-    let csv::ErrorKind::Utf8 { pos, err } = e.kind() else {
-        return None;
-    };
-    let start = pos
-        .as_ref()
-        .map_or(0, |p| p.byte() as usize)
-        .min(bytes.len());
-    let offset = std::str::from_utf8(&bytes[start..]).err()?.valid_up_to();
-    let at = start + offset;
-    Some(BadByte {
-        byte: bytes[at],
-        line: bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1,
-        column: err.field() + 1,
-    })
 }
 
 /// Long names of the time column that a logger writes, in English and in
@@ -357,7 +330,7 @@ pub(crate) fn read_columns_with_bad_cells(
     path: &Path,
     layout: Layout,
 ) -> Result<(Columns, Vec<InputError>), InputError> {
-    read_layout(path, layout, true).map(|(columns, bad, _)| (columns, bad))
+    read_layout(path, layout, None).map(|(columns, bad, _)| (columns, bad))
 }
 
 /// [`read_columns`] by a [`Layout`] whose header slips are warned of
@@ -367,21 +340,22 @@ pub(crate) fn read_columns_with_bad_cells(
 pub(crate) fn read_columns_with_slips(
     path: &Path,
     layout: Layout,
+    by: DeclaredBy,
 ) -> Result<(Columns, Vec<Slip>), InputError> {
-    let (columns, bad, slips) = read_layout(path, layout, false)?;
+    let (columns, bad, slips) = read_layout(path, layout, Some(by))?;
     match InputError::all_of(path, bad) {
         Some(e) => Err(e),
         None => Ok((columns, slips)),
     }
 }
 
-/// The reading behind [`read_columns_with_bad_cells`] (`refuse_slips`:
-/// the slips among the refusals) and [`read_columns_with_slips`] (the
-/// slips returned apart).
+/// The reading behind [`read_columns_with_bad_cells`] (no `by`: the slips
+/// among the refusals) and [`read_columns_with_slips`] (`by` the run's
+/// declaration of angles in degrees: the slips returned apart).
 fn read_layout(
     path: &Path,
     layout: Layout,
-    refuse_slips: bool,
+    by: Option<DeclaredBy>,
 ) -> Result<(Columns, Vec<InputError>, Vec<Slip>), InputError> {
     // Read whole to find each record's true line (see [`line_of`]).
     let bytes = read_bytes(path, layout.required)?;
@@ -390,21 +364,38 @@ fn read_layout(
         .comment(Some(b'#'))
         .from_reader(bytes.as_slice());
     let headers = read_header(path, &bytes, &mut rdr, layout.required)?;
+    // A column with its unit in the header is matched by its name.
+    let checked: Vec<&str> = layout
+        .required
+        .iter()
+        .chain(layout.optional)
+        .copied()
+        .collect();
+    let known = layout.also_read.unwrap_or_default();
+    let (named, units) = units::canonical(&headers, &checked, known, by);
     let mut out = Columns {
-        header: headers.iter().map(str::to_string).collect(),
+        header: named.iter().map(str::to_string).collect(),
         header_line: headers.position().map_or(0, |p| line_of(&bytes, p)).max(1),
         ..Columns::default()
     };
-    let (wanted, mut missing) = match_header(path, &headers, out.header_line, &layout)?;
+    let (wanted, mut missing) = match_header(path, &named, out.header_line, &layout)?;
     for e in &mut missing {
         if let InputError::MissingColumn {
-            name, header_below, ..
+            name,
+            header,
+            header_below,
+            ..
         } = e
         {
+            *header = headers.iter().map(str::to_string).collect();
             *header_below = header_further_down(&bytes, out.header_line, name);
         }
     }
-    let (mut bad, slipped) = header_refusals(path, &out, missing, &layout, refuse_slips)?;
+    let line = out.header_line;
+    missing.extend(units.into_iter().map(|(column, unit)| {
+        InputError::problem_at(path, line, column, InputProblem::UnitInHeader(unit))
+    }));
+    let (mut bad, slipped) = header_refusals(path, &out, missing, &layout, by.is_none())?;
     for (i, name) in &wanted {
         out.data.insert(name.clone(), Vec::new());
         out.positions.insert(name.clone(), i + 1);
@@ -467,28 +458,6 @@ fn read_header(
             ),
             None => file_err(&e),
         })
-}
-
-/// The first line after `header_line` (1-based, among the next 100) whose
-/// comma-separated cells name the column `name` (unquoted, any case; `t`
-/// also as `time`): a header under lines of metadata.
-fn header_further_down(
-    bytes: &[u8],
-    header_line: usize,
-    name: &str,
-) -> Option<std::num::NonZeroU32> {
-    let text = String::from_utf8_lossy(bytes);
-    text.lines()
-        .enumerate()
-        .skip(header_line)
-        .take(100)
-        .find(|(_, l)| {
-            l.split(',').any(|c| {
-                let c = c.trim().trim_matches('"');
-                c.eq_ignore_ascii_case(name) || (name == "t" && c.eq_ignore_ascii_case("time"))
-            })
-        })
-        .and_then(|(i, _)| std::num::NonZeroU32::new(u32::try_from(i + 1).ok()?))
 }
 
 /// The wanted columns a header has: each one's 0-based position and name.

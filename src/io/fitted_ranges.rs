@@ -14,7 +14,8 @@
 //! against nothing.
 
 use super::{param_error, TomlSource};
-use crate::error::{InputError, ParamError, ParamReason};
+use crate::constants::MOST_PRESSURE;
+use crate::error::{InputError, Limit, ParamError, ParamReason};
 use crate::format::readable;
 use serde::{Deserialize, Serialize};
 
@@ -235,6 +236,15 @@ impl FittedRanges {
             if hi < lo {
                 let reason = ParamReason::RangeReversed { lo };
                 return Err(ParamError::new(&format!("{name}[1]"), hi, reason));
+            }
+            // No range today's `identify` writes: its rig data are refused
+            // above the limit (`rig_rows.rs`), so the file's range would
+            // let a point at an impossible pressure read as fitted.
+            if name == "pressure" {
+                for (k, v) in [lo, hi].into_iter().enumerate() {
+                    let why = Limit::WrittenPressure;
+                    ParamError::in_range(&format!("pressure[{k}]"), v, 0.0, MOST_PRESSURE, why)?;
+                }
             }
         }
         Ok(())

@@ -92,37 +92,7 @@ impl AngleColumn {
     }
 }
 
-/// Where a run's angle columns were declared in degrees: named when a
-/// declared column is not in the file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DeclaredBy {
-    /// `metrics --degrees COLUMN`.
-    MetricsOption,
-    /// A campaign's `[runs] degrees`.
-    CampaignRuns,
-    /// A replay scenario's `[manoeuvre] degrees`.
-    ReplayManoeuvre,
-}
-
-impl DeclaredBy {
-    /// The job that reads the file, as a message names it.
-    pub fn job(self) -> &'static str {
-        match self {
-            DeclaredBy::MetricsOption => "`metrics`",
-            DeclaredBy::CampaignRuns => "`diagnose`",
-            DeclaredBy::ReplayManoeuvre => "a replay",
-        }
-    }
-
-    /// The option or key, as a message names it.
-    pub fn words(self) -> &'static str {
-        match self {
-            DeclaredBy::MetricsOption => "`--degrees` to `metrics`",
-            DeclaredBy::CampaignRuns => "`degrees` under [runs]",
-            DeclaredBy::ReplayManoeuvre => "`degrees` under [manoeuvre]",
-        }
-    }
-}
+pub use crate::error::DeclaredBy;
 
 /// Reads and checks a measured run.
 pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
@@ -205,7 +175,7 @@ fn read_run_lacking(
         optional,
         also_read: Some(&others),
     };
-    let (mut c, slips) = read_columns_with_slips(path, layout)?;
+    let (mut c, slips) = read_columns_with_slips(path, layout, declared_by.1)?;
     let (declared, absent) = declared_columns(path, &c, declared_by, optional, lacking)?;
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()
@@ -217,7 +187,7 @@ fn read_run_lacking(
     let t = c.take("t");
     check_times(path, &c, &t)?;
     let steer = c.take("steer");
-    check_steer(path, &c, &steer)?;
+    check_steer(path, &c, &steer, declared_by.1)?;
     let (speed, yaw_rate) = (c.take("speed"), c.take("yaw_rate"));
     let run = MeasuredRun::new(path, t, speed, steer, yaw_rate)
         .with_ay(c.take_optional("ay"))
@@ -227,7 +197,7 @@ fn read_run_lacking(
         .with_beta(c.take_optional("beta"));
     // The checks read the columns' positions and lines only, not their
     // values: every channel is taken first and checked on the run.
-    check_speed_and_rates(path, &c, &run)?;
+    check_speed_and_rates(path, &c, &run, declared_by.1)?;
     check_angles(path, &c, &run, declared.contains(&AngleColumn::Beta))?;
     check_lateral(path, &c, &run)?;
     Ok((run, RunHeader { unread, slips }, absent))
@@ -314,7 +284,7 @@ fn check_times(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
 /// A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged on
 /// the 99th percentile so that a logger's spike (repaired later) does not
 /// refuse the file.
-fn check_steer(path: &Path, c: &Columns, steer: &[f64]) -> Result<(), InputError> {
+fn check_steer(path: &Path, c: &Columns, steer: &[f64], by: DeclaredBy) -> Result<(), InputError> {
     match beyond(steer, std::f64::consts::FRAC_PI_2) {
         Some((i, p99)) => Err(c.error_at(
             path,
@@ -323,6 +293,7 @@ fn check_steer(path: &Path, c: &Columns, steer: &[f64]) -> Result<(), InputError
             InputProblem::SteerBeyondQuarterTurn {
                 value: steer[i],
                 p99,
+                by,
             },
         )),
         None => Ok(()),
@@ -331,10 +302,15 @@ fn check_steer(path: &Path, c: &Columns, steer: &[f64]) -> Result<(), InputError
 
 /// The speed's and the yaw rate's units, and `ay`'s against them (else the
 /// speed's against `ax`).
-fn check_speed_and_rates(path: &Path, c: &Columns, run: &MeasuredRun) -> Result<(), InputError> {
+fn check_speed_and_rates(
+    path: &Path,
+    c: &Columns,
+    run: &MeasuredRun,
+    by: DeclaredBy,
+) -> Result<(), InputError> {
     let (speed, yaw_rate) = (&run.speed, &run.yaw_rate);
     check_speed(path, c, speed)?;
-    check_yaw_rate(path, c, yaw_rate)?;
+    check_yaw_rate(path, c, yaw_rate, by)?;
     match (&run.ay, &run.ax) {
         (Some(ay), _) => {
             let lateral = super::run_turning::Channels {
@@ -344,7 +320,7 @@ fn check_speed_and_rates(path: &Path, c: &Columns, run: &MeasuredRun) -> Result<
                 ay,
                 beta: run.beta.as_deref(),
             };
-            check_ay(path, c, &lateral)
+            check_ay(path, c, &lateral, by)
         }
         // No lateral accelerometer to judge the speed's unit by: the
         // longitudinal one, against the speed's change.

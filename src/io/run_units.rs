@@ -6,7 +6,7 @@
 //! median time step.
 
 use super::columns::Columns;
-use crate::error::{InputError, SpeedUnit, UnitSlip};
+use crate::error::{DeclaredBy, InputError, SpeedUnit, UnitSlip};
 use crate::measured::clean::{median, quantile};
 use std::path::Path;
 
@@ -103,7 +103,12 @@ fn p99(x: &[f64]) -> Option<f64> {
 
 /// Refuses a yaw rate beyond [`MAX_YAW_RATE`] over more than 1 % of the
 /// run (deg/s).
-pub(super) fn check_yaw_rate(path: &Path, c: &Columns, r: &[f64]) -> Result<(), InputError> {
+pub(super) fn check_yaw_rate(
+    path: &Path,
+    c: &Columns,
+    r: &[f64],
+    by: DeclaredBy,
+) -> Result<(), InputError> {
     match beyond(r, MAX_YAW_RATE) {
         Some((i, p99)) => Err(c.error_at(
             path,
@@ -113,6 +118,7 @@ pub(super) fn check_yaw_rate(path: &Path, c: &Columns, r: &[f64]) -> Result<(), 
                 value: r[i],
                 p99,
                 limit: MAX_YAW_RATE,
+                by,
             }
             .into(),
         )),
@@ -129,6 +135,7 @@ pub(super) fn check_ay(
     path: &Path,
     c: &Columns,
     lateral: &super::run_turning::Channels,
+    by: DeclaredBy,
 ) -> Result<(), InputError> {
     let (speed, r, ay) = (lateral.speed, lateral.r, lateral.ay);
     if let Some((i, p99)) = beyond(ay, MAX_AY) {
@@ -158,7 +165,7 @@ pub(super) fn check_ay(
     }
     let m = median(&mut q);
     let i = turning[0];
-    let (column, slip) = bands.slip(i, m, turning.len(), speed, r, ay);
+    let (column, slip) = bands.slip((i, m, turning.len()), speed, r, ay, by);
     Err(c.error_at(path, i, column, slip.into()))
 }
 
@@ -204,12 +211,11 @@ impl RatioBands {
     /// yaw rate's bands first, then the speed's, then ay's.
     fn slip(
         &self,
-        i: usize,
-        m: f64,
-        samples: usize,
+        (i, m, samples): (usize, f64, usize),
         speed: &[f64],
         r: &[f64],
         ay: &[f64],
+        by: DeclaredBy,
     ) -> (&'static str, UnitSlip) {
         if self.too_small {
             // No logger writes a yaw rate 57 times too small: a yaw rate in
@@ -228,6 +234,7 @@ impl RatioBands {
                 median: m,
                 samples,
                 turning: TURNING,
+                by,
             };
             return ("yaw_rate", slip);
         }

@@ -49,8 +49,8 @@ fn a_level_request_in_another_unit_is_answered_with_a_conversion_that_selects() 
         ("--load", "2", "the requested 2 N; the value is read in N: did you mean 2000 N (2 kN), which selects the 2193 N level?", "fz 2000 N asked for: the 2193 N level selected"),
         ("--load", "1.65", "the requested 1.65 N; the value is read in N: did you mean 1650 N (1.65 kN), which selects the 1656 N level?", "fz 1650 N asked for: the 1656 N level selected"),
         ("--camber", "1.6", "the requested 1.6 rad (91.67°); the value is read in rad: did you mean 0.0279253 rad (1.6°), which selects the 1.60° level?", "camber 0.0279253 rad (1.60°) asked for: the 1.60° level selected"),
-        ("--pressure", "83", "the requested 83 Pa (0.083 kPa); the value is read in Pa: did you mean 83000 Pa (83 kPa), which selects the 83.4 kPa level?", "pressure 83.0 kPa asked for: the 83.4 kPa level selected"),
-        ("--pressure", "12", "did you mean 82737 Pa (12 psi), which selects the 83.4 kPa level?", "pressure 82.7 kPa asked for: the 83.4 kPa level selected"),
+        ("--pressure", "83", "the requested 83 Pa (0.083 kPa); the value is read in Pa: did you mean 83000 Pa (83 kPa), which selects the 83.4 kPa level?", "pressure 83000 Pa (83.0 kPa) asked for: the 83.4 kPa level selected"),
+        ("--pressure", "12", "did you mean 82737 Pa (12 psi), which selects the 83.4 kPa level?", "pressure 82737 Pa (82.7 kPa) asked for: the 83.4 kPa level selected"),
     ];
     for (option, value, hint, selected) in cases {
         let o = identify(&data, &[option, value]);

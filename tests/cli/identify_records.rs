@@ -127,7 +127,7 @@ fn a_level_asked_for_off_its_nominal_is_said_with_the_level_it_selects() {
     assert!(o.status.success(), "{}", stderr(&o));
     let file = fs::read_to_string(&out).unwrap();
     for line in [
-        "pressure 180.5 kPa asked for: the 180.0 kPa level selected (its samples 180.0 kPa to 180.0 kPa)",
+        "pressure 180500 Pa (180.5 kPa) asked for: the 180.0 kPa level selected (its samples 180.0 kPa to 180.0 kPa)",
         "camber 0.0001 rad (0.01°) asked for: the 0.00° level selected (its samples 0.00° to 0.00°)",
     ] {
         assert!(stdout(&o).contains(&format!("  {line}\n")), "{}", stdout(&o));

@@ -110,7 +110,7 @@ fn a_replay_s_yaw_rate_in_degrees_is_declared_by_the_scenario_s_key() {
     assert!(said.contains("replay.toml:"), "{said}");
     assert!(said.contains("the run run.csv, at line "), "{said}");
     assert!(
-        said.contains("declared so in this scenario: `degrees = [\"yaw_rate\"]` under [manoeuvre]"),
+        said.contains("declare it so: `degrees = [\"yaw_rate\"]` under [manoeuvre]"),
         "{said}"
     );
     assert!(!said.contains("--degrees"), "{said}");

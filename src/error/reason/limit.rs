@@ -35,6 +35,9 @@ pub enum Limit {
     /// A slip-angle bin, degrees.
     #[error("a slip-angle bin wider than 2° averages the curve's rise to its peak away (a rig sweeps to about 12°, the peak lies at 3–8°); 0 keeps every sample")]
     SlipAngleBin,
+    /// A pressure written in a tyre file's `[fitted_ranges]`, Pa.
+    #[error("no tyre is tested above 5 MPa (a car tyre runs at 200–300 kPa, a truck's up to 1 MPa), and `identify` refuses rig data above it, so no range it writes reaches past it: the range was written in another unit (kPa written as Pa is 1000× too large) or by hand; write it in Pa, or remove the key")]
+    WrittenPressure,
     /// A slip-ratio bin.
     #[error("a slip-ratio bin wider than 0.05 averages the curve's rise to its peak away (the peak lies at a slip ratio of 0.05–0.15); 0 keeps every sample")]
     SlipRatioBin,

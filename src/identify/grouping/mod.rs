@@ -145,13 +145,14 @@ impl Selected {
     /// The line saying which level the value asked for selected. A
     /// camber is said as typed, in rad, with its degrees beside: "camber
     /// 1.60° asked for" answered `--camber 0.028` in a unit the user did
-    /// not type, and rounded 0.0001 rad to "0.01°".
+    /// not type, and rounded 0.0001 rad to "0.01°"; a pressure in Pa.
     pub fn line(&self) -> String {
         let v = self.variable;
         let asked = match v {
-            Variable::Camber => format!(
-                "{} rad ({})",
+            Variable::Camber | Variable::Pressure => format!(
+                "{} {} ({})",
                 crate::error::Num(self.requested),
+                if v == Variable::Camber { "rad" } else { "Pa" },
                 v.display(self.requested)
             ),
             _ => v.display(self.requested),

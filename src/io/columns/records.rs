@@ -5,7 +5,8 @@
 //! header mid-file) said once as that, not as a cell per column that is
 //! not a number.
 
-use super::{line_of, not_utf8, Columns};
+use super::bytes::not_utf8;
+use super::{line_of, Columns};
 use crate::error::{CellProblem, InputError};
 use std::path::Path;
 

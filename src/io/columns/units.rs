@@ -1,0 +1,266 @@
+//! Units written in a CSV header: `alpha [deg]`, `speed (km/h)`, `fz_kN`,
+//! as loggers and rigs write them. A header column that is a column the
+//! reader reads followed by a unit is recognised as that column with that
+//! unit ([`crate::error::Unit`]):
+//! - in brackets or parentheses after the name, any unit text (a text
+//!   that names no known unit is refused as such);
+//! - after an underscore (`alpha_deg`, `yaw_rate_deg_s`, `FZ_kN`), only a
+//!   known unit of the column's own quantity: `speed_ms` (milliseconds?
+//!   m/s?) is left to the did-you-mean of a misspelt name.
+//!
+//! The column's own SI unit (`alpha [rad]`, `fz [N]`, `t_s`), under the
+//! column's exact name, is checked and accepted: the column is read. Any
+//! other unit of the column's quantity is refused with the conversion
+//! (or, for a run's angle in degrees, the reader's key to declare it):
+//! the values are never read in a unit the header says they are not in.
+//! Columns the reader only knows of (`also_read`) are accepted in SI and
+//! otherwise left as they are, unread.
+
+use crate::error::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice};
+
+/// The columns with a unit, and the quantity `FORMATS.md` reads each as
+/// (its unit: [`Quantity::si`]).
+const QUANTITIES: [(&str, Quantity); 19] = [
+    ("t", Quantity::Time),
+    ("speed", Quantity::Speed),
+    ("steer", Quantity::Angle),
+    ("alpha", Quantity::Angle),
+    ("camber", Quantity::Angle),
+    ("beta", Quantity::Angle),
+    ("roll", Quantity::Angle),
+    ("bank", Quantity::Angle),
+    ("yaw_rate", Quantity::AngularRate),
+    ("ay", Quantity::Acceleration),
+    ("ax", Quantity::Acceleration),
+    ("fz", Quantity::Force),
+    ("fy", Quantity::Force),
+    ("fx", Quantity::Force),
+    ("mz", Quantity::Moment),
+    ("mx", Quantity::Moment),
+    ("my", Quantity::Moment),
+    ("pressure", Quantity::Pressure),
+    ("kappa", Quantity::Ratio),
+];
+
+/// The column `name` (its static name) and its quantity, where it has one.
+fn quantity_of(name: &str) -> Option<(&'static str, Quantity)> {
+    QUANTITIES.iter().copied().find(|(c, _)| *c == name)
+}
+
+/// The run's angle columns a reader may declare in degrees (deg/s for the
+/// yaw rate): `AngleColumn`'s.
+const DECLARABLE: [&str; 5] = ["steer", "yaw_rate", "beta", "roll", "bank"];
+
+/// A header column's name and the unit text after it, and whether that
+/// text was bracketed.
+fn split(h: &str) -> Option<(&str, String, bool)> {
+    for (open, close) in [('[', ']'), ('(', ')')] {
+        if let Some(inner) = h.strip_suffix(close) {
+            let at = inner.rfind(open)?;
+            let name = inner[..at].trim();
+            return (!name.is_empty()).then(|| (name, inner[at + 1..].trim().to_string(), true));
+        }
+    }
+    None
+}
+
+/// What the header says of one column.
+pub(super) enum Reading {
+    /// The column under its name and its SI unit: read as the column.
+    Accept(&'static str),
+    /// The column in another unit: refused.
+    Refuse(HeaderUnit),
+}
+
+/// The column among `checked` and `known` that `name` names: its exact
+/// name (true), or in other letters' case or a rig's channel name (false).
+fn column_named(name: &str, checked: &[&str], known: &[&str]) -> Option<(&'static str, bool)> {
+    let all = || checked.iter().chain(known).copied();
+    if let Some(c) = all().find(|c| *c == name) {
+        return Some((quantity_of(c)?.0, true));
+    }
+    let lower = name.to_lowercase();
+    let listed: Vec<&str> = all().collect();
+    // A rig's channel name (`SA`, `FZ`), not another name of the column
+    // (`steering_angle` may be the handwheel's: a did-you-mean says it).
+    let rig = super::RIG_NAMES.iter().find(|(rig, _)| *rig == lower);
+    let rig = rig.and_then(|(_, ours)| listed.iter().copied().find(|c| c == ours));
+    let c = all().find(|c| *c == lower).or(rig)?;
+    Some((quantity_of(c)?.0, false))
+}
+
+/// The reading of the header column `h` by a reader of the columns
+/// `checked` (read) and `known` (only known of), whose run angles are
+/// declared in degrees by `by` where it has one; `None`: no column with
+/// a unit, left to the other header checks.
+pub(super) fn reading(
+    h: &str,
+    checked: &[&str],
+    known: &[&str],
+    by: Option<DeclaredBy>,
+) -> Option<Reading> {
+    let (column, exact, stated, bracketed) = match split(h) {
+        Some((name, text, true)) => {
+            let (column, exact) = column_named(name, checked, known)?;
+            let stated = Unit::parse(&text).map_or(Stated::Unknown(text.into()), Stated::Known);
+            (column, exact, stated, true)
+        }
+        _ => suffixed(h, checked, known)?,
+    };
+    let (_, quantity) = quantity_of(column)?;
+    let advice = match &stated {
+        Stated::Known(u) if *u == quantity.si() => return exact.then_some(Reading::Accept(column)),
+        Stated::Known(u) if u.quantity() != quantity => {
+            // `speed_ms` may be a misspelt `speed` in m/s: said as a slip.
+            if !bracketed {
+                return None;
+            }
+            UnitAdvice::OtherQuantity
+        }
+        Stated::Known(u) => match by {
+            Some(by)
+                if DECLARABLE.contains(&column)
+                    && matches!(u, Unit::Degree | Unit::DegreePerSecond) =>
+            {
+                UnitAdvice::Declare(by)
+            }
+            _ => UnitAdvice::Convert,
+        },
+        Stated::Unknown(_) => UnitAdvice::UnknownUnit,
+    };
+    // A column the reader does not read is not refused for its unit.
+    if !checked.contains(&column) {
+        return None;
+    }
+    Some(Reading::Refuse(HeaderUnit {
+        header: h.into(),
+        column,
+        quantity,
+        stated,
+        advice,
+    }))
+}
+
+/// A column named with its unit after an underscore (`alpha_deg`,
+/// `yaw_rate_deg_s`, `FZ_kN`): the column, whether its name is exact, the
+/// unit, and false (not bracketed); only a known unit of the column's
+/// quantity.
+fn suffixed(
+    h: &str,
+    checked: &[&str],
+    known: &[&str],
+) -> Option<(&'static str, bool, Stated, bool)> {
+    // The longest name first: `yaw_rate_deg` is `yaw_rate`, not `yaw`.
+    let mut cuts: Vec<usize> = h.match_indices('_').map(|(i, _)| i).collect();
+    cuts.reverse();
+    cuts.into_iter().find_map(|at| {
+        let (name, tail) = (&h[..at], &h[at + 1..]);
+        let (column, exact) = column_named(name, checked, known)?;
+        let unit = Unit::parse(&tail.replace('_', "/"))?;
+        (Some(unit.quantity()) == quantity_of(column).map(|q| q.1)).then_some((
+            column,
+            exact,
+            Stated::Known(unit),
+            false,
+        ))
+    })
+}
+
+/// The header as a reader matches it: each column with a unit accepted
+/// under its name, and each refused under its name too (so that it is not
+/// also said missing), with the refusals at their 1-based positions.
+pub(super) fn canonical(
+    header: &csv::StringRecord,
+    checked: &[&str],
+    known: &[&str],
+    by: Option<DeclaredBy>,
+) -> (csv::StringRecord, Vec<(usize, HeaderUnit)>) {
+    let mut refused = Vec::new();
+    let names: Vec<String> = header
+        .iter()
+        .enumerate()
+        .map(|(i, h)| match reading(h, checked, known, by) {
+            Some(Reading::Accept(c)) => c.to_string(),
+            Some(Reading::Refuse(r)) => {
+                let c = r.column.to_string();
+                refused.push((i + 1, r));
+                c
+            }
+            None => h.to_string(),
+        })
+        .collect();
+    (csv::StringRecord::from(names), refused)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const RUN: [&str; 5] = ["t", "speed", "steer", "yaw_rate", "ay"];
+
+    fn refused(h: &str, by: Option<DeclaredBy>) -> Option<HeaderUnit> {
+        match reading(h, &RUN, &[], by) {
+            Some(Reading::Refuse(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn units_in_brackets_and_after_an_underscore_are_read_as_the_column_s() {
+        for h in [
+            "t [s]",
+            "speed (m/s)",
+            "steer_rad",
+            "yaw_rate [rad/s]",
+            "ay [m/s^2]",
+        ] {
+            assert!(
+                matches!(reading(h, &RUN, &[], None), Some(Reading::Accept(_))),
+                "{h}"
+            );
+        }
+        // The SI unit under another case is a renaming, said as a slip.
+        assert!(reading("Speed [m/s]", &RUN, &[], None).is_none());
+        let r = refused("yaw_rate_deg_s", Some(DeclaredBy::MetricsOption)).unwrap();
+        assert_eq!(
+            (r.column, r.stated),
+            ("yaw_rate", Stated::Known(Unit::DegreePerSecond))
+        );
+        assert_eq!(r.advice, UnitAdvice::Declare(DeclaredBy::MetricsOption));
+        // Without a key to declare degrees by, the conversion.
+        let r = refused("steer [deg]", None).unwrap();
+        assert_eq!(r.advice, UnitAdvice::Convert);
+        assert_eq!(
+            refused("ay [g]", None).unwrap().stated,
+            Stated::Known(Unit::StandardGravity)
+        );
+        assert_eq!(
+            refused("speed [deg]", None).unwrap().advice,
+            UnitAdvice::OtherQuantity
+        );
+        assert_eq!(
+            refused("speed [furlong]", None).unwrap().advice,
+            UnitAdvice::UnknownUnit
+        );
+        // `speed_ms` is no unit of a speed after an underscore: a slip.
+        assert!(reading("speed_ms", &RUN, &[], None).is_none());
+        // A rig's channel name with its unit is the column it stands for.
+        let rig = ["fz", "alpha"];
+        match reading("SA_deg", &rig, &[], None) {
+            Some(Reading::Refuse(r)) => assert_eq!(r.column, "alpha"),
+            _ => panic!("SA_deg not read"),
+        }
+    }
+
+    #[test]
+    fn a_unit_s_conversion_is_its_factor_to_si() {
+        assert_eq!(Unit::parse(" km/h "), Some(Unit::KilometrePerHour));
+        assert_eq!(Unit::parse("N·m"), Some(Unit::NewtonMetre));
+        assert_eq!(Unit::parse("kPa"), Some(Unit::Kilopascal));
+        assert_eq!(Unit::Kilopascal.conversion(), "× 1000");
+        assert_eq!(Unit::KilometrePerHour.conversion(), "÷ 3.6");
+        assert!(Unit::Degree
+            .conversion()
+            .contains(&format!("{:.7}", 1f64.to_radians())));
+    }
+}

@@ -59,6 +59,8 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::report::shares::{channel_shares, error_rows};
+use crate::diagnose::report::summary::steady_offsets;
 use crate::diagnose::report::summary::{base_run_gap, dominant, gap_summary, parts_table};
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
@@ -448,30 +450,35 @@ fn searched(
 
 /// The gap report from the channels' trust (`noise`), the pooled `parts`
 /// and the base model's gap on each run, against the `base` model's
-/// held-out errors at the fits' `scales`: the findings ([`gap_findings`],
-/// the channel that dominates), the shares, and on a verdict of no
+/// held-out errors at the fits' `scales` (and the chosen set's, `after`,
+/// for the verdict's shares): the findings ([`gap_findings`], the channel
+/// that dominates), the shares, and on a verdict of no
 /// significant gap what it rests on (an uncertainty stated far above its
 /// channel's scatter, an assumed floor).
 fn gap_report(
     c: &Campaign,
     (noise, parts, runs): (Vec<ChannelNoise>, Vec<Shrinkage>, Vec<RunGap>),
-    base: &Baseline,
+    (base, after): (&Baseline, Option<&ChannelErrors>),
     scales: &[f64; 3],
     verdict: &mut Verdict,
 ) -> GapReport {
     let (j0, jn) = (base.j0, base.jn);
     let significant = rules::significant(j0, jn);
     let mut findings = gap_findings(c, &runs, &parts, significant, j0, jn);
-    findings.extend(dominant(&base.heldout, scales, &findings));
+    // One computation of the shares, of the held-out errors `J` reads
+    // (the verdict's `J` before and after), each channel's steady offset
+    // a second number of its row: `dominant` reads them.
+    let offsets = steady_offsets(&findings);
+    let before = error_rows(&base.heldout, scales, &offsets);
+    let after = after
+        .filter(|_| !verdict.effects().is_empty())
+        .map(|e| error_rows(e, scales, &[]));
+    let channel_shares = channel_shares(&before, after.as_deref());
+    findings.extend(dominant(&channel_shares));
     if let Verdict::NoSignificantGap(n) = verdict {
         n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
         n.assumed = assumed_floors(&noise, &findings);
     }
-    let channel_shares = crate::diagnose::report::shares::channel_shares(
-        &parts,
-        &noise,
-        !verdict.effects().is_empty(),
-    );
     GapReport {
         significant,
         heldout_error: j0,
@@ -537,7 +544,8 @@ fn run(
     let done = conclude(&ctx, c, &found, pair, (&base, significant), &shrinkage);
     let mut verdict = done.verdict;
     let overlays = overlays(&ctx, &base_obs, &after_obs);
-    let gap = gap_report(c, (noise, parts, run_gaps), &base, &scales, &mut verdict);
+    let scored = (&base, found.chosen.as_ref().map(|s| &s.heldout));
+    let gap = gap_report(c, (noise, parts, run_gaps), scored, &scales, &mut verdict);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),

@@ -512,6 +512,9 @@ pub enum GapFinding {
         channel: Channel,
         /// Its share of `J²`, %, each channel's steady offset set aside.
         share_percent: f64,
+        /// Its share of `J²`, %, the offsets counted (its `channel_shares`
+        /// row's `before_percent`; equal to `share_percent` without one).
+        with_offsets_percent: f64,
         /// The channels whose steady offset was set aside.
         less_offsets: Vec<Channel>,
     },

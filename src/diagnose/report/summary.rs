@@ -5,12 +5,13 @@
 //! Units: each channel's own (rad/s, m/s², rad).
 
 use crate::diagnose::model::channels::reduction;
-use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, CombinedGap, GapFinding};
+use crate::diagnose::report::shares::ChannelShare;
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::{Part, RunGap, RunPart, Shrinkage};
 use crate::manoeuvre::interpolate;
@@ -321,52 +322,47 @@ pub fn observed_channel(o: &Observed, c: Channel) -> &[f64] {
     }
 }
 
-/// The channel whose share of the base model's held-out error `J²`
-/// exceeds [`DOMINANT_SHARE`], when more than one channel is measured,
-/// with each channel's steady offset ([`GapFinding::Channel`]'s `offset`,
-/// found in `findings`) set aside: an offset is one number a sensor bias
-/// fits, not the floor the channel is trusted to, so a channel whose share
-/// is its offset does not decide every fit (a logger's ay offset of
-/// +0.6 m/s² carried 84 % of a sedan's error, 98 % of it the offset).
-pub(crate) fn dominant(
-    e: &ChannelErrors,
-    scales: &[f64; 3],
-    findings: &[GapFinding],
-) -> Option<GapFinding> {
-    // The share of a channel's mean square its steady offset carries.
-    let steady = |c: Channel| {
-        findings.iter().find_map(|f| match f {
+/// Each channel's steady offset in `findings` ([`GapFinding::Channel`]'s
+/// `offset`): its mean residual, the second number of its row of the
+/// shares ([`crate::diagnose::report::shares::error_rows`]).
+pub(crate) fn steady_offsets(findings: &[GapFinding]) -> Vec<(Channel, f64)> {
+    findings
+        .iter()
+        .filter_map(|f| match f {
             GapFinding::Channel {
                 channel,
                 offset: Some(o),
                 ..
-            } if *channel == c => Some(o.share.clamp(0.0, 1.0)),
+            } => Some((*channel, o.mean)),
             _ => None,
         })
-    };
-    let parts: Vec<(Channel, f64)> = Channel::ALL
-        .into_iter()
-        .filter(|c| e.count[c.index()] > 0)
-        .map(|c| {
-            let own = 1.0 - steady(c).unwrap_or(0.0);
-            (c, own * e.sum_sq[c.index()] / scales[c.index()].powi(2))
-        })
-        .collect();
-    let total: f64 = parts.iter().map(|p| p.1).sum();
-    if parts.len() < 2 || total <= 0.0 {
+        .collect()
+}
+
+/// The channel whose share of the base model's held-out error `J²`
+/// exceeds [`DOMINANT_SHARE`], when more than one channel is measured,
+/// with each channel's steady offset set aside: read of the shares
+/// ([`ChannelShare::before_offsets_aside_percent`]), so that the report
+/// gives one share per channel. An offset is one number a sensor bias
+/// fits, not the floor the channel is trusted to, so a channel whose share
+/// is its offset does not decide every fit (a logger's ay offset of
+/// +0.6 m/s² carried 84 % of a sedan's error, 98 % of it the offset).
+pub(crate) fn dominant(shares: &[ChannelShare]) -> Option<GapFinding> {
+    if shares.len() < 2 {
         return None;
     }
-    let less_offsets: Vec<Channel> = parts
+    let less_offsets: Vec<Channel> = shares
         .iter()
-        .map(|p| p.0)
-        .filter(|&c| steady(c).is_some())
+        .filter(|s| s.offset_percent.is_some())
+        .map(|s| s.channel)
         .collect();
-    parts
-        .into_iter()
-        .find(|p| p.1 / total > DOMINANT_SHARE)
-        .map(|(channel, part)| GapFinding::Dominant {
-            channel,
-            share_percent: 100.0 * part / total,
+    shares
+        .iter()
+        .find(|s| s.before_offsets_aside_percent > 100.0 * DOMINANT_SHARE)
+        .map(|s| GapFinding::Dominant {
+            channel: s.channel,
+            share_percent: s.before_offsets_aside_percent,
+            with_offsets_percent: s.before_percent,
             less_offsets,
         })
 }

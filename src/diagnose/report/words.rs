@@ -488,11 +488,12 @@ pub fn finding(f: &GapFinding) -> String {
         GapFinding::Dominant {
             channel,
             share_percent,
+            with_offsets_percent,
             less_offsets,
         } => format!(
-            "{} carries {share_percent:.0} % of the base model's held-out error (each channel over its noise floor{}): it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
+            "{} carries {share_percent:.0} % of the base model's held-out J² (each channel over its noise floor){}: it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
             channel.name(),
-            gap::offsets_aside(less_offsets)
+            gap::offsets_aside(less_offsets, *with_offsets_percent)
         ),
         GapFinding::BandsWithoutSteer { bands, runs } => format!(
             "frequency bands: {} in {} without steer content: the steer there drives no yaw-rate response above {} × the gyro's noise in one frequency bin, so no gain or phase is said of them",

@@ -216,11 +216,13 @@ pub(super) fn unit_hint(gain_error_db: f64) -> String {
 }
 
 /// The steady offsets a channel's dominance was judged without
-/// ([`GapFinding::Dominant`]'s `less_offsets`).
-pub(super) fn offsets_aside(channels: &[Channel]) -> String {
-    let names: Vec<&str> = channels.iter().map(|c| c.name()).collect();
-    if names.is_empty() {
+/// ([`GapFinding::Dominant`]'s `less_offsets`) and its share with them
+/// counted, said together: " with ay's steady offset aside (94 % with
+/// it)"; nothing without an offset.
+pub(super) fn offsets_aside(channels: &[Channel], with_offsets_percent: f64) -> String {
+    if channels.is_empty() {
         return String::new();
     }
-    format!(", less the steady offset of {}", names.join(" and "))
+    let (named, pronoun) = crate::diagnose::report::shares::offsets_named(channels);
+    format!(" with {named} aside ({with_offsets_percent:.0} % with {pronoun})")
 }

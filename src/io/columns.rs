@@ -330,7 +330,7 @@ pub(crate) fn read_columns_with_bad_cells(
     path: &Path,
     layout: Layout,
 ) -> Result<(Columns, Vec<InputError>), InputError> {
-    read_layout(path, layout, None).map(|(columns, bad, _)| (columns, bad))
+    read_layout(path, layout, (None, &[])).map(|(columns, bad, _)| (columns, bad))
 }
 
 /// [`read_columns`] by a [`Layout`] whose header slips are warned of
@@ -340,9 +340,9 @@ pub(crate) fn read_columns_with_bad_cells(
 pub(crate) fn read_columns_with_slips(
     path: &Path,
     layout: Layout,
-    by: DeclaredBy,
+    (by, declared): (DeclaredBy, &[&str]),
 ) -> Result<(Columns, Vec<Slip>), InputError> {
-    let (columns, bad, slips) = read_layout(path, layout, Some(by))?;
+    let (columns, bad, slips) = read_layout(path, layout, (Some(by), declared))?;
     match InputError::all_of(path, bad) {
         Some(e) => Err(e),
         None => Ok((columns, slips)),
@@ -351,11 +351,12 @@ pub(crate) fn read_columns_with_slips(
 
 /// The reading behind [`read_columns_with_bad_cells`] (no `by`: the slips
 /// among the refusals) and [`read_columns_with_slips`] (`by` the run's
-/// declaration of angles in degrees: the slips returned apart).
+/// declaration of angles in degrees, and the columns it declares so: the
+/// slips returned apart).
 fn read_layout(
     path: &Path,
     layout: Layout,
-    by: Option<DeclaredBy>,
+    (by, declared): (Option<DeclaredBy>, &[&str]),
 ) -> Result<(Columns, Vec<InputError>, Vec<Slip>), InputError> {
     // Read whole to find each record's true line (see [`line_of`]).
     let bytes = read_bytes(path, layout.required)?;
@@ -372,7 +373,7 @@ fn read_layout(
         .copied()
         .collect();
     let known = layout.also_read.unwrap_or_default();
-    let (named, units) = units::canonical(&headers, &checked, known, by);
+    let (named, units) = units::canonical(&headers, &checked, known, (by, declared));
     let mut out = Columns {
         header: named.iter().map(str::to_string).collect(),
         header_line: headers.position().map_or(0, |p| line_of(&bytes, p)).max(1),

@@ -175,7 +175,8 @@ fn read_run_lacking(
         optional,
         also_read: Some(&others),
     };
-    let (mut c, slips) = read_columns_with_slips(path, layout, declared_by.1)?;
+    let names: Vec<&str> = declared_by.0.iter().map(|a| a.name()).collect();
+    let (mut c, slips) = read_columns_with_slips(path, layout, (declared_by.1, &names))?;
     let (declared, absent) = declared_columns(path, &c, declared_by, optional, lacking)?;
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()

@@ -113,11 +113,13 @@ fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
 fn a_degrees_column_the_file_does_not_have_is_refused_with_its_columns() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("run.csv");
-    fs::write(&p, estimator_run().replacen("beta", "beta_deg", 1)).unwrap();
+    // `beta_deg` would be `beta` with its unit in the header: a name that
+    // states no unit.
+    fs::write(&p, estimator_run().replacen("beta", "beta_est", 1)).unwrap();
     let (ok, _, e) = metrics(&p, &["--degrees", "beta"]);
     assert!(!ok);
     assert!(
-        e.contains("run.csv:1:1: `--degrees` to `metrics` names `beta`, a column this file does not have (its columns: t, speed, steer, yaw_rate, beta_deg); did you mean `beta_deg`? Rename the column to `beta`"),
+        e.contains("run.csv:1:1: `--degrees` to `metrics` names `beta`, a column this file does not have (its columns: t, speed, steer, yaw_rate, beta_est); did you mean `beta_est`? Rename the column to `beta`"),
         "{e}"
     );
     // A replay's [manoeuvre] degrees.

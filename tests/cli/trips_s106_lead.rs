@@ -148,3 +148,44 @@ fn a_measured_column_the_model_reproduces_names_no_line() {
         "{said}"
     );
 }
+
+/// A run whose header states the steer in degrees (`steer [deg]`) read by
+/// `metrics --degrees steer`: the declaration and the header agree, so the
+/// column is read and converted (units41 refused it, telling the user to
+/// declare what was declared), and measures as the run in radians does.
+#[test]
+fn a_header_in_degrees_declared_in_degrees_is_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = trips_s90_met::tester_step(dir.path(), 0.05, "");
+    let text = fs::read_to_string(&history).unwrap();
+    let head: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let steer = head.iter().position(|c| *c == "steer").unwrap();
+    let mut deg = String::new();
+    for (i, l) in text.lines().enumerate() {
+        let cells: Vec<String> = l
+            .split(',')
+            .enumerate()
+            .map(|(k, c)| match (i, k == steer) {
+                (0, true) => "steer [deg]".to_string(),
+                (0, false) => c.to_string(),
+                (_, true) => c.parse::<f64>().unwrap().to_degrees().to_string(),
+                (_, false) => c.to_string(),
+            })
+            .collect();
+        deg += &(cells.join(",") + "\n");
+    }
+    let deg = written(dir.path(), "deg.csv", &deg);
+    let json = |p: &Path, extra: &[&str]| {
+        let mut args = vec!["metrics", p.to_str().unwrap(), "--json"];
+        args.extend_from_slice(extra);
+        let o = run(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()
+    };
+    let plain = json(&history, &[]);
+    let stated = json(&deg, &["--degrees", "steer"]);
+    for key in ["steer_step", "yaw_rate_gain", "yaw_rate_response_time"] {
+        let (a, b) = (plain[key].as_f64().unwrap(), stated[key].as_f64().unwrap());
+        assert!((a - b).abs() <= 1e-6 * a.abs(), "{key}: {a} against {b}");
+    }
+}

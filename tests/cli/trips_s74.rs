@@ -69,8 +69,9 @@ fn a_rig_header_in_the_ttc_names_is_refused_naming_what_each_column_means() {
         &["identify", "units.csv", "--model", "gim"],
     ));
     for said in [
-        "units.csv:1:3: missing required column `fz` (the header has: Fy_N, SA_deg, FZ_kN, MZ, P, t); header column 3, `FZ_kN`: did you mean `fz`?",
-        "units.csv:1:2: column `SA_deg` is not one this command reads: did you mean `alpha`?",
+        // A unit in the header is read as one and told its conversion.
+        "units.csv:1:3: column `FZ_kN` is `fz` in kN, and `fz` is read in N (FORMATS.md): convert the values (",
+        "units.csv:1:2: column `SA_deg` is `alpha` in ",
         "units.csv:1:4: column `MZ` is not one this command reads: did you mean `mz`?",
         "units.csv:1:5: column `P` is not one this command reads: did you mean `pressure`?",
     ] {

@@ -91,13 +91,14 @@ fn column_named(name: &str, checked: &[&str], known: &[&str]) -> Option<(&'stati
 
 /// The reading of the header column `h` by a reader of the columns
 /// `checked` (read) and `known` (only known of), whose run angles are
-/// declared in degrees by `by` where it has one; `None`: no column with
-/// a unit, left to the other header checks.
+/// declared in degrees by `by` where it has one (`declared`: the columns
+/// it declares so); `None`: no column with a unit, left to the other
+/// header checks.
 pub(super) fn reading(
     h: &str,
-    checked: &[&str],
-    known: &[&str],
+    (checked, known): (&[&str], &[&str]),
     by: Option<DeclaredBy>,
+    declared: &[&str],
 ) -> Option<Reading> {
     let (column, exact, stated, bracketed) = match split(h) {
         Some((name, text, true)) => {
@@ -116,6 +117,11 @@ pub(super) fn reading(
                 return None;
             }
             UnitAdvice::OtherQuantity
+        }
+        // Declared in degrees and stated so: the two agree, and the
+        // declaration converts it (`beta_deg` with `--degrees beta`).
+        Stated::Known(Unit::Degree | Unit::DegreePerSecond) if declared.contains(&column) => {
+            return exact.then_some(Reading::Accept(column));
         }
         Stated::Known(u) => match by {
             Some(by)
@@ -173,13 +179,13 @@ pub(super) fn canonical(
     header: &csv::StringRecord,
     checked: &[&str],
     known: &[&str],
-    by: Option<DeclaredBy>,
+    (by, declared): (Option<DeclaredBy>, &[&str]),
 ) -> (csv::StringRecord, Vec<(usize, HeaderUnit)>) {
     let mut refused = Vec::new();
     let names: Vec<String> = header
         .iter()
         .enumerate()
-        .map(|(i, h)| match reading(h, checked, known, by) {
+        .map(|(i, h)| match reading(h, (checked, known), by, declared) {
             Some(Reading::Accept(c)) => c.to_string(),
             Some(Reading::Refuse(r)) => {
                 let c = r.column.to_string();
@@ -199,7 +205,7 @@ mod tests {
     const RUN: [&str; 5] = ["t", "speed", "steer", "yaw_rate", "ay"];
 
     fn refused(h: &str, by: Option<DeclaredBy>) -> Option<HeaderUnit> {
-        match reading(h, &RUN, &[], by) {
+        match reading(h, (&RUN, &[]), by, &[]) {
             Some(Reading::Refuse(r)) => Some(r),
             _ => None,
         }
@@ -215,12 +221,12 @@ mod tests {
             "ay [m/s^2]",
         ] {
             assert!(
-                matches!(reading(h, &RUN, &[], None), Some(Reading::Accept(_))),
+                matches!(reading(h, (&RUN, &[]), None, &[]), Some(Reading::Accept(_))),
                 "{h}"
             );
         }
         // The SI unit under another case is a renaming, said as a slip.
-        assert!(reading("Speed [m/s]", &RUN, &[], None).is_none());
+        assert!(reading("Speed [m/s]", (&RUN, &[]), None, &[]).is_none());
         let r = refused("yaw_rate_deg_s", Some(DeclaredBy::MetricsOption)).unwrap();
         assert_eq!(
             (r.column, r.stated),
@@ -243,10 +249,10 @@ mod tests {
             UnitAdvice::UnknownUnit
         );
         // `speed_ms` is no unit of a speed after an underscore: a slip.
-        assert!(reading("speed_ms", &RUN, &[], None).is_none());
+        assert!(reading("speed_ms", (&RUN, &[]), None, &[]).is_none());
         // A rig's channel name with its unit is the column it stands for.
         let rig = ["fz", "alpha"];
-        match reading("SA_deg", &rig, &[], None) {
+        match reading("SA_deg", (&rig, &[]), None, &[]) {
             Some(Reading::Refuse(r)) => assert_eq!(r.column, "alpha"),
             _ => panic!("SA_deg not read"),
         }

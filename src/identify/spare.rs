@@ -195,7 +195,19 @@ where
     let (kept, refused): (Vec<_>, Vec<_>) = tried
         .into_iter()
         .partition(|t| t.0.as_ref().is_some_and(|t| t.cost - base <= most));
-    let refusals: Vec<Refusal> = refused
+    let refusals = refusals_of(&refused);
+    Spared {
+        kept: chosen(fit, kept.into_iter().filter_map(|t| t.0).collect()),
+        refused: refusals.iter().map(|r| r.k).collect(),
+        refusals,
+        evaluations,
+    }
+}
+
+/// The refusals of the holds `refused` that left a fit (a refit without
+/// a finite cost left none to report).
+fn refusals_of<P>(refused: &[(Option<Tried<P>>, usize)]) -> Vec<Refusal> {
+    refused
         .iter()
         .filter_map(|t| t.0.as_ref())
         .map(|t| Refusal {
@@ -203,13 +215,7 @@ where
             value: t.value,
             cost: t.cost,
         })
-        .collect();
-    Spared {
-        kept: chosen(fit, kept.into_iter().filter_map(|t| t.0).collect()),
-        refused: refusals.iter().map(|r| r.k).collect(),
-        refusals,
-        evaluations,
-    }
+        .collect()
 }
 
 /// `bounds` without entry `k`.

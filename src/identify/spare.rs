@@ -126,11 +126,22 @@ pub(crate) fn candidates(mut flagged: Vec<usize>, relative: impl Fn(usize) -> f6
 
 /// What one round of holds came to: the hold kept, if any, the
 /// candidates refused by the [`guard`] (their refits raised the cost past
-/// it), and the residual evaluations the refits took.
+/// it), each refusal with its value and cost (for its report), and the
+/// residual evaluations the refits took.
 pub(crate) struct Spared<P> {
     pub(crate) kept: Option<Tried<P>>,
     pub(crate) refused: Vec<usize>,
+    pub(crate) refusals: Vec<Refusal>,
     pub(crate) evaluations: usize,
+}
+
+/// A hold the [`guard`] refused: the parameter (index in the free
+/// vector), the value it was tried at and its best refit's cost (`½Σe²`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Refusal {
+    pub(crate) k: usize,
+    pub(crate) value: f64,
+    pub(crate) cost: f64,
 }
 
 /// The hold among `candidates` the fit can best spare (module notes).
@@ -181,12 +192,11 @@ where
     let (kept, refused): (Vec<_>, Vec<_>) = tried
         .into_iter()
         .partition(|t| t.0.as_ref().is_some_and(|t| t.cost - base <= most));
+    let refusals = refusals_of(&refused);
     Spared {
         kept: chosen(fit, kept.into_iter().filter_map(|t| t.0).collect()),
-        refused: refused
-            .iter()
-            .filter_map(|t| t.0.as_ref().map(|t| t.k))
-            .collect(),
+        refused: refusals.iter().map(|r| r.k).collect(),
+        refusals,
         evaluations,
     }
 }
@@ -245,6 +255,20 @@ where
     (r.cost.is_finite().then_some(tried), r.evaluations)
 }
 
+/// The refusals of the holds `refused` that left a fit (a refit without
+/// a finite cost left none to report).
+fn refusals_of<P>(refused: &[(Option<Tried<P>>, usize)]) -> Vec<Refusal> {
+    refused
+        .iter()
+        .filter_map(|t| t.0.as_ref())
+        .map(|t| Refusal {
+            k: t.k,
+            value: t.value,
+            cost: t.cost,
+        })
+        .collect()
+}
+
 /// `bounds` without entry `k`.
 fn without_bounds(bounds: &[(f64, f64)], k: usize) -> Vec<(f64, f64)> {
     let mut b = bounds.to_vec();
@@ -277,7 +301,7 @@ fn chosen<P: Residuals>(fit: &HoldFit<P>, tried: Vec<Tried<P>>) -> Option<Tried<
 /// last digits of where its refit stopped; `½·2.25²·s² ≈ 2.5s²` keeps it,
 /// and on few residuals still refuses the holds the data reject (on the
 /// many of a rig file, [`SIGMA_RISE`] decides).
-const GUARD_STANDARD_ERRORS: f64 = 2.25;
+pub(crate) const GUARD_STANDARD_ERRORS: f64 = 2.25;
 
 /// The rise of σ, relative, that a hold may always cost: the residuals
 /// of a tyre model on rig data are its form's error more than the rig's

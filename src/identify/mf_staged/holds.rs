@@ -29,7 +29,9 @@
 //!   linear, and where it is not, a hold the data reject would be kept
 //!   (`RVY1` and `RVY6` on MFeval's own MF 6.1 grid, noise-free, held at
 //!   one standard error took combined Fy's σ from 0.064 % to 0.911 %). The trying and choosing is the swarm fit's code too
-//!   (`identify/spare.rs`, with this tie rule as its parameter). A stated
+//!   (`identify/spare.rs`, with this tie rule as its parameter; the rounds
+//!   are `hold_rounds.rs`, and a refused hold is said with what it cost
+//!   by `hold_refusal.rs`). A stated
 //!   value more than two standard errors from the fitted one is said, on
 //!   its held line, to be one the data lean against, with `--hold` to
 //!   choose another.
@@ -42,16 +44,10 @@
 //! primary ones at a passenger tyre's values.
 
 use super::book_defaults::pacejka_book_default;
-use super::hold_guard::{guarded_refit, Fitted, Refit};
 use super::params::{Need, HELD};
-use super::problem::StageProblem;
-use super::uncertainty::{uncertainty, Uncertainty, ABSURD_EFFECT_PERCENT};
+use super::uncertainty::ABSURD_EFFECT_PERCENT;
 use crate::format::{exact, readable};
-use crate::identify::spare::{
-    candidates, held_at, held_at_tried, lean_clause, spare, standard_errors_away, HoldFit,
-    HoldWays, Spared, TieBreak, Tried,
-};
-use crate::optim::bounded::BoundedLm;
+use crate::identify::spare::{held_at, held_at_tried, lean_clause};
 use serde::Serialize;
 use std::fmt;
 
@@ -372,205 +368,6 @@ impl Holding {
             ),
         }
     }
-}
-
-/// A stage's fit in progress: its problem and its free parameters (with
-/// the levels each needs) at `p`, within `bounds`, started at `starts`.
-pub(super) struct StageFit<'a> {
-    pub(super) problem: StageProblem<'a>,
-    pub(super) needs: Vec<Need>,
-    pub(super) p: Vec<f64>,
-    pub(super) bounds: Vec<(f64, f64)>,
-    pub(super) starts: Vec<f64>,
-}
-
-/// Holds the parameters of `fit` the data do not determine at their
-/// `stated` values, one at a time (module notes). The hold is chosen by
-/// refitting the rest from the optimum (Levenberg–Marquardt within the
-/// bounds); the one chosen is then refitted by the stage's own fit from
-/// its start values (`refit`) too, and the better of the two kept: a
-/// warm start that jumped one coefficient can stall where a fresh one
-/// does not. Returns each held parameter with its value and reason; adds
-/// the residual evaluations to `evaluations`.
-pub(super) fn hold_undetermined(
-    fit: &mut StageFit,
-    stated: &dyn Fn(&str) -> (f64, HoldSource),
-    refit: &Refit,
-    iterations: usize,
-    evaluations: &mut usize,
-) -> Vec<(&'static str, f64, HoldReason)> {
-    let mut held = Vec::new();
-    // Coefficients whose hold the guard refused: left free, with their
-    // warning, and not tried again (`spare.rs`).
-    let mut refused: Vec<&str> = Vec::new();
-    let lm = BoundedLm {
-        iterations,
-        tolerance: 1e-12,
-        ..BoundedLm::default()
-    };
-    while fit.p.len() > 1 {
-        let u = uncertainty(&fit.problem, &fit.p);
-        let relative = |k: usize| {
-            u.std_error[k].map_or(f64::INFINITY, |s| s / fit.p[k].abs().max(f64::MIN_POSITIVE))
-        };
-        let flagged: Vec<usize> = (0..fit.p.len())
-            .filter(|&k| u.flagged(k, fit.p[k]) && !refused.contains(&fit.problem.names[k]))
-            .collect();
-        // The stated values up front: the holds are tried side by side.
-        let values: Vec<f64> = fit.problem.names.iter().map(|n| stated(n).0).collect();
-        let fit_ref: &StageFit = fit;
-        let (problem, p) = (&fit.problem, &fit.p);
-        let ways = HoldWays {
-            without: |k: usize, value: f64| held_out(problem, p, k, value),
-            stated: |k: usize| values[k],
-            compensating: |k: usize, dv: f64| u.compensating(k, dv),
-            refit: |sub: &StageProblem, x: &[f64], b: &[(f64, f64)]| {
-                guarded_refit(fit_ref.at(), sub, lm.minimize(sub, x, b), b, refit)
-            },
-        };
-        // A standard error taken at a bound means nothing: a parameter
-        // stopped there is held at its stated value, as its line says, not
-        // at the end of ±2 of them (QBZ1 was said held at the template's
-        // 11.692 and written as 2.98, twice a meaningless error off 0).
-        let std_errors: Vec<Option<f64>> = (0..p.len())
-            .map(|k| off_bound_error(&u, k, p[k], fit.bounds[k]))
-            .collect();
-        let holding = HoldFit {
-            problem,
-            p,
-            std_errors: &std_errors,
-            bounds: &fit.bounds,
-            clamp_starts: true,
-            tie: TieBreak::LatestInOrder,
-            guarded: true,
-            stated_first: true,
-        };
-        let Spared {
-            kept,
-            refused: now_refused,
-            evaluations: n,
-        } = spare(&holding, &candidates(flagged, relative), &ways);
-        *evaluations += n;
-        refused.extend(now_refused.iter().map(|&k| fit.problem.names[k]));
-        let Some(tried) = kept else {
-            if now_refused.is_empty() {
-                break;
-            }
-            continue;
-        };
-        let (name, value) = (fit.problem.names[tried.k], tried.value);
-        let mut why = not_identifiable(fit, &u, tried.k, stated(name), value);
-        let free = fit.problem.sigma_percent(&fit.p);
-        keep(fit, tried, refit, evaluations);
-        if let HoldReason::NotIdentifiable {
-            sigma_held_free, ..
-        } = &mut why
-        {
-            *sigma_held_free = Some([fit.problem.sigma_percent(&fit.p), free]);
-        }
-        held.push((name, value, why));
-    }
-    held
-}
-
-impl<'a> StageFit<'a> {
-    /// The fit as the guard reads it: problem, point, needs and starts.
-    fn at(&self) -> Fitted<'_, 'a> {
-        Fitted {
-            problem: &self.problem,
-            p: &self.p,
-            needs: &self.needs,
-            starts: &self.starts,
-        }
-    }
-}
-
-/// The stage's `problem` at `p` with its `k`-th parameter held at
-/// `value`: the tyre with it set, and the rest free.
-pub(super) fn held_out<'a>(
-    problem: &StageProblem<'a>,
-    p: &[f64],
-    k: usize,
-    value: f64,
-) -> StageProblem<'a> {
-    let mut base = problem.tyre(p);
-    base.coefficients.set(problem.names[k], value);
-    let mut names = problem.names.clone();
-    names.remove(k);
-    StageProblem::new(
-        base,
-        problem.stage,
-        names,
-        problem.rows.clone(),
-        problem.derivatives,
-    )
-}
-
-/// The standard error of the `k`-th parameter (at `v`, within `bounds`),
-/// none where it stopped at a bound: a standard error taken there means
-/// nothing.
-fn off_bound_error(u: &Uncertainty, k: usize, v: f64, bounds: (f64, f64)) -> Option<f64> {
-    u.std_error[k].filter(|_| near_bound(v, bounds).is_none())
-}
-
-/// Why the `k`-th parameter of `fit` is held at `held_at`: not
-/// identifiable, with its fitted value, standard error and effect, its
-/// stated value and source (`stated`), and the bound it stopped at.
-fn not_identifiable(
-    fit: &StageFit,
-    u: &Uncertainty,
-    k: usize,
-    (value, source): (f64, HoldSource),
-    held_at: f64,
-) -> HoldReason {
-    // At a bound the standard error and its effect are taken as if the
-    // box were not there: not reported (null in the report too).
-    let at_bound = near_bound(fit.p[k], fit.bounds[k]);
-    let std_error = u.std_error[k].filter(|_| at_bound.is_none());
-    HoldReason::NotIdentifiable {
-        fitted: fit.p[k],
-        std_error,
-        effect_percent: match at_bound {
-            None => 100.0 * u.effect[k],
-            Some(_) => f64::NAN,
-        },
-        source,
-        stated: value,
-        held_at,
-        standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
-        at_bound,
-        sigma_held_free: None,
-    }
-}
-
-/// `fit` with the hold `tried` kept: its problem, and of its refit from
-/// the optimum and the stage's own fit of it from its start values
-/// (`refit`) the better (a warm start that jumped one coefficient can
-/// stall where a fresh one does not). Adds the residual evaluations to
-/// `evaluations`.
-fn keep<'a>(
-    fit: &mut StageFit<'a>,
-    tried: Tried<StageProblem<'a>>,
-    refit: &Refit,
-    evaluations: &mut usize,
-) {
-    let Tried {
-        k,
-        problem,
-        p: mut refitted,
-        cost,
-        ..
-    } = tried;
-    fit.needs.remove(k);
-    fit.starts.remove(k);
-    fit.bounds.remove(k);
-    let fresh = refit(&problem, &fit.needs, &fit.starts, &fit.bounds);
-    *evaluations += fresh.evaluations;
-    if fresh.cost.is_finite() && fresh.cost < cost {
-        refitted = fresh.params;
-    }
-    fit.problem = problem;
-    fit.p = refitted;
 }
 
 #[cfg(test)]

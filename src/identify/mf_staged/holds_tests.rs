@@ -85,7 +85,7 @@ fn a_hold_reason_reads_as_a_sentence() {
 /// reason alone.
 #[test]
 fn a_held_line_says_the_value_held_and_the_stated_one() {
-    use crate::identify::spare::held_value;
+    use crate::identify::spare::{held_value, standard_errors_away};
     let rule = |stated: f64| {
         let (fitted, se) = (0.0009574, Some(0.002192));
         HoldReason::NotIdentifiable {

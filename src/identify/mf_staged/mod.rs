@@ -104,6 +104,8 @@
 mod book_defaults;
 mod fit_warnings;
 mod hold_guard;
+mod hold_refusal;
+mod hold_rounds;
 mod holds;
 mod paper_lm;
 pub use fit_warnings::{LARGE_SIGMA_PERCENT, MIN_POINTS_PER_PARAMETER};
@@ -118,6 +120,7 @@ mod template_start;
 mod uncertainty;
 
 pub use book_defaults::pacejka_book_default;
+pub use hold_refusal::{GuardLimit, MoreData, RefusedHold};
 pub use holds::{HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
 pub(crate) use params::fixed_bounds;
@@ -352,6 +355,9 @@ pub struct StageParameter {
     pub on_bound: Option<f64>,
     /// An identifiability warning.
     pub warning: Option<String>,
+    /// A hold of this free parameter the guard refused: the value tried,
+    /// what it cost, and what the user can do (`None`: none refused).
+    pub hold_refused: Option<RefusedHold>,
 }
 
 /// The outcome of one stage.

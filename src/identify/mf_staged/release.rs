@@ -4,7 +4,7 @@
 //! inside its box first (`profiled`), σ of a stage's channel, and why a
 //! stage is skipped.
 
-use super::holds::held_out;
+use super::hold_rounds::held_out;
 use super::params::{Need, Stage, ANY};
 use super::problem::StageProblem;
 use super::MfRow;

@@ -4,7 +4,8 @@
 //! value (`holds.rs`), and the standard errors and identifiability
 //! warnings at the optimum (`uncertainty.rs`).
 
-use super::holds::{held_reason, hold_undetermined, HoldReason, Holding, StageFit};
+use super::hold_rounds::{hold_undetermined, HoldOutcome, StageFit};
+use super::holds::{held_reason, HoldReason, Holding};
 use super::paper_lm::paper_lm;
 use super::params::{names_of, physical_bounds, Need, Stage};
 use super::problem::{unbounded, Derivatives, StageProblem};
@@ -324,11 +325,7 @@ fn start_bounds(start: StartScheme, names: &[&'static str], starts: &[f64]) -> V
 /// The parameters of `fit` the data do not determine, held at their
 /// stated values and the rest refitted (`holds.rs`; none for the paper's
 /// scheme), the evaluations counted into `evaluations`.
-fn held_undetermined(
-    fit: &mut StageFit,
-    run: &StageRun,
-    evaluations: &mut usize,
-) -> Vec<(&'static str, f64, HoldReason)> {
+fn held_undetermined(fit: &mut StageFit, run: &StageRun, evaluations: &mut usize) -> HoldOutcome {
     // Judged even where the stage stopped on its cap: a fit crawling
     // along a direction the data barely see (PKY1 against PKY4) does not
     // converge because of it, and the holds are its remedy; the stage's
@@ -338,7 +335,10 @@ fn held_undetermined(
         run.holding.stated(name, template)
     };
     match run.start {
-        StartScheme::Paper => hold_insensitive(fit, &stated),
+        StartScheme::Paper => HoldOutcome {
+            held: hold_insensitive(fit, &stated),
+            refused: Vec::new(),
+        },
         StartScheme::Data | StartScheme::Template => {
             let refit =
                 |problem: &StageProblem, needs: &[Need], starts: &[f64], bounds: &[(f64, f64)]| {
@@ -379,7 +379,7 @@ fn hold_insensitive(
         let name = fit.problem.names[k];
         let (value, source) = stated(name);
         let before = cost(&fit.problem, &fit.p);
-        let without = super::holds::held_out(&fit.problem, &fit.p, k, value);
+        let without = super::hold_rounds::held_out(&fit.problem, &fit.p, k, value);
         let mut rest = fit.p.clone();
         rest.remove(k);
         let same = |problem: &StageProblem, p: &[f64]| cost(problem, p) <= before * (1.0 + 1e-9);
@@ -419,12 +419,13 @@ fn hold_insensitive(
 }
 
 /// The report of each parameter of the stage's `table` in the fitted
-/// `tyre`: fitted (with its start, standard error `u` and any warning)
-/// or held, and why (`held` by the data, given, or for want of levels).
+/// `tyre`: fitted (with its start, standard error `u`, any warning and
+/// any hold refused) or held, and why (`holds` by the data, given, or
+/// for want of levels).
 fn stage_parameters(
     table: &[(&'static str, Need)],
     tyre: &MagicFormula,
-    (fit, held, u): (&StageFit, &[(&'static str, f64, HoldReason)], &Uncertainty),
+    (fit, holds, u): (&StageFit, &HoldOutcome, &Uncertainty),
     run: &StageRun,
     have: [usize; 3],
 ) -> Vec<StageParameter> {
@@ -433,7 +434,8 @@ fn stage_parameters(
         .map(|(name, need)| {
             let value = tyre.coefficients.get(name).unwrap_or(0.0);
             let fitted = fit.problem.names.iter().position(|k| k == name);
-            let because = held
+            let because = holds
+                .held
                 .iter()
                 .find(|h| h.0 == *name)
                 .map(|h| h.2.clone())
@@ -455,6 +457,15 @@ fn stage_parameters(
                     .zip(fitted)
                     .map(|(_, k)| bound_warning(fit.bounds[k]))
                     .or_else(|| fitted.and_then(|k| u.warning(k, value))),
+                // Free after its hold was refused: what was tried, and
+                // what it cost (`hold_refusal.rs`).
+                hold_refused: fitted.and_then(|_| {
+                    holds
+                        .refused
+                        .iter()
+                        .find(|r| r.0 == *name)
+                        .map(|r| r.1.clone())
+                }),
             }
         })
         .collect()

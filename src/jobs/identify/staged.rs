@@ -205,13 +205,19 @@ pub(super) fn stage_lines(
             _ => None,
         }));
         out.extend(level_held_lines(&s.parameters));
+        // A free parameter's warning, and the hold the guard refused it
+        // (said by the refusal itself, `mf_staged::RefusedHold`).
         out.extend(s.parameters.iter().filter_map(|p| {
-            let w = p.warning.as_deref()?;
-            Some(format!(
-                "    warning: {} = {}: {w}",
-                p.name,
-                crate::format::rounded(p.value, 4)
-            ))
+            let refused = p.hold_refused.as_ref().map(|r| r.said(p.name, s.stage));
+            let w: Vec<String> = p.warning.iter().cloned().chain(refused).collect();
+            (!w.is_empty()).then(|| {
+                format!(
+                    "    warning: {} = {}: {}",
+                    p.name,
+                    crate::format::rounded(p.value, 4),
+                    w.join("; ")
+                )
+            })
         }));
     }
     out

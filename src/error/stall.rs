@@ -7,6 +7,8 @@
 //! large steer". The linear steady state is the bicycle model's
 //! (Milliken & Milliken 1995, ch. 5): yaw-rate gain `u/(l + K·u²)`,
 //! lateral acceleration `u²·δ/(l + K·u²)`, `K` the understeer gradient.
+//! On tyres with no grip limit (linear) the step the advice suggests keeps
+//! the turn within the road's μ·g as well as on four wheels.
 //! Units: SI and rad inside; printed in m/s, m/s², g and degrees.
 
 use crate::constants::G;
@@ -57,6 +59,11 @@ pub struct AskedTurn {
     pub gradient: f64,
     /// The limit the asked turn passes.
     pub limit: TurnLimit,
+    /// The road's friction where a tyre has no grip limit of its own
+    /// (linear) and its μ·g lies below the limit: the advice keeps the
+    /// steady turn within it too (a step that only stays on four wheels
+    /// ran at 1.39 g on linear tyres).
+    pub road: Option<f64>,
 }
 
 impl AskedTurn {
@@ -82,14 +89,25 @@ impl AskedTurn {
     /// The largest steer whose steady state stays at the limit at this
     /// speed, rad: `A·(l + K·u²)/u²`.
     pub fn largest_steer(&self) -> f64 {
-        let u2 = self.speed * self.speed;
-        self.limit.ay() * (self.wheelbase + self.gradient * u2) / u2
+        self.steer_for(self.limit.ay())
     }
 
     /// The highest speed at which this steer's steady state stays at the
     /// limit, m/s: `√(A·l/(δ − A·K))`, from `u²·δ = A·(l + K·u²)`.
     pub fn highest_speed(&self) -> f64 {
-        let a = self.limit.ay();
+        self.speed_for(self.limit.ay())
+    }
+
+    /// The steer whose steady lateral acceleration at this speed is `a`,
+    /// m/s², rad.
+    pub fn steer_for(&self, a: f64) -> f64 {
+        let u2 = self.speed * self.speed;
+        a * (self.wheelbase + self.gradient * u2) / u2
+    }
+
+    /// The speed at which this steer's steady lateral acceleration is `a`,
+    /// m/s², m/s.
+    pub fn speed_for(&self, a: f64) -> f64 {
         (a * self.wheelbase / (self.steer - a * self.gradient)).sqrt()
     }
 }
@@ -175,7 +193,22 @@ impl fmt::Display for AskedTurn {
             fixed(self.speed, 1),
             fixed(self.steer.to_degrees(), 2),
             rounded_down(self.highest_speed(), 3)
-        )
+        )?;
+        if let Some(mu) = self.road {
+            let a = mu * G;
+            write!(
+                f,
+                "; on the road, whose friction {} gives {} m/s² ({} g), a step of at most {}° at {} m/s, or of {}° below {} m/s, keeps it within that too: the linear tyres have no grip limit of their own and run past it without sliding",
+                rounded(mu, 3),
+                fixed(a, 1),
+                fixed(mu, 2),
+                rounded_down(self.steer_for(a).to_degrees(), 2),
+                fixed(self.speed, 1),
+                fixed(self.steer.to_degrees(), 2),
+                rounded_down(self.speed_for(a), 3)
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -194,6 +227,7 @@ mod tests {
             wheelbase: l,
             gradient: 1530.0 / l * (1.11 / c - 1.67 / c),
             limit: TurnLimit::Lift(G * 1.55 / (2.0 * 0.55)),
+            road: None,
         }
     }
 
@@ -225,6 +259,31 @@ mod tests {
             said.contains("= 43.7 m/s² (4.46 g), beyond the 13.8 m/s²"),
             "{said}"
         );
+    }
+
+    /// On linear tyres the advice keeps the turn within the road's μ·g
+    /// too: at friction 1, 9.807 m/s² at 30 m/s is a step of
+    /// 9.807·(2.78 − 0.00269·900)/900 = 0.2244°, and 1° holds it up to
+    /// √(9.807·2.78/(0.017453 + 9.807·0.00269)) = 24.9 m/s (26.5 m/s
+    /// holds it on four wheels, at 1.4 g).
+    #[test]
+    fn on_linear_tyres_the_advice_keeps_the_turn_within_the_roads_grip() {
+        let a = AskedTurn {
+            road: Some(1.0),
+            ..tester()
+        };
+        let g = a.steer_for(G).to_degrees();
+        let u = a.speed_for(G);
+        assert!((g - 0.2244).abs() < 1e-3, "{g}");
+        assert!((u - 24.94).abs() < 0.01, "{u}");
+        let at = AskedTurn { speed: u, ..a };
+        assert!((at.asked() - G).abs() < 1e-9);
+        let said = a.to_string();
+        assert!(
+            said.contains("keeps the steady state within it; on the road, whose friction 1 gives 9.8 m/s² (1.00 g), a step of at most 0.22° at 30.0 m/s, or of 1.00° below 24.9 m/s, keeps it within that too"),
+            "{said}"
+        );
+        assert!(!tester().to_string().contains("on the road"));
     }
 
     /// Far below the critical speed (gain factor under 2) no critical

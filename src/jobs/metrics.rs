@@ -167,17 +167,17 @@ fn settings_said(
     let dt = crate::measured::clean::median_interval(clock);
     // A cutoff suggested is measured through, so that following it is
     // not warned of again.
-    let response_at = |f: f64| {
+    let metrics_at = |f: f64| {
         let at = MetricSettings {
             filter_hz: Some(f),
             ..*settings
         };
         let m = measured_step_metrics(run.clone(), min_speed, &at).ok()?;
-        Some(m.metrics.yaw_rate_response_time)
+        Some(m.metrics)
     };
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
         let response = m.metrics.yaw_rate_response_time;
-        out.push(filter_speed::not_filtered(f, dt, response, &response_at));
+        out.push(filter_speed::not_filtered(f, dt, response, &metrics_at));
     }
     let piece = m.t_end - m.t_start;
     out.extend(windows_said(&m.metrics, settings, clock, m.t_end));
@@ -192,7 +192,7 @@ fn settings_said(
     out.extend(filter_speed::filter_measures_itself_with(
         &m.metrics,
         dt,
-        &response_at,
+        &metrics_at,
     ));
     out
 }

@@ -56,7 +56,7 @@ mod divergence;
 mod filter;
 mod held;
 mod variance;
-pub(crate) use filter::zero_phase_low_pass;
+pub(crate) use filter::{below_filter_limit, zero_phase_low_pass};
 pub(crate) use held::{step_metrics, step_metrics_held};
 
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it

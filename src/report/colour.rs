@@ -3,9 +3,49 @@
 //! value on it ([`ColourScale`]): linear, logarithmic for positive values
 //! spanning decades, or by quantile where a few extreme cells would leave
 //! the rest of the map one colour. Non-finite values have no position: the
-//! figure draws them as cells without a value.
+//! figure draws them as cells without a value. And how far apart two
+//! colours look ([`delta_e76`]): the CIE 1976 colour difference ΔE*ab, the
+//! Euclidean distance in CIE L*a*b* (CIE 15:2004) of sRGB colours
+//! (IEC 61966-2-1, D65 white); about 2.3 is a just noticeable difference
+//! (Sharma 2003), and series a reader must tell apart at a glance stand
+//! more than 15 apart.
 
 use plotters::style::RGBColor;
+
+/// CIE L*a*b* of an sRGB colour (D65 white): L* from 0 (black) to 100
+/// (white).
+pub fn lab(c: RGBColor) -> [f64; 3] {
+    // sRGB's gamma undone (IEC 61966-2-1), then its primaries to XYZ.
+    let linear = |v: u8| {
+        let v = f64::from(v) / 255.0;
+        match v > 0.04045 {
+            true => ((v + 0.055) / 1.055).powf(2.4),
+            false => v / 12.92,
+        }
+    };
+    let (r, g, b) = (linear(c.0), linear(c.1), linear(c.2));
+    let x = 0.4124 * r + 0.3576 * g + 0.1805 * b;
+    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    let z = 0.0193 * r + 0.1192 * g + 0.9505 * b;
+    // The cube root, linear near black (CIE 15:2004, δ = 6/29).
+    const D: f64 = 6.0 / 29.0;
+    let f = |t: f64| match t > D.powi(3) {
+        true => t.cbrt(),
+        false => t / (3.0 * D * D) + 4.0 / 29.0,
+    };
+    let (fx, fy, fz) = (f(x / 0.95047), f(y), f(z / 1.08883));
+    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
+}
+
+/// The CIE 1976 colour difference ΔE*ab of two sRGB colours.
+pub fn delta_e76(a: RGBColor, b: RGBColor) -> f64 {
+    let (p, q) = (lab(a), lab(b));
+    p.iter()
+        .zip(q)
+        .map(|(u, v)| (u - v).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
 
 /// A blue → green → yellow colour map (viridis-like) for t in [0, 1].
 pub fn colormap(t: f64) -> RGBColor {
@@ -176,6 +216,23 @@ mod tests {
         // Ranks spread evenly: the third of seven sits at 2/6.
         assert!((q.position(0.1).unwrap() - 2.0 / 6.0).abs() < 1e-12);
         assert!((q.value_at(2.0 / 6.0).unwrap() - 0.1).abs() < 1e-12);
+    }
+
+    /// White is L* 100 and grey-free, black 0; sRGB red's published
+    /// L*a*b* (53.24, 80.09, 67.20; Lindbloom's calculator, D65) within
+    /// the matrix's rounding; the distance is symmetric and white to
+    /// black is 100.
+    #[test]
+    fn lab_and_delta_e_match_published_values() {
+        let close = |p: [f64; 3], q: [f64; 3]| p.iter().zip(q).all(|(u, v)| (u - v).abs() < 0.05);
+        assert!(close(lab(RGBColor(255, 255, 255)), [100.0, 0.0, 0.0]));
+        assert!(close(lab(RGBColor(0, 0, 0)), [0.0, 0.0, 0.0]));
+        let red = lab(RGBColor(255, 0, 0));
+        assert!(close(red, [53.24, 80.09, 67.20]), "{red:?}");
+        let (w, k) = (RGBColor(255, 255, 255), RGBColor(0, 0, 0));
+        assert!((delta_e76(w, k) - 100.0).abs() < 1e-3);
+        let (a, b) = (RGBColor(31, 119, 180), RGBColor(160, 196, 222));
+        assert_eq!(delta_e76(a, b), delta_e76(b, a));
     }
 
     #[test]

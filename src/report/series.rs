@@ -1,6 +1,8 @@
 //! What a figure's series are: the data, how each is drawn ([`Style`]) and in
 //! which colour ([`palette`], full or pale: [`Tone`]), shared by the panel drawing
-//! ([`super::plot`]) and its key (the legend column beside each panel).
+//! ([`super::plot`]) and its key (the legend column beside each panel);
+//! the colours that tell levels apart ([`LEVEL_COLOURS`]), chosen by their
+//! CIE76 distance (`colour.rs`) from each other and from their pale tints.
 
 use super::colour::ColourScale;
 use plotters::style::RGBColor;
@@ -185,15 +187,68 @@ pub fn palette(i: usize) -> RGBColor {
         // Magenta.
         RGBColor(204, 51, 153),
     ];
-    if i == INK {
-        return RGBColor(0, 0, 0);
+    match i {
+        INK => RGBColor(0, 0, 0),
+        // Olive (the tab10 palette's ninth): a level's colour where the
+        // light blue stood within ΔE 2 of the blue's pale tint.
+        OLIVE => RGBColor(188, 189, 34),
+        _ => P[i % P.len()],
     }
-    P[i % P.len()]
 }
+
+/// Olive, the palette's index past [`INK`]: a level of a fit figure.
+pub const OLIVE: usize = 11;
+
+/// The palette's colours that tell a fit figure's levels apart, a line
+/// in each over its points in the pale tint ([`Tone::Pale`]): the palette
+/// without grey (the key's "measured" swatch) and light blue (context,
+/// within ΔE 1.6 of the blue's pale tint: a ninth level's line read as
+/// the first level's points). Every colour stands more than
+/// [`LEVEL_FULL_APART`] from every other and more than
+/// [`LEVEL_PALE_APART`] from every pale tint, its own included (tested).
+pub const LEVEL_COLOURS: [usize; 9] = [0, 1, 2, 3, 4, 5, 6, 9, OLIVE];
+
+/// The least CIE76 colour difference ([`super::colour::delta_e76`]) of
+/// two levels' full colours (the closest pair, purple and magenta, is
+/// 37.3 apart).
+pub const LEVEL_FULL_APART: f64 = 25.0;
+
+/// The least CIE76 colour difference of a level's full colour from any
+/// level's pale tint (the closest, cyan over its own tint, is 20.5 apart;
+/// six to seven just noticeable differences).
+pub const LEVEL_PALE_APART: f64 = 15.0;
 
 /// Size of the axis labels and key text, px (the panels' and the key's).
 pub const LABEL_PX: u32 = 13;
 
 /// Black: the colour of a fitted model's line drawn over measured points
-/// coloured by condition (every other index wraps over the ten colours).
+/// coloured by condition (every index but it and [`OLIVE`] wraps over the
+/// ten colours).
 pub const INK: usize = 10;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::colour::delta_e76;
+
+    /// Every level's line stands apart from every other level's line and
+    /// from every level's pale points (its own too), and from the key's
+    /// grey points: the light blue that stood at ΔE 1.6 from the blue's
+    /// pale tint is not a level's.
+    #[test]
+    fn level_colours_stand_apart_from_each_other_and_every_pale_tint() {
+        let full: Vec<RGBColor> = LEVEL_COLOURS.iter().map(|&i| palette(i)).collect();
+        let mut pale: Vec<RGBColor> = full.iter().map(|&c| shade(c, Tone::Pale)).collect();
+        pale.push(shade(palette(7), Tone::Pale));
+        for (i, &a) in full.iter().enumerate() {
+            for &b in &full[i + 1..] {
+                assert!(delta_e76(a, b) > LEVEL_FULL_APART, "{a:?} {b:?}");
+            }
+            for &p in &pale {
+                assert!(delta_e76(a, p) > LEVEL_PALE_APART, "{a:?} over {p:?}");
+            }
+        }
+        assert!(delta_e76(palette(8), shade(palette(0), Tone::Pale)) < 2.0);
+        assert!(!LEVEL_COLOURS.contains(&8) && !LEVEL_COLOURS.contains(&INK));
+    }
+}

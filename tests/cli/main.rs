@@ -601,6 +601,7 @@ mod trips_s106_fix37a;
 mod trips_s106_lead;
 mod trips_s106_mfstaged41;
 mod trips_s106_shares41;
+mod trips_s106_small41;
 mod trips_s106_units41;
 mod trips_s62;
 mod trips_s62b;

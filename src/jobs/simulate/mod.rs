@@ -32,7 +32,7 @@ use crate::metrics::applicability::{
     applicability_with_grip, schedule_applicability, step_rate_applicability, Grip, Overshoot,
 };
 use crate::metrics::{simulated_step_metrics, StepMetrics};
-use crate::report::plot::{Figure, Panel, Series, MEASURED_DOTS};
+use crate::report::plot::{Figure, Panel, Series, Tone, MEASURED_DOTS};
 use crate::report::progress::Progress;
 use crate::report::stale::{leftovers, Leftovers, OwnSet};
 use crate::report::{
@@ -478,7 +478,9 @@ impl SimulateReport {
 /// Steer, yaw rate, lateral acceleration and sideslip against time, with a
 /// replayed run's measurements as dots under the model's line (a dashed
 /// line through noisy samples reads as a smear; drawn over the line, the
-/// dots hid it).
+/// dots hid it), in the pale tint the fit figures draw measured points in:
+/// in full red, a thousand dots five pixels wide outweighed the model's
+/// two-pixel line they lay under.
 fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -> Figure {
     let deg = |v: &[f64]| v.iter().map(|x| x.to_degrees()).collect::<Vec<_>>();
     let panel = |title: &str, y_label: &str, label: &str, y: &[f64]| Panel {
@@ -515,7 +517,9 @@ fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -
             // First, so the model's line is drawn over the samples.
             p.series.insert(
                 0,
-                Series::line("measured", &run.t, y, 1).styled(MEASURED_DOTS),
+                Series::line("measured", &run.t, y, 1)
+                    .styled(MEASURED_DOTS)
+                    .toned(Tone::Pale),
             );
         };
         add(&mut panels[1 + k], &deg(&run.yaw_rate));
@@ -563,6 +567,9 @@ mod tests {
             })
             .collect();
         let over = [("measured", MEASURED_DOTS), ("model", Style::Line)];
+        // The samples pale, the model's line full.
+        let tones: Vec<Tone> = f.panels[1].series.iter().map(|s| s.tone).collect();
+        assert_eq!(tones, [Tone::Pale, Tone::Full]);
         assert_eq!(drawn[1], over);
         assert_eq!(drawn[2], over);
         // No sideslip logged: the panel holds the model alone.

@@ -4,9 +4,11 @@
 //! oversteering car's critical speed as its divergence ([`critical`]); a
 //! step whose linearised car asks for a steady lateral acceleration beyond
 //! the lift-off of its inner wheels or its tyres' grip (near the critical
-//! speed or not) by those numbers; a large steer as one. A tester's 1°
-//! step 2 m/s under the critical speed was said as "linear tyres at a
-//! large steer". Units: SI, rad.
+//! speed or not) by those numbers, and on linear tyres, which have no grip
+//! limit, the step that keeps the turn within the road's μ·g too (the
+//! speed that only kept the car on four wheels ran at 1.39 g); a large
+//! steer as one. A tester's 1° step 2 m/s under the critical speed was
+//! said as "linear tyres at a large steer". Units: SI, rad.
 
 use super::{checks, critical};
 use crate::error::{
@@ -84,12 +86,18 @@ fn asked_turn(sc: &Scenario, s: &StepSteer) -> Option<AskedTurn> {
         Some(g) if g.ay() < lift.ay() => g,
         _ => lift,
     };
+    // Linear tyres hold any turn short of lift-off: the advice keeps it
+    // within the road's μ·g as well, which a car on real tyres holds.
+    let mu = sc.integrator.friction;
+    let unlimited = super::unlimited::unlimited_tyres(&sc.model).is_some();
+    let road = (unlimited && mu * crate::constants::G < limit.ay()).then_some(mu);
     let turn = AskedTurn {
         speed,
         steer: s.amplitude.abs(),
         wheelbase: sc.model.vehicle.wheelbase(),
-        gradient: critical::understeer_gradient_at(&sc.model, sc.integrator.friction, speed),
+        gradient: critical::understeer_gradient_at(&sc.model, mu, speed),
         limit,
+        road,
     };
     let asked = turn.asked();
     (limit.ay().is_finite() && asked.is_finite() && asked > limit.ay()).then_some(turn)

@@ -3,7 +3,8 @@
 //! §1.3: the linear range holds only well below the limit), so an
 //! equilibrium or a run on it is the same on ice as on dry asphalt. The
 //! tool says so where the road's friction is stated below 1 or swept,
-//! rather than report a lateral acceleration no such road can give.
+//! and of a run whose |ay| passes μ·g on any road, friction 1 too, rather
+//! than report a lateral acceleration no such road can give.
 //!
 //! Units: friction dimensionless; accelerations m/s².
 
@@ -58,19 +59,26 @@ pub(crate) fn friction_ignored(model: &VehicleModel, frictions: &[f64]) -> Optio
 }
 
 /// [`friction_ignored`] for a run, with the largest |ay| it reached
-/// against the `friction`·g the road can give, where it is above it.
+/// against the `friction`·g the road can give, where it is above it: on
+/// any road, friction 1 too (a 1° step at 26.4 m/s reached 1.39 g on
+/// linear tyres without a word, where a car on tyres with a limit slides
+/// from about 1 g).
 pub(crate) fn run_beyond_road(model: &VehicleModel, friction: f64, ay: &[f64]) -> Option<String> {
-    let note = friction_ignored(model, &[friction])?;
+    let which = unlimited_tyres(model)?;
+    let note = friction_ignored(model, &[friction]);
     let peak = ay.iter().fold(0.0_f64, |m, a| m.max(a.abs()));
     let road = friction * G;
-    Some(if peak > road {
-        format!(
-            "{note}, and |ay| reaches {peak:.3} m/s², {:.1} × the {road:.3} m/s² (μ·g) this road can give",
+    if peak > road {
+        let note = note.unwrap_or_else(|| {
+            format!("{which} linear (Fy = C·α), with no friction limit of their own")
+        });
+        return Some(format!(
+            "{note}, and |ay| reaches {peak:.3} m/s² ({:.2} g), {:.1} × the {road:.3} m/s² (μ·g) this road can give: tyres with a limit slide before that, and the run past it is no car's",
+            peak / G,
             peak / road
-        )
-    } else {
-        format!("{note}, so the run is the same on any road")
-    })
+        ));
+    }
+    note.map(|note| format!("{note}, so the run is the same on any road"))
 }
 
 #[cfg(test)]
@@ -95,9 +103,17 @@ mod tests {
         // 5.19 m/s² on a 0.2 road: 2.6 × μ·g.
         let s = run_beyond_road(&m, 0.2, &[0.0, -5.19, 3.0]).unwrap();
         assert!(
-            s.ends_with("|ay| reaches 5.190 m/s², 2.6 × the 1.961 m/s² (μ·g) this road can give"),
+            s.contains("|ay| reaches 5.190 m/s² (0.53 g), 2.6 × the 1.961 m/s² (μ·g) this road can give: tyres with a limit slide"),
             "{s}"
         );
+        // On a road of friction 1 a run past g is said too, one within it
+        // not.
+        let s = run_beyond_road(&m, 1.0, &[0.0, 13.6]).unwrap();
+        assert!(
+            s.starts_with("the front and rear tyres are linear (Fy = C·α), with no friction limit of their own, and |ay| reaches 13.600 m/s² (1.39 g), 1.4 × the 9.807 m/s² (μ·g)"),
+            "{s}"
+        );
+        assert_eq!(run_beyond_road(&m, 1.0, &[0.0, 9.8]), None);
         // A tyre with a limit on the other axle: only the linear one named.
         let m = model(lin(), Tyre::Gim(crate::tyre::Gim::new(60_000.0, 0.2, 1.0)));
         let s = friction_ignored(&m, &[0.5]).unwrap();

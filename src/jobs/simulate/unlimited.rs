@@ -72,10 +72,15 @@ pub(crate) fn run_beyond_road(model: &VehicleModel, friction: f64, ay: &[f64]) -
         let note = note.unwrap_or_else(|| {
             format!("{which} linear (Fy = C·α), with no friction limit of their own")
         });
+        // Just past the limit reads past it: 1.026 is not "1.0 ×".
+        let ratio = peak / road;
+        let times = match ratio < 1.1 {
+            true => format!("{ratio:.2}"),
+            false => format!("{ratio:.1}"),
+        };
         return Some(format!(
-            "{note}, and |ay| reaches {peak:.3} m/s² ({:.2} g), {:.1} × the {road:.3} m/s² (μ·g) this road can give: tyres with a limit slide before that, and the run past it is no car's",
+            "{note}, and |ay| reaches {peak:.3} m/s² ({:.2} g), {times} × the {road:.3} m/s² (μ·g) this road can give: tyres with a limit slide before that, and the run past it is no car's",
             peak / G,
-            peak / road
         ));
     }
     note.map(|note| format!("{note}, so the run is the same on any road"))
@@ -114,6 +119,9 @@ mod tests {
             "{s}"
         );
         assert_eq!(run_beyond_road(&m, 1.0, &[0.0, 9.8]), None);
+        // Just past μ·g reads past it, not "1.0 ×".
+        let s = run_beyond_road(&m, 1.2, &[12.075]).unwrap();
+        assert!(s.contains("(1.23 g), 1.03 × the 11.768 m/s²"), "{s}");
         // A tyre with a limit on the other axle: only the linear one named.
         let m = model(lin(), Tyre::Gim(crate::tyre::Gim::new(60_000.0, 0.2, 1.0)));
         let s = friction_ignored(&m, &[0.5]).unwrap();

@@ -602,6 +602,7 @@ mod trips_s106_lead;
 mod trips_s106_mfstaged41;
 mod trips_s106_shares41;
 mod trips_s106_small41;
+mod trips_s106_step40;
 mod trips_s106_units41;
 mod trips_s62;
 mod trips_s62b;

@@ -597,6 +597,7 @@ mod trips_s105_mfhold41;
 mod trips_s105_ui41a;
 mod trips_s105_ui41b;
 mod trips_s105_words41;
+mod trips_s106_fix37b;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

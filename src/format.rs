@@ -105,6 +105,39 @@ pub fn rounded_up(v: f64, digits: usize) -> String {
     rounded(((v * scale) * (1.0 - 1e-12)).ceil() / scale, digits)
 }
 
+/// The decimals that reach a standard error `se`'s second significant
+/// digit (`0.0378`: 3; `1.03`: 1; `25`: 0); 0 for no finite positive
+/// error.
+pub fn error_decimals(se: f64) -> usize {
+    if !(se.is_finite() && se > 0.0) {
+        return 0;
+    }
+    (1 - se.log10().floor() as i64).clamp(0, 15) as usize
+}
+
+/// `v` with at least `decimals` decimals, and more where its standard
+/// error `se` is finer ([`error_decimals`]): a value is never rounded
+/// coarser than its own uncertainty (`9.797 ± 0.0378`, not `9.8 ±
+/// 0.0378`).
+pub fn beside_error(v: f64, se: f64, decimals: usize) -> String {
+    fixed(v, decimals.max(error_decimals(se)))
+}
+
+/// `written`, the text of `v`, written again with the decimals its
+/// standard error `se` needs where it has fewer ([`beside_error`]); a
+/// text in exponent notation is kept (its digits are significant ones).
+pub fn finer_than_error(written: &str, v: f64, se: f64) -> String {
+    if written.contains(['e', 'E']) {
+        return written.to_string();
+    }
+    let have = written.split_once('.').map_or(0, |(_, d)| d.len());
+    if error_decimals(se) > have {
+        beside_error(v, se, have)
+    } else {
+        written.to_string()
+    }
+}
+
 /// `v` with `decimals` decimals where they show two significant digits
 /// or more, else with `digits` significant digits ([`readable`]): an RMS
 /// of 2.7e-4 N reads `0.000275`, not `0.0`, one of 12.34 N `12.3`.
@@ -297,6 +330,24 @@ pub fn did_you_mean(given: &str, known: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A value beside its standard error is written to the error's
+    /// second significant digit, never coarser ("9.8 ± 0.0378" was), and
+    /// never with fewer decimals than asked; a text in exponent notation
+    /// or already fine enough is kept.
+    #[test]
+    fn a_value_is_written_no_coarser_than_its_standard_error() {
+        assert_eq!(error_decimals(0.0378), 3);
+        assert_eq!(error_decimals(1.03), 1);
+        assert_eq!(error_decimals(25.0), 0);
+        assert_eq!(error_decimals(f64::NAN), 0);
+        assert_eq!(beside_error(9.79687, 0.0378, 1), "9.797");
+        assert_eq!(beside_error(17.7, 0.110, 1), "17.70");
+        assert_eq!(beside_error(9.8, 3.0, 1), "9.8");
+        assert_eq!(finer_than_error("1.3038", 1.30381, 0.00327), "1.3038");
+        assert_eq!(finer_than_error("1.3038", 1.303812, 0.0000327), "1.303812");
+        assert_eq!(finer_than_error("8.9e-5", 8.9e-5, 1e-7), "8.9e-5");
+    }
 
     #[test]
     fn a_signed_value_that_rounds_to_zero_has_no_sign() {

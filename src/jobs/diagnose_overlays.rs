@@ -74,6 +74,33 @@ pub(super) fn overlay_panels(d: &Diagnosis) -> Vec<OverlayPanel> {
     panels
 }
 
+/// The overlays' caption: what each trace is, the verdict's line only
+/// where the verdict has effects (a verdict of no significant gap was
+/// captioned "with the verdict's effects (solid)" over no solid line),
+/// and why the model lines start later than the dots.
+pub(super) fn overlay_caption(d: &Diagnosis) -> String {
+    let after = if d.verdict.effects().is_empty() {
+        "; no solid line: the verdict names no effect"
+    } else {
+        ", with the verdict's effects (solid)"
+    };
+    format!(
+        "Held-out replays of the runs with the largest base-model gap: measured (grey points), \
+         base model (dashed){after}. The model lines start {} s into each replay: before, a replay \
+         settles from the initial state it estimates from noisy samples, a transient the gap scan \
+         does not score either.",
+        crate::format::exact(scored_from(0.0))
+    )
+}
+
+/// The overlay figure's time axis, with where the model lines start.
+fn time_label() -> String {
+    format!(
+        "t, s (models from {} s into the replay: its settling is not scored)",
+        crate::format::exact(scored_from(0.0))
+    )
+}
+
 /// One overlay panel's traces: the measured dots first, then the base
 /// model dashed and the model with the verdict's effects (its label and
 /// trace) solid over them, as the tyre fits draw a model over its data
@@ -113,7 +140,7 @@ pub(super) fn overlay_figure(panels: &[OverlayPanel], quantity: fn(Channel) -> S
         .iter()
         .map(|p| Panel {
             title: format!("{}: {} (held out)", p.run, quantity(p.channel)),
-            x_label: "t, s".into(),
+            x_label: time_label(),
             y_label: quantity(p.channel),
             series: p
                 .traces

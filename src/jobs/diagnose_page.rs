@@ -85,8 +85,7 @@ pub fn page(
     p.figure(
         "overlays",
         overlays,
-        "Held-out replays of the runs with the largest base-model gap: measured (grey points), \
-         base model (dashed), with the verdict's effects (solid).",
+        &super::diagnose_overlays::overlay_caption(d),
         path,
     )?;
     road_and_cleaning(&mut p, d);

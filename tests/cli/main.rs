@@ -598,6 +598,7 @@ mod trips_s105_ui41a;
 mod trips_s105_ui41b;
 mod trips_s105_words41;
 mod trips_s106_fix37a;
+mod trips_s106_fix37b;
 mod trips_s106_lead;
 mod trips_s106_mfstaged41;
 mod trips_s106_shares41;

@@ -373,14 +373,25 @@ pub struct Overlay {
 }
 
 impl AssumedFloor {
+    /// The share of its floor a noise-free channel's RMS must reach to
+    /// rest on it: below, the residual is a replay's arithmetic (1e-6 of
+    /// the signal), far below any slip sensor's noise (0.0017 rad).
+    pub const RESOLVED: f64 = 1e-3;
+
     /// The assumption a channel's verdict of RMS `rms` rests on, where it
     /// does: within [`outcome::SIGNIFICANT_NOISE_FLOORS`] of its assumed floor,
     /// beyond them of its scatter.
+    /// A channel without scatter (noise-free: the replay of an
+    /// estimator's output, 0 before the input) rests on its floor too,
+    /// where its RMS is resolved (above [`Self::RESOLVED`] of the floor): a
+    /// sideslip 0.0054 rad off beside a floor of 0.005 read "no
+    /// significant gap" without the word.
     pub fn of(n: &ChannelNoise, rms: f64) -> Option<Self> {
         let own = n.scatter;
         let rests = n.source == ScaleSource::Estimated
             && own.is_finite()
-            && own > 0.0
+            && own >= 0.0
+            && rms > Self::RESOLVED * n.noise_floor
             && !above_noise(rms, n.noise_floor)
             && above_noise(rms, own);
         rests.then_some(AssumedFloor {

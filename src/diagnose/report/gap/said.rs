@@ -90,9 +90,19 @@ fn counted_words(counting: FloorCounting) -> &'static str {
 }
 
 /// A bias against its standard error, with how the floor was counted in
-/// it (white: over every sample; slow: once over the run).
-fn bias_words(bias: f64, b: &BiasTest, unit: &str) -> String {
-    let counted = counted_words(b.counting);
+/// it (white: over every sample; slow: once over the run). A slow floor's
+/// error is `√(floor² + σ²τ/n)`: where the residual's own slow part (σ its
+/// scatter about its mean, τ its correlation time, n its samples) lifts it
+/// past the floor, the words say so: "6.83e-3 rad" beside a floor of 0.005
+/// and "the floor counted … once over the run" read as a slip.
+fn bias_words(bias: f64, b: &BiasTest, noise_floor: f64, unit: &str) -> String {
+    let mut counted = counted_words(b.counting).to_string();
+    if b.counting == FloorCounting::Slow && b.standard_error > 1.05 * noise_floor {
+        counted += &format!(
+            ", with the residual's own slow variation beside it (the floor alone gives {} {unit})",
+            crate::format::significant(noise_floor, 2)
+        );
+    }
     format!(
         "{} {unit} ({:.1} standard errors of {:.2e} {unit}, over {:.0} effective samples; {counted})",
         crate::format::fixed(bias, 4),
@@ -163,12 +173,13 @@ pub(super) fn verdict(s: &Said) -> String {
         // signal whose correlation with the steer is 0.5, no dynamic error.
         let varying = (rms * rms - bias * bias).max(0.0).sqrt();
         let offset = found.bias.significant && bias * bias >= OFFSET_SHARE * rms * rms;
+        let before = right_before_input(s.windows, noise_floor);
         if offset {
-            out += &offset_words(bias, rms, varying, noise_floor, unit);
+            out += &offset_words(bias, (rms, varying), noise_floor, unit, before);
         }
         // A time shift explains a residual shaped like the input's
         // derivative: saying "not a time shift" beside it contradicts it.
-        let shaped = !offset || varying >= noise_floor;
+        let shaped = !offset || varying >= noise_floor || before.is_some();
         if shaped && rho.abs() > 0.5 && shifted.is_none() {
             out += &format!("; the residual resembles the steer input (correlation {rho:.2} with the steer {lag:.2} s earlier: a residual shaped like the input, not a time shift): a dynamic error (gain, lag or stiffness)");
         } else if shaped && correlation(s.e, s.e, 1) > 0.9 {
@@ -196,7 +207,7 @@ fn hidden_gap(s: &Said, bias: f64) -> String {
     if found.bias.significant {
         parts.push(format!(
             " a bias of {}, beyond {} standard errors",
-            bias_words(bias, &found.bias, unit),
+            bias_words(bias, &found.bias, noise_floor, unit),
             bias_threshold(found.bias.counting)
         ));
     }
@@ -235,7 +246,10 @@ fn no_gap(s: &Said, bias: f64) -> String {
         }
         None => {}
     }
-    v += &format!("; bias {}", bias_words(bias, &found.bias, unit));
+    v += &format!(
+        "; bias {}",
+        bias_words(bias, &found.bias, noise_floor, unit)
+    );
     v
 }
 
@@ -245,52 +259,100 @@ struct GainLine {
     k: f64,
     /// Intercept, the channel's unit.
     c: f64,
-    /// Correlation of the residual with the measured channel.
+    /// Correlation of the residual with the simulated channel.
     rho: f64,
+    /// RMS of what the line leaves, the channel's unit.
+    left: f64,
+    /// The residual's own white noise (its sample-to-sample scatter,
+    /// at most the floor), the channel's unit.
+    noise: f64,
 }
 
-/// The least correlation of the residual with the measured channel for
-/// its gap to be said as a gain error: the line carries at least 81 % of
-/// what varies.
+/// The least correlation of the residual with the simulated channel for
+/// its gap to be said as a gain error, once the residual's own noise is
+/// taken out: the line carries at least 81 % of what varies beyond it.
 const GAIN_CORRELATION: f64 = 0.9;
 
-/// The residual's line through the measured channel where it is a gain
-/// error: close to a line (|ρ| ≥ [`GAIN_CORRELATION`]), whose slope moves
-/// it by more than the noise floor across the channel's range, with an intercept within
-/// half the residual's mean or within the noise floor. A constant offset
-/// has no slope (its intercept is its mean); a front tyre 20 % soft
-/// replayed on a step has residual ≈ −0.13 × the yaw rate and no
-/// intercept, where the mean alone read "mostly a constant offset" and
-/// the likeness to the steer "a dynamic error" in one sentence.
+/// The least raw correlation: the line carries at least a quarter of what
+/// varies, noise included, whatever the noise's estimate.
+const GAIN_CORRELATION_RAW: f64 = 0.5;
+
+/// The residual's white noise: the scatter of its first differences over
+/// √2 (a smooth model error barely moves from sample to sample), at most
+/// the floor.
+fn white_noise(e: &[f64], noise_floor: f64) -> f64 {
+    let d: Vec<f64> = e.windows(2).map(|w| w[1] - w[0]).collect();
+    let m = mean(&d);
+    let var = d.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / d.len().max(1) as f64;
+    (var / 2.0).sqrt().min(noise_floor)
+}
+
+/// The residual's line where it is a gain error: close to a line through
+/// the simulated channel once its own white noise is taken out, whose
+/// slope moves it by more than the noise floor across the channel's range,
+/// with an intercept within half the residual's mean or within the noise
+/// floor. A constant offset has no slope (its intercept is its mean); a
+/// front tyre 20 % soft replayed on a step has residual ≈ −0.13 × the yaw
+/// rate and no intercept, where the mean alone read "mostly a constant
+/// offset" and the likeness to the steer "a dynamic error" in one
+/// sentence. The line is fitted against the simulated channel, which holds
+/// no measurement noise: against the measured one, a gyro's 0.002 rad/s
+/// both flattened the slope and cut the correlation below 0.9, and the
+/// book's own gain error read as an offset (Fuller 1987, errors in
+/// variables). Said as a line through the measured channel: with `e =
+/// k'·s + c'` and `m = s − e`, `e = k'/(1 − k')·m + c'/(1 − k')`.
 fn gain_error(e: &[f64], measured: &[f64], noise_floor: f64) -> Option<GainLine> {
-    let sums = crate::stats::CentredSums::of(measured, e);
+    let n = e.len().min(measured.len());
+    let simulated: Vec<f64> = (0..n).map(|i| measured[i] + e[i]).collect();
+    let sums = crate::stats::CentredSums::of(&simulated, &e[..n]);
     let rho = sums.correlation()?;
-    let k = sums.xy / sums.xx;
-    let c = mean(e) - k * mean(&measured[..sums.n]);
-    // What the slope moves the residual by across the measured channel's
+    let slope = sums.xy / sums.xx;
+    if slope.is_nan() || slope >= 1.0 {
+        return None;
+    }
+    let intercept = mean(&e[..n]) - slope * mean(&simulated);
+    let var = sums.yy / n as f64;
+    let noise = white_noise(&e[..n], noise_floor);
+    let beyond = rho * rho * var / (var - noise * noise).max(f64::MIN_POSITIVE);
+    // What the slope moves the residual by across the simulated channel's
     // 5–95 % range (a step's sd understates its range: it sits at 0 and
     // at its steady value).
-    let mut sorted = measured[..sums.n].to_vec();
+    let mut sorted = simulated;
     sorted.sort_by(f64::total_cmp);
     let at = |q: f64| sorted[(q * (sorted.len() - 1) as f64).round() as usize];
-    let swing = k.abs() * (at(0.95) - at(0.05));
+    let swing = slope.abs() * (at(0.95) - at(0.05));
+    let c = intercept / (1.0 - slope);
     let small = c.abs() <= (0.5 * mean(e).abs()).max(noise_floor);
-    (rho.abs() >= GAIN_CORRELATION && swing >= noise_floor && small).then_some(GainLine {
-        k,
+    let line = beyond >= GAIN_CORRELATION * GAIN_CORRELATION && rho.abs() >= GAIN_CORRELATION_RAW;
+    (line && swing >= noise_floor && small).then(|| GainLine {
+        k: slope / (1.0 - slope),
         c,
         rho,
+        left: (var * (1.0 - rho * rho)).max(0.0).sqrt(),
+        noise,
     })
 }
 
-/// A gap that grows with the response, said as a gain error.
+/// A gap that grows with the response, said as a gain error; where the
+/// residual's noise holds its correlation below [`GAIN_CORRELATION`], that
+/// what the line leaves is that noise.
 fn gain_words(g: &GainLine, noise_floor: f64, unit: &str) -> String {
     let within = if g.c.abs() < noise_floor {
         ", within the noise floor"
     } else {
         ""
     };
+    let left = if g.rho.abs() < GAIN_CORRELATION {
+        format!(
+            "; what the line leaves, RMS {} {unit}, is about the residual's own sample-to-sample noise, {} {unit}",
+            crate::format::significant(g.left, 2),
+            crate::format::significant(g.noise, 2)
+        )
+    } else {
+        String::new()
+    };
     format!(
-        "; the gap grows with the response, not a constant offset: the residual follows the measured channel as a line of slope {:+.3} (the simulation reads {:.1} % of the measurement; correlation {:.2}) with an intercept of {} {unit}{within}: a gain error (a stiffness, a mass or inertia, or a sensor's scale factor)",
+        "; the gap grows with the response, not a constant offset: the residual follows the measured channel as a line of slope {:+.3} (the simulation reads {:.1} % of the measurement; correlation {:.2}{left}) with an intercept of {} {unit}{within}: a gain error (a stiffness, a mass or inertia, or a sensor's scale factor)",
         g.k,
         100.0 * (1.0 + g.k),
         g.rho,
@@ -302,13 +364,49 @@ fn gain_words(g: &GainLine, noise_floor: f64, unit: &str) -> String {
 /// gap to be said as an offset (the mean larger than what varies about it).
 const OFFSET_SHARE: f64 = 0.5;
 
+/// The residual's mean before the input where that window is right (at
+/// least 5 samples, its mean within the noise floor and its RMS within
+/// three): a sensor's zero offset would show there too.
+fn right_before_input(windows: &[PartGap], noise_floor: f64) -> Option<f64> {
+    use crate::diagnose::report::parts::{Part, Window};
+    windows
+        .iter()
+        .find(|p| p.name == Part::Window(Window::BeforeInput) && p.samples >= 5)
+        .filter(|p| p.bias.abs() < noise_floor && p.rms <= 3.0 * noise_floor)
+        .map(|p| p.bias)
+}
+
 /// A gap that is mostly its mean, said as an offset: the measured
 /// channel's mean difference from the simulation (`e` = simulated −
-/// measured), its share of the mean square, and what varies about it.
-fn offset_words(bias: f64, rms: f64, varying: f64, noise_floor: f64, unit: &str) -> String {
+/// measured), its share of the mean square (`rms`) and what varies about
+/// it (`varying`). Where the channel is right before the input (`before`,
+/// the mean residual there), the offset comes with the input and is no
+/// sensor's zero offset: a step's gain error has 78 % of its mean square
+/// in its mean, and was said as "a sensor's zero offset" beside "right
+/// before the input".
+fn offset_words(
+    bias: f64,
+    (rms, varying): (f64, f64),
+    noise_floor: f64,
+    unit: &str,
+    before: Option<f64>,
+) -> String {
     let way = if bias < 0.0 { "above" } else { "below" };
+    let share = 100.0 * bias * bias / (rms * rms);
+    let quiet = varying < noise_floor;
+    let (bias, varying, floor) = (
+        crate::format::significant(bias.abs(), 3),
+        crate::format::significant(varying, 2),
+        crate::format::significant(noise_floor, 2),
+    );
+    if let Some(b) = before {
+        return format!(
+            "; the gap's mean comes with the input: the measured channel lies {bias} {unit} {way} the simulation on average ({share:.0} % of the residual's mean square; what varies about it has RMS {varying} {unit}), but before the input the two agree (mean residual {} {unit} there, within the noise floor of {floor} {unit}), so no sensor's zero offset: the model's response to the input is off",
+            crate::format::readable(b, 2),
+        );
+    }
     // Where what varies is above the noise, its shape is said next.
-    let (against, cause) = if varying < noise_floor {
+    let (against, cause) = if quiet {
         (
             "below",
             ": a sensor's zero offset, or a constant the model leaves out, not a dynamic error",
@@ -317,11 +415,7 @@ fn offset_words(bias: f64, rms: f64, varying: f64, noise_floor: f64, unit: &str)
         ("above", "")
     };
     format!(
-        "; the gap is mostly a constant offset: the measured channel lies {} {unit} {way} the simulation on average (its mean difference, {:.0} % of the residual's mean square; what varies about it has RMS {} {unit}, {against} the noise floor of {} {unit}){cause}",
-        crate::format::significant(bias.abs(), 3),
-        100.0 * bias * bias / (rms * rms),
-        crate::format::significant(varying, 2),
-        crate::format::significant(noise_floor, 2),
+        "; the gap is mostly a constant offset: the measured channel lies {bias} {unit} {way} the simulation on average (its mean difference, {share:.0} % of the residual's mean square; what varies about it has RMS {varying} {unit}, {against} the noise floor of {floor} {unit}){cause}"
     )
 }
 

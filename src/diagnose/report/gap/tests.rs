@@ -275,3 +275,117 @@ fn bands_are_said_only_where_the_steer_drives_a_response_above_the_noise() {
         "{swept:?}"
     );
 }
+
+/// A step record whose response is a slow first-order one (0.04 rad/s
+/// steady, time constant 4 s), its
+/// simulation `(1 + k)` times it plus `offset` after the input, the
+/// measurement with white noise `sigma`: the channel's gap.
+fn gained(k: f64, offset: f64, sigma: f64, seed: u64) -> ChannelGap {
+    let s = Step::new();
+    let truth: Vec<f64> = s.response(4.0).iter().map(|v| 0.2 * v).collect();
+    let simulated: Vec<f64> = truth
+        .iter()
+        .zip(&s.t)
+        .map(|(v, t)| (1.0 + k) * v + if *t > 5.0 { offset } else { 0.0 })
+        .collect();
+    let measured = noisy(&truth, sigma, seed);
+    channel_gap(Channel::YawRate, &s.record(), &measured, &simulated)
+}
+
+/// The slope the words give ("the simulation reads X % of the
+/// measurement").
+fn reads_percent(verdict: &str) -> f64 {
+    verdict
+        .split("the simulation reads ")
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{verdict}"))
+}
+
+/// A pure gain error (the simulation 25 % above a measured step, no
+/// intercept) is a gain error at every gyro noise a yaw-rate sensor has,
+/// 0 to 0.005 rad/s, and its slope the closed form's 125 %: fitted against
+/// the measured channel, a noise of 0.002 rad/s cut the correlation below
+/// 0.9 and flattened the slope (errors in variables), and the gap read
+/// "mostly a constant offset" beside "a dynamic error".
+#[test]
+fn a_pure_gain_error_is_a_gain_error_at_any_gyro_noise() {
+    for (sigma, seed) in [(0.0, 1), (0.0003, 2), (0.001, 3), (0.002, 4), (0.005, 5)] {
+        let g = gained(0.25, 0.0, sigma, seed);
+        assert!(g.gap_found, "{sigma}: {}", g.verdict);
+        assert!(g.verdict.contains("a gain error"), "{sigma}: {}", g.verdict);
+        assert!(
+            !g.verdict.contains("mostly a constant offset"),
+            "{sigma}: {}",
+            g.verdict
+        );
+        assert!(
+            !g.verdict.contains("a dynamic error"),
+            "{sigma}: {}",
+            g.verdict
+        );
+        let percent = reads_percent(&g.verdict);
+        assert!((percent - 125.0).abs() < 1.5, "{sigma}: {}", g.verdict);
+    }
+}
+
+/// A pure offset over the whole run (the simulation 0.004 rad/s above a
+/// measurement with 0.001 rad/s of noise, before the input too) is a
+/// constant offset and no gain error (it has no slope), nor one that
+/// comes with the input.
+#[test]
+fn a_pure_offset_is_an_offset_not_a_gain_error() {
+    let s = Step::new();
+    let truth: Vec<f64> = s.response(4.0).iter().map(|v| 0.2 * v).collect();
+    let simulated: Vec<f64> = truth.iter().map(|v| v + 0.004).collect();
+    let measured = noisy(&truth, 0.001, 9);
+    let g = channel_gap(Channel::YawRate, &s.record(), &measured, &simulated);
+    assert!(
+        g.verdict.contains("the gap is mostly a constant offset"),
+        "{}",
+        g.verdict
+    );
+    assert!(!g.verdict.contains("gain error"), "{}", g.verdict);
+    assert!(!g.verdict.contains("comes with the input"), "{}", g.verdict);
+}
+
+/// An offset that comes with the input (0.01 rad/s from the step on,
+/// over a response that swings about zero, 0.04 rad/s at 0.5 Hz: no line
+/// through it), the window before the input right: no sensor's zero
+/// offset, which would show before the input too, and the residual, a
+/// step like the steer's, a dynamic error; never "mostly a constant
+/// offset", with or without "a sensor's zero offset".
+#[test]
+fn an_offset_that_comes_with_the_input_is_no_sensor_offset() {
+    let s = Step::new();
+    let after = |t: f64| t > 5.0;
+    let truth: Vec<f64> =
+        s.t.iter()
+            .map(|&t| match after(t) {
+                true => 0.04 * (PI * (t - 5.0)).sin(),
+                false => 0.0,
+            })
+            .collect();
+    let simulated: Vec<f64> = truth
+        .iter()
+        .zip(&s.t)
+        .map(|(v, &t)| v + if after(t) { 0.01 } else { 0.0 })
+        .collect();
+    let measured = noisy(&truth, 0.001, 11);
+    let g = channel_gap(Channel::YawRate, &s.record(), &measured, &simulated);
+    assert!(g.gap_found, "{}", g.verdict);
+    assert!(!g.verdict.contains("gain error"), "{}", g.verdict);
+    assert!(
+        g.verdict.contains("the gap's mean comes with the input")
+            && g.verdict.contains("so no sensor's zero offset"),
+        "{}",
+        g.verdict
+    );
+    assert!(
+        !g.verdict.contains("mostly a constant offset"),
+        "{}",
+        g.verdict
+    );
+    assert!(g.verdict.contains("a dynamic error"), "{}", g.verdict);
+}

@@ -110,10 +110,12 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
                     &format!("{} {:.digits$}", v.name, v.value),
                     1,
                 ),
+                // To the standard error's precision: "9.8 ± 0.0378"
+                // rounded the value coarser than its own uncertainty.
                 None if v.std_error.is_finite() => format!(
-                    "{} {:.digits$} ± {}{unit}",
+                    "{} {} ± {}{unit}",
                     v.name,
-                    v.value,
+                    crate::format::beside_error(v.value, v.std_error, digits),
                     super::std_error(v.std_error),
                 ),
                 None => format!("{} {:.digits$}{unit} (not pinned)", v.name, v.value),

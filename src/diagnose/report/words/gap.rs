@@ -7,6 +7,7 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
     above_noise, CombinedGap, GapFinding, SIGNIFICANT_NOISE_FLOORS,
 };
+use crate::diagnose::report::parts::Window;
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::Part;
 
@@ -37,7 +38,8 @@ pub(super) fn channel(f: &GapFinding) -> String {
     else {
         return String::new();
     };
-    let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel));
+    let before = right.contains(&Part::Window(Window::BeforeInput));
+    let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel, before));
     let which = runs_named(*channel, *noise_floor, *significant_runs, significant_in);
     let head = format!(
                 "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs{which}",
@@ -117,10 +119,20 @@ fn within_combined(head: &str, floors: f64, c: &CombinedGap, wrong: Option<Strin
     }
 }
 
-/// The clause of a channel's steady offset `o`, after its place.
-fn steady_offset(o: &SteadyOffset, channel: Channel) -> String {
+/// The clause of a channel's steady offset `o`, after its place. Where
+/// the channel is right before the input (`before`: its RMS there within
+/// three floors) and the offset beyond three floors, the offset comes with
+/// the input and is no sensor's: a sensor's zero offset would have made
+/// that window wrong too ("right in: before the input" beside "a sensor
+/// offset" read as both).
+fn steady_offset(o: &SteadyOffset, channel: Channel, before: bool) -> String {
+    let cause = if before && o.floors > SIGNIFICANT_NOISE_FLOORS {
+        "a bias of the model's response that the RMS does not single out, after the input only (before it the channel is right, where a sensor's zero offset would show too), not a sensor offset"
+    } else {
+        "a sensor offset or a bias of the model that the RMS does not single out"
+    };
     format!(
-        "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), a sensor offset or a bias of the model that the RMS does not single out",
+        "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), {cause}",
         crate::format::signed(o.mean, 4),
         channel.unit(),
         o.same_sign,

@@ -236,6 +236,40 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
     );
 }
 
+/// A channel wrong after the input and right before it, with a steady
+/// offset of 4.7 floors: a sensor's zero offset would have made the
+/// window before the input wrong too (its RMS at least the offset's), so
+/// the offset is said as the model's, not "a sensor offset or a bias of
+/// the model" beside "right in: before the input". One of 2.2 floors,
+/// within the three floors the window's RMS may reach, stays either.
+#[test]
+fn an_offset_beyond_the_floors_right_before_the_input_is_the_model_s() {
+    use crate::diagnose::report::parts::Window;
+    use crate::diagnose::report::values::SteadyOffset;
+    let f = |biases: &[f64], rms: f64| GapFinding::Channel {
+        channel: Channel::YawRate,
+        rms,
+        noise_floor: 0.0017,
+        significant_runs: 4,
+        significant_in: Vec::new(),
+        runs: 4,
+        wrong: vec![(Part::Window(Window::Later), 0.014)],
+        right: vec![Part::Window(Window::BeforeInput)],
+        offset: SteadyOffset::of(biases, 0.0017, rms),
+        combined: None,
+    };
+    let said = finding(&f(&[0.0081, 0.0079, 0.0083, 0.0081], 0.0114));
+    assert!(
+        said.contains("right in: before the input; a steady offset: mean residual +0.0081 rad/s over the runs, of that sign in 4 of 4 runs (4.8 noise floors, 50 % of the mean square), a bias of the model's response that the RMS does not single out, after the input only (before it the channel is right, where a sensor's zero offset would show too), not a sensor offset"),
+        "{said}"
+    );
+    let small = finding(&f(&[0.0037, 0.0038, 0.0036, 0.0037], 0.0051));
+    assert!(
+        small.contains("a sensor offset or a bias of the model"),
+        "{small}"
+    );
+}
+
 #[test]
 fn a_fit_that_enlarges_the_held_out_gap_says_larger_not_only_a_negative_share() {
     let w = RankWarning::Disagreement {

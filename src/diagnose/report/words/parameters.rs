@@ -201,9 +201,15 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
 /// (`removes`: the effect removes something significant).
 fn determined(p: &ParameterValue, removes: bool, v: &str, unit: &str) -> String {
     let se = p.asymptotic_std_error;
+    let spread = p.std_error_basis == StdErrorBasis::FoldSpread;
+    // Never rounded coarser than the error it leads with.
+    let led = match p.fold_std_error.filter(|_| p.understated()) {
+        Some(_) if spread => p.std_error,
+        _ => se,
+    };
+    let v = &crate::format::finer_than_error(v, p.value, led);
     let said = format!("{} = {v} ± {}{unit}", p.name, std_error(se));
     let yardstick = p.fold_yardstick();
-    let spread = p.std_error_basis == StdErrorBasis::FoldSpread;
     match p.fold_std_error.filter(|_| p.understated()) {
         // The verdict stands on the fold refits' spread: the words
         // lead with it, as the JSON's `std_error` does, and give

@@ -160,6 +160,14 @@ pub fn excess_note(e: &StatedExcess) -> String {
 /// make of its RMS.
 pub fn assumed_floor(a: &AssumedFloor) -> String {
     let (name, u) = (a.channel.name(), a.channel.unit());
+    // A channel without scatter has no ratio to give: any RMS is a gap.
+    if a.scatter == 0.0 {
+        return format!(
+            "this rests on an assumed floor: {name} is read as an estimated output and trusted to {} {u}, an estimated output's uncertainty, not one stated; with {name} trusted to its scatter, 0 {u} (noise-free), its RMS {} {u} would be a gap at any number of noise floors (where {name} is a sensor, state `[channels] {name} = …` in the campaign)",
+            rms(a.floor),
+            rms(a.rms),
+        );
+    }
     format!(
         "this rests on an assumed floor: {name} is read as an estimated output and trusted to {} {u}, an estimated output's uncertainty, not one stated; with {name} trusted to its scatter, {} {u}, its RMS {} {u} would be {} noise floors, a gap (where {name} is a sensor, state `[channels] {name} = …` in the campaign)",
         rms(a.floor),

@@ -70,6 +70,14 @@ impl SteerInDegreesRuns {
             1 => "the other run".to_string(),
             n => format!("the other {n} runs"),
         };
+        // Every other run held and in radians: said of them all at once.
+        if self.others.is_empty() {
+            let (verb, whose, should) = match rest {
+                1 => ("reads", "its", "it"),
+                _ => ("read", "their", "they"),
+            };
+            return format!("{other} {verb} in radians by {whose} held steer against {whose} yaw rate, as {should} should. {fix}");
+        }
         let said: Vec<String> = held.into_iter().chain(self.others()).collect();
         format!("{other}: {}. {fix}", said.join("; "))
     }

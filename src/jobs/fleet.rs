@@ -96,7 +96,7 @@ pub fn campaigns(dir: &Path) -> Result<(Vec<PathBuf>, Vec<String>), Error> {
     out.retain(|p| !held.iter().any(|(folder, _)| folder == p));
     skipped.extend(
         held.iter()
-            .map(|(folder, by)| format!("{} (the runs of {by})", name_of(folder))),
+            .map(|(folder, by)| format!("{}{RUNS_OF}{by})", name_of(folder))),
     );
     if out.is_empty() {
         return Err(InputError::NoCampaign {
@@ -141,16 +141,33 @@ fn runs_holders(entries: &[PathBuf]) -> Vec<(PathBuf, String)> {
         .collect()
 }
 
+/// How a skipped runs folder is named in the list of skipped entries:
+/// `dataA (the runs of campA.toml)`.
+const RUNS_OF: &str = " (the runs of ";
+
 /// The note of a batch folder's entries that are not campaigns (None:
-/// every entry is one).
+/// every entry is one): those neither a sub-folder nor a `.toml` file,
+/// then the sub-folders that hold a campaign file's runs.
 fn skipped_note(skipped: &[String]) -> Option<String> {
-    (!skipped.is_empty()).then(|| {
-        format!(
-            "{} of the batch folder skipped, not a campaign (neither a sub-folder nor a .toml file, or a campaign file's runs): {}",
-            plural(skipped.len(), "entry", "entries"),
-            skipped.join(", ")
-        )
-    })
+    let (runs, other): (Vec<&String>, Vec<&String>) =
+        skipped.iter().partition(|s| s.contains(RUNS_OF));
+    let join = |v: &[&String]| v.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ");
+    let mut said = Vec::new();
+    if !other.is_empty() {
+        said.push(format!(
+            "{} of the batch folder skipped, not a campaign (neither a sub-folder nor a .toml file): {}",
+            plural(other.len(), "entry", "entries"),
+            join(&other)
+        ));
+    }
+    if !runs.is_empty() {
+        said.push(format!(
+            "{} of the batch folder skipped, a campaign file's runs, not a campaign of its own: {}",
+            plural(runs.len(), "sub-folder", "sub-folders"),
+            join(&runs)
+        ));
+    }
+    (!said.is_empty()).then(|| said.join("; "))
 }
 
 /// Refuses a file or a campaign folder given as the batch folder: it

@@ -73,14 +73,14 @@ fn a_run_in_degrees_among_runs_in_radians_accounts_for_every_run() {
     );
     let err = fails_cleanly("diagnose", &c, dir.path());
     assert!(
-        err.contains("for the steer in 1 of the 8 runs: ") && err.contains("6 runs do not"),
+        err.contains("for the steer in 1 of the 8 runs: ")
+            && err.contains("the other 7 runs: 6 read in radians by their held steer"),
         "{err}"
     );
     assert!(
-        err.contains("; the other run: ")
-            && err.contains(
-                "sweep_080kph.csv reads in radians by its swept steer against the lagged yaw rate"
-            ),
+        err.contains(
+            "sweep_080kph.csv reads in radians by its swept steer against the lagged yaw rate. "
+        ),
         "{err}"
     );
 }

@@ -88,7 +88,7 @@ fn a_sweep_logged_in_degrees_is_refused_like_a_held_steer() {
     let err = fails_cleanly("diagnose", &c, dir.path());
     assert!(
         err.contains("the yaw rate is far smaller than a neutral car's for the steer in 1 of the 8 runs: ")
-            && err.contains("sweep_080kph.csv (106× smaller, median r·l/(u·δ) = 0.00945): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? 7 runs do not"),
+            && err.contains("sweep_080kph.csv (106× smaller, median r·l/(u·δ) = 0.00945): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? the other 7 runs read in radians by their held steer against their yaw rate, as they should. `degrees"),
         "{err}"
     );
     // The same sweep in radians passes: the campaign of the test above.

@@ -27,6 +27,16 @@ pub struct SteerInDegreesRuns {
     pub others: Vec<(String, OtherRun)>,
 }
 
+/// `n` runs named `subject` ("the other 7 runs", "6") whose held steer,
+/// judged against their yaw rate, reads in radians.
+fn held_in_radians(subject: &str, n: usize) -> String {
+    let (verb, whose, should) = match n {
+        1 => ("reads", "its", "it"),
+        _ => ("read", "their", "they"),
+    };
+    format!("{subject} {verb} in radians by {whose} held steer against {whose} yaw rate, as {should} should")
+}
+
 /// A run of a campaign neither in degrees nor judged in radians on a held
 /// steer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,25 +69,16 @@ impl SteerInDegreesRuns {
         if rest == 0 {
             return fix;
         }
-        let held = (self.radians > 0).then(|| match self.radians {
-            1 => "1 reads in radians by its held steer against its yaw rate, as it should"
-                .to_string(),
-            n => format!(
-                "{n} read in radians by their held steer against their yaw rate, as they should"
-            ),
-        });
         let other = match rest {
             1 => "the other run".to_string(),
             n => format!("the other {n} runs"),
         };
         // Every other run held and in radians: said of them all at once.
         if self.others.is_empty() {
-            let (verb, whose, should) = match rest {
-                1 => ("reads", "its", "it"),
-                _ => ("read", "their", "they"),
-            };
-            return format!("{other} {verb} in radians by {whose} held steer against {whose} yaw rate, as {should} should. {fix}");
+            return format!("{}. {fix}", held_in_radians(&other, rest));
         }
+        let held =
+            (self.radians > 0).then(|| held_in_radians(&self.radians.to_string(), self.radians));
         let said: Vec<String> = held.into_iter().chain(self.others()).collect();
         format!("{other}: {}. {fix}", said.join("; "))
     }

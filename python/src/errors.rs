@@ -110,6 +110,8 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
         InputProblem::DeadChannel { channel, value, .. } => (Some(channel), Some(*value)),
         InputProblem::DeadSteer { value, .. } => (Some("steer"), Some(*value)),
         InputProblem::UnitSlip(u) => unit_slip_key_value(u),
+        // The column its header names: the header cell holds a unit, no value.
+        InputProblem::UnitInHeader(h) => (Some(h.column), None),
         _ => (None, None),
     }
 }

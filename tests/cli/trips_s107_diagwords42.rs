@@ -1,5 +1,5 @@
 //! What fresh-eyes round 38 tripped on in the diagnosis's gap words
-//! (session 107, issue 41): a verdict's warning on the sideslip's gap said
+//! (session 107): a verdict's warning on the sideslip's gap said
 //! "another cause (a model-form error …, or this channel's sensor)" while
 //! the report's top named the run whose `beta` was negated; a change of
 //! RMS 0.0061 → 0.0062 on a 0.0020 floor was given as a share of the gap

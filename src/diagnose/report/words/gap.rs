@@ -147,6 +147,9 @@ fn steady_offset(o: &SteadyOffset, channel: Channel, before: bool) -> String {
     )
 }
 
+/// A run's name and its held-out RMS of a channel (its unit).
+type RunRms = (String, f64);
+
 /// Where a channel's gap is significant in some runs and not all, at most
 /// this many runs are named in a line; beyond, the largest are and the
 /// rest are counted.
@@ -164,10 +167,10 @@ pub(super) const NAMED_RUNS: usize = 3;
 fn runs_named(
     channel: Channel,
     noise_floor: f64,
-    (significant, within): (&[(String, f64)], &[(String, f64)]),
+    (significant, within): (&[RunRms], &[RunRms]),
     runs: usize,
 ) -> String {
-    let each = |v: &[(String, f64)]| -> String {
+    let each = |v: &[RunRms]| -> String {
         let named: Vec<String> = v
             .iter()
             .map(|(run, rms)| {

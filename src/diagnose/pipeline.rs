@@ -546,6 +546,7 @@ fn run(
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let scored = (&base, found.chosen.as_ref().map(|s| &s.heldout));
     let gap = gap_report(c, (noise, parts, run_gaps), scored, &scales, &mut verdict);
+    crate::diagnose::report::cause::point(&mut verdict, &notes, &gap);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),

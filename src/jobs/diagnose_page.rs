@@ -418,14 +418,19 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
 
 /// The share of a channel's gap removed (negative: added), or "not
 /// significant" where its held-out RMS is within the noise floors before
-/// and after: there is no gap to remove and the share would be noise. The
+/// and after: there is no gap to remove and the share would be noise; or
+/// "unchanged" where it moved within the scatter of held-out scores. The
 /// rule is the verdict's warnings' ([`Shrinkage::change`]), so the page
 /// and the terminal agree.
 fn channel_reduction(s: &Shrinkage) -> Cell {
     match s.change() {
         ChannelChange::WithinNoise => Cell::Text(words::within_noise(s)),
+        ChannelChange::Unchanged(_) => {
+            Cell::Text(words::unchanged(s.before, s.after, s.noise_floor))
+        }
         ChannelChange::Changed(p) => Cell::Number(format!("{p:.0}")),
-        ChannelChange::Worsened(p) => Cell::Number(format!("{:.0}", -p)),
+        ChannelChange::Worsened(p) if p.is_finite() => Cell::Number(format!("{:.0}", -p)),
+        ChannelChange::Worsened(p) => Cell::Text(words::added(p, s.before, s.after, s.noise_floor)),
     }
 }
 

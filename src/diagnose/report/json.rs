@@ -227,6 +227,7 @@ impl Serialize for BaseReport {
 #[serde(rename_all = "snake_case")]
 enum ChangeKind {
     WithinNoise,
+    Unchanged,
     Changed,
     Worsened,
 }
@@ -247,13 +248,19 @@ struct ShrinkageJson<'a> {
 
 /// A part's before and after with the rule the terminal and the page say
 /// it by ([`Shrinkage::change`]): within noise, the share of the gap is
-/// `null`, since a share of noise (−73 %, −138 %) is no change at all.
+/// `null`, since a share of noise (−73 %, −138 %) is no change at all;
+/// `unchanged` keeps its share, within the scatter of held-out scores; a
+/// worsening from an RMS at or below the floor has none (`null`).
 impl Serialize for Shrinkage {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let (reduction_percent, change) = match self.change() {
             ChannelChange::WithinNoise => (None, ChangeKind::WithinNoise),
+            ChannelChange::Unchanged(_) => (Some(self.reduction_percent), ChangeKind::Unchanged),
             ChannelChange::Changed(_) => (Some(self.reduction_percent), ChangeKind::Changed),
-            ChannelChange::Worsened(_) => (Some(self.reduction_percent), ChangeKind::Worsened),
+            ChannelChange::Worsened(p) => (
+                p.is_finite().then_some(self.reduction_percent),
+                ChangeKind::Worsened,
+            ),
         };
         ShrinkageJson {
             channel: self.channel,

@@ -5,6 +5,7 @@
 //! are SI and rad unless a field names its unit; held-out errors J are
 //! dimensionless (residuals over channel scales).
 
+pub(crate) mod cause;
 mod evidence;
 pub(crate) mod gap;
 mod json;
@@ -33,12 +34,12 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelChange, ChannelLeft,
-    ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff, GapFinding, InSet,
-    Lookalike, Lookalikes, MassAlike, Narrowed, NoSignificantGap, NotIdentifiable, Note,
-    OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused, Searched, SetAside,
-    StandstillBank, ThroughBank, Unseen, VehicleLimit, Verdict, VerdictKind, VerdictWarning,
-    Window,
+    above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelCause, ChannelChange,
+    ChannelLeft, ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff,
+    GapFinding, InSet, Lookalike, Lookalikes, MassAlike, Narrowed, NoSignificantGap,
+    NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused,
+    Searched, SetAside, StandstillBank, ThroughBank, Unseen, VehicleLimit, Verdict, VerdictKind,
+    VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

@@ -5,9 +5,9 @@
 //! the terminal, `diagnosis.json`'s strings, the page, the fleet table and
 //! Python read them from there); no rule reads a sentence.
 //!
-//! One rule lives here because the page and the verdict's warnings both
-//! read it: what the verdict's effects did to a channel's held-out gap
-//! ([`Shrinkage::change`]).
+//! One rule lives here (`change.rs`) because the page and the verdict's
+//! warnings both read it: what the verdict's effects did to a channel's
+//! held-out gap ([`ChannelChange::of`]).
 //!
 //! Units: held-out errors J dimensionless (residuals over channel scales),
 //! reductions in percent, RMS values in the channel's unit (rad/s, m/s²,
@@ -27,7 +27,7 @@ pub use crate::diagnose::report::narrowed::Narrowed;
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 pub use crate::diagnose::report::tyre_class::ClassMismatch;
-use crate::diagnose::report::values::{ParameterValue, Shrinkage, SteadyOffset};
+use crate::diagnose::report::values::{ParameterValue, SteadyOffset};
 use serde::{Deserialize, Serialize};
 
 /// Which case a verdict is.
@@ -396,47 +396,20 @@ pub enum VerdictWarning {
         threshold: f64,
         /// Share of the gap above noise left, %.
         left_percent: f64,
+        /// The channel carrying more than two thirds of the held-out `J²`
+        /// with the effects, where one does (filled from the gap's shares
+        /// once they are made, `report::cause::point`): where the further
+        /// cause lies.
+        carried_by: Option<CarriedBy>,
     },
 }
 
-/// A channel's held-out gap that the verdict's effects make larger.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ChannelWorsened {
-    /// The channel.
-    pub channel: Channel,
-    /// Held-out RMS with the base model.
-    pub before: f64,
-    /// Held-out RMS with the verdict's effects.
-    pub after: f64,
-    /// The channel's noise floor.
-    pub noise_floor: f64,
-    /// Share of the gap above noise added, %.
-    pub added_percent: f64,
-}
-
-/// A channel's held-out gap, above noise before and after, of which the
-/// verdict's effects remove less than the acceptance share
-/// ([`crate::diagnose::verdict::rules::ACCEPT`]) the verdict needs of the
-/// whole.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ChannelLeft {
-    /// The channel.
-    pub channel: Channel,
-    /// Held-out RMS with the base model.
-    pub before: f64,
-    /// Held-out RMS with the verdict's effects.
-    pub after: f64,
-    /// The channel's noise floor.
-    pub noise_floor: f64,
-    /// Share of the gap above noise removed, % (negative: grown, by less
-    /// than a worsening).
-    pub removed_percent: f64,
-    /// The share the acceptance asks of the whole gap, %.
-    pub acceptance_percent: f64,
-}
-
+mod change;
+mod channel;
 mod note;
 pub use crate::error::Unseen;
+pub use change::{above_noise, ChannelChange, SIGNIFICANT_NOISE_FLOORS, WORSENED};
+pub use channel::{CarriedBy, ChannelCause, ChannelLeft, ChannelWorsened};
 pub use note::{Note, VehicleLimit};
 
 /// A finding on where the base model's gap lies.
@@ -466,6 +439,10 @@ pub enum GapFinding {
         /// unit): a gap in one run that no part over all runs isolates
         /// is named by its run.
         significant_in: Vec<(String, f64)>,
+        /// The runs that measure the channel and in which its gap is
+        /// within noise, with their held-out RMS (its unit): where they
+        /// are fewer, the words name them ("all but …").
+        within_in: Vec<(String, f64)>,
         /// Runs.
         runs: usize,
         /// Parts (windows, regimes) above three noise floors, with their RMS.
@@ -539,57 +516,6 @@ pub struct CombinedGap {
     /// [`SIGNIFICANT_NOISE_FLOORS`] of their floor ([`above_noise`]: the
     /// per-channel table's rule): where the combined gap lies.
     pub significant_alone: Vec<Channel>,
-}
-
-/// A channel's held-out RMS is above noise beyond this many noise floors
-/// (the gap's rule per run, the gap summary's, the page's and the
-/// verdict's warnings').
-pub const SIGNIFICANT_NOISE_FLOORS: f64 = 3.0;
-
-/// A channel's gap above noise grown by more than this share (%) under
-/// the verdict's effects, to an RMS above noise, is a worsening: beyond
-/// the scatter of held-out scores, and the combined error that accepted
-/// them does not show it.
-pub const WORSENED: f64 = 10.0;
-
-/// Whether an RMS `rms` stands above a noise floor `noise_floor`: beyond
-/// [`SIGNIFICANT_NOISE_FLOORS`] of it.
-pub fn above_noise(rms: f64, noise_floor: f64) -> bool {
-    rms > SIGNIFICANT_NOISE_FLOORS * noise_floor
-}
-
-/// What the verdict's effects did to a channel's held-out gap.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ChannelChange {
-    /// Before and after within noise: nothing to reduce, nothing made
-    /// worse (a share of a gap within noise is noise).
-    WithinNoise,
-    /// The gap changed by this share (%, negative: grew), not a
-    /// worsening.
-    Changed(f64),
-    /// A worsening: the gap above noise grew by this share (%) to an RMS
-    /// above noise.
-    Worsened(f64),
-}
-
-impl Shrinkage {
-    /// What the verdict's effects did to this part's gap: within noise
-    /// where neither RMS is [`above_noise`]; a worsening where the RMS
-    /// after is above noise, larger than before, and its gap above noise
-    /// grew by more than [`WORSENED`]; else the change.
-    pub fn change(&self) -> ChannelChange {
-        let (before, after) = (
-            above_noise(self.before, self.noise_floor),
-            above_noise(self.after, self.noise_floor),
-        );
-        if !before && !after {
-            ChannelChange::WithinNoise
-        } else if after && self.after > self.before && self.reduction_percent < -WORSENED {
-            ChannelChange::Worsened(-self.reduction_percent)
-        } else {
-            ChannelChange::Changed(self.reduction_percent)
-        }
-    }
 }
 
 #[cfg(test)]

@@ -223,22 +223,25 @@ fn channel_finding(
         .filter(|p| !above_noise(p.before, nf))
         .map(|p| p.part)
         .collect();
-    let significant_in: Vec<(String, f64)> = runs
-        .iter()
-        .filter_map(|r| {
-            let c = r
-                .channels
-                .iter()
-                .find(|c| c.channel == ch && c.significant)?;
-            Some((r.run.clone(), c.rms))
-        })
-        .collect();
+    let of = |significant: bool| -> Vec<(String, f64)> {
+        runs.iter()
+            .filter_map(|r| {
+                let c = r
+                    .channels
+                    .iter()
+                    .find(|c| c.channel == ch && c.significant == significant)?;
+                Some((r.run.clone(), c.rms))
+            })
+            .collect()
+    };
+    let (significant_in, within_in) = (of(true), of(false));
     Some(GapFinding::Channel {
         channel: ch,
         rms: all.before,
         noise_floor: nf,
         significant_runs: significant_in.len(),
         significant_in,
+        within_in,
         runs: runs.len(),
         wrong,
         right,

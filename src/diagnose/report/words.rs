@@ -9,6 +9,7 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
+mod causes;
 mod class;
 use class::{NO_VERDICT, OUTSIDE};
 mod evidence;
@@ -16,6 +17,7 @@ mod gap;
 mod lookalikes;
 mod parameters;
 mod rank;
+mod table;
 mod trust;
 mod warnings;
 pub use crate::diagnose::report::shares::carries_line as channel_shares;
@@ -29,15 +31,15 @@ pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
 pub use rank::{rank_warning, rank_warnings};
+pub use table::{added, channel_change, channels_alone, reduction, rms, unchanged, within_noise};
 pub use trust::{assumed_floor, channel_trust, channels_trusted, channels_trusted_for, Reader};
 pub use warnings::{effect_parameters_on_bound, verdict_warning};
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
-    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, Refusal, Refused, Verdict,
-    VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    GapFinding, NotIdentifiable, Note, OutsideLibrary, Refusal, Refused, Verdict, VerdictWarning,
 };
-use crate::diagnose::report::{Confounded, Reduction, Shrinkage};
+use crate::diagnose::report::Confounded;
 use crate::format::signed;
 
 impl Verdict {
@@ -267,61 +269,6 @@ pub fn verdict_warnings(v: &Verdict) -> Vec<String> {
         Verdict::Explained(e) => e.warnings.iter().map(verdict_warning).collect(),
         _ => Vec::new(),
     }
-}
-
-/// A channel's held-out gap within noise before and after the verdict's
-/// effects ([`crate::diagnose::report::Shrinkage::change`]): no share of
-/// it is said, but how many noise floors it was and is, so that a channel
-/// the verdict brought from 2.5 floors to 1 does not read as untouched
-/// beside a significant combined error.
-pub fn within_noise(s: &Shrinkage) -> String {
-    let floors = |rms: f64| crate::format::fixed(rms / s.noise_floor, 1);
-    format!(
-        "not significant alone ({} → {} noise floors; a channel alone needs {SIGNIFICANT_NOISE_FLOORS})",
-        floors(s.before),
-        floors(s.after)
-    )
-}
-
-/// How the per-channel table's "not significant" differs from the
-/// verdict's: each channel alone against its noise floors, the verdict on
-/// the channels together (the combined error against the noise level), so
-/// channels each within noise can carry a significant gap together.
-pub fn channels_alone() -> String {
-    format!("Each channel is judged alone against {SIGNIFICANT_NOISE_FLOORS} noise floors; the verdict's share is of the combined error of all channels, so channels each within noise can together carry a significant gap.")
-}
-
-/// A candidate's reduction of the combined error ([`Reduction`]), the
-/// number to one decimal (%), or why none is given.
-pub fn reduction(r: Reduction) -> String {
-    match r {
-        Reduction::WithinNoise => "not significant".into(),
-        Reduction::Percent(p) => crate::format::fixed(p, 1),
-    }
-}
-
-/// One channel before and after the verdict's effects on held-out runs
-/// (all samples), as the terminal lists it.
-pub fn channel_change(s: &Shrinkage) -> String {
-    let what = match s.change() {
-        ChannelChange::WithinNoise => within_noise(s),
-        ChannelChange::Changed(p) => format!("{p:.0} % of the gap above noise removed"),
-        ChannelChange::Worsened(p) => format!("{p:.0} % of the gap above noise added"),
-    };
-    format!(
-        "{:<9} {} → {} (noise floor {}): {what}",
-        s.channel.name(),
-        rms(s.before),
-        rms(s.after),
-        rms(s.noise_floor)
-    )
-}
-
-/// An RMS or a noise floor as the terminal and the page print it: four
-/// decimals where they show two significant digits, else two significant
-/// digits (0.0032 rad/s, 0.00021 rad), one text for one number.
-pub fn rms(v: f64) -> String {
-    crate::format::decimals_or_digits(v, 4, 2)
 }
 
 /// A note on the inputs.
@@ -579,6 +526,8 @@ fn beyond_vehicle(
 
 #[cfg(test)]
 mod band_tests;
+#[cfg(test)]
+mod cause_tests;
 #[cfg(test)]
 mod evidence_tests;
 #[cfg(test)]

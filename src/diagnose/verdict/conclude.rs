@@ -335,6 +335,7 @@ fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
             noise_level,
             threshold: rules::SIGNIFICANT,
             left_percent: 100.0 - ranked.reduction_percent,
+            carried_by: None,
         },
     )
 }
@@ -401,6 +402,7 @@ pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
                     after: s.after,
                     noise_floor: s.noise_floor,
                     added_percent,
+                    causes: Vec::new(),
                 }))
             }
             _ => None,
@@ -421,7 +423,9 @@ pub(crate) fn left(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
         .filter(|s| s.part == Part::All)
         .filter(|s| above_noise(s.before, s.noise_floor) && above_noise(s.after, s.noise_floor))
         .filter_map(|s| match s.change() {
-            ChannelChange::Changed(removed) if removed < acceptance_percent => {
+            ChannelChange::Changed(removed) | ChannelChange::Unchanged(removed)
+                if removed < acceptance_percent =>
+            {
                 Some(VerdictWarning::ChannelLeft(ChannelLeft {
                     channel: s.channel,
                     before: s.before,
@@ -429,6 +433,9 @@ pub(crate) fn left(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
                     noise_floor: s.noise_floor,
                     removed_percent: removed,
                     acceptance_percent,
+                    // Filled from the notes and the gap's findings once
+                    // they are made (`report::cause::point`).
+                    causes: Vec::new(),
                 }))
             }
             _ => None,

@@ -29,6 +29,7 @@ pub(super) fn channel(f: &GapFinding) -> String {
         noise_floor,
         significant_runs,
         significant_in,
+        within_in,
         runs,
         wrong,
         right,
@@ -40,7 +41,11 @@ pub(super) fn channel(f: &GapFinding) -> String {
     };
     let before = right.contains(&Part::Window(Window::BeforeInput));
     let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel, before));
-    let which = runs_named(*channel, *noise_floor, *significant_runs, significant_in);
+    let which = if *significant_runs == significant_in.len() {
+        runs_named(*channel, *noise_floor, (significant_in, within_in), *runs)
+    } else {
+        String::new()
+    };
     let head = format!(
                 "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs{which}",
                 channel.name(),
@@ -142,27 +147,58 @@ fn steady_offset(o: &SteadyOffset, channel: Channel, before: bool) -> String {
     )
 }
 
-/// The runs a channel's gap is significant in, with their RMS in noise
-/// floors, where they are a few (one to three) and all known: a gap in one
-/// run that no part over all runs isolates ("wrong in: nowhere") is
-/// otherwise lost. Empty otherwise.
+/// A run's name and its held-out RMS of a channel (its unit).
+type RunRms = (String, f64);
+
+/// Where a channel's gap is significant in some runs and not all, at most
+/// this many runs are named in a line; beyond, the largest are and the
+/// rest are counted.
+pub(super) const NAMED_RUNS: usize = 3;
+
+/// The runs a channel's gap is significant in (`significant`, with their
+/// held-out RMS) where some of the `runs` are and not all, each with its
+/// RMS in noise floors: a gap in one run that no part over all runs
+/// isolates ("wrong in: nowhere") is otherwise lost, and "significant in 4
+/// of 8 runs" leaves the user to find which. Up to [`NAMED_RUNS`] + 1 are
+/// named in the campaign's order; where the runs within noise (`within`)
+/// are fewer and at most [`NAMED_RUNS`], and every run measures the
+/// channel, those instead ("all but …"); else the [`NAMED_RUNS`] largest
+/// and a count of the rest. Empty where none or every run is significant.
 fn runs_named(
     channel: Channel,
     noise_floor: f64,
-    significant_runs: usize,
-    significant_in: &[(String, f64)],
+    (significant, within): (&[RunRms], &[RunRms]),
+    runs: usize,
 ) -> String {
-    if !(1..=3).contains(&significant_runs) || significant_in.len() != significant_runs {
+    let each = |v: &[RunRms]| -> String {
+        let named: Vec<String> = v
+            .iter()
+            .map(|(run, rms)| {
+                let floors = crate::format::fixed(rms / noise_floor, 1);
+                format!("{run}: {rms:.4} {}, {floors} noise floors", channel.unit())
+            })
+            .collect();
+        named.join("; ")
+    };
+    let k = significant.len();
+    if k == 0 || k == runs {
         return String::new();
     }
-    let named: Vec<String> = significant_in
-        .iter()
-        .map(|(run, rms)| {
-            let floors = crate::format::fixed(rms / noise_floor, 1);
-            format!("{run}: {rms:.4} {}, {floors} noise floors", channel.unit())
-        })
-        .collect();
-    format!(" ({})", named.join("; "))
+    let measured_by_all = k + within.len() == runs;
+    if measured_by_all && within.len() < k && within.len() <= NAMED_RUNS {
+        return format!(" (all but {})", each(within));
+    }
+    if k <= NAMED_RUNS + 1 {
+        return format!(" ({})", each(significant));
+    }
+    let mut largest = significant.to_vec();
+    largest.sort_by(|a, b| b.1.total_cmp(&a.1));
+    largest.truncate(NAMED_RUNS);
+    format!(
+        " (largest: {}; and {} more)",
+        each(&largest),
+        k - NAMED_RUNS
+    )
 }
 
 /// The terminal's lines for the frequency bands whose yaw-rate response is

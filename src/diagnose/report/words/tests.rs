@@ -69,6 +69,7 @@ fn an_explained_verdict_names_a_channel_whose_gap_it_leaves_in_its_sentence_and_
             noise_floor: 0.0020,
             removed_percent: 12.6,
             acceptance_percent: 30.0,
+            causes: Vec::new(),
         })];
     }
     assert_eq!(
@@ -494,6 +495,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         noise_floor: 0.002,
         significant_runs,
         significant_in: Vec::new(),
+        within_in: Vec::new(),
         runs: 8,
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
@@ -575,6 +577,7 @@ fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
         noise_level: 1.0,
         threshold: 1.3,
         left_percent: 16.0,
+        carried_by: None,
     };
     assert_eq!(
         verdict_warning(&w),

@@ -4,7 +4,7 @@
 //! unit; shares in percent of the gap above noise.
 
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::report::outcome::VerdictWarning;
+use crate::diagnose::report::outcome::{CarriedBy, ChannelChange, ChannelLeft, VerdictWarning};
 use crate::diagnose::report::ParameterValue;
 
 /// A channel's held-out RMS before and after the verdict's effects, in its
@@ -13,24 +13,48 @@ fn rms_change(channel: Channel, before: f64, after: f64) -> String {
     format!("RMS {before:.4} → {after:.4} {}", channel.unit())
 }
 
+/// A channel whose gap the verdict's effects leave ([`ChannelLeft`]):
+/// its change said by the rule the table and the page say it by (a change
+/// within the scatter of held-out scores is no removal), and its other
+/// cause pointed to where the report holds evidence of one
+/// ([`ChannelLeft::causes`]), else named in general.
+fn channel_left(c: &ChannelLeft) -> String {
+    let change = match c.change() {
+        ChannelChange::Unchanged(_) => format!(
+            "{}, where the verdict needs {:.0} % of the whole",
+            super::unchanged(c.before, c.after, c.noise_floor),
+            c.acceptance_percent
+        ),
+        _ => format!(
+            "{:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole",
+            c.removed_percent, c.acceptance_percent
+        ),
+    };
+    let cause = super::causes::pointed(&c.causes, c.channel, c.noise_floor).unwrap_or_else(|| {
+        "(a model-form error the candidates do not hold, or this channel's sensor)".into()
+    });
+    format!(
+        "it leaves the {} gap: {} on held-out runs (noise floor {:.4}), {change}; the combined error falls through the other channels, so this channel's gap has another cause{}{cause}",
+        c.channel.name(),
+        rms_change(c.channel, c.before, c.after),
+        c.noise_floor,
+        if c.causes.is_empty() { " " } else { ": " }
+    )
+}
+
 /// One warning on the verdict.
 pub fn verdict_warning(w: &VerdictWarning) -> String {
     match w {
         VerdictWarning::ChannelWorsened(c) => format!(
-            "it leaves the {} gap larger on held-out runs: {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
+            "it leaves the {} gap larger on held-out runs: {} (noise floor {:.4}), {}; the combined error falls through the other channels (check this channel's sensor{} and whether the effect's physics can make it worse)",
             c.channel.name(),
             rms_change(c.channel, c.before, c.after),
             c.noise_floor,
-            c.added_percent
+            super::added(c.added_percent, c.before, c.after, c.noise_floor),
+            super::causes::pointed(&c.causes, c.channel, c.noise_floor)
+                .map_or(String::new(), |p| format!(": {p};"))
         ),
-        VerdictWarning::ChannelLeft(c) => format!(
-            "it leaves the {} gap: {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
-            c.channel.name(),
-            rms_change(c.channel, c.before, c.after),
-            c.noise_floor,
-            c.removed_percent,
-            c.acceptance_percent
-        ),
+        VerdictWarning::ChannelLeft(c) => channel_left(c),
         VerdictWarning::OnSearchBound { parameters } => {
             super::parameters::on_search_bound(parameters)
         }
@@ -51,9 +75,27 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             noise_level,
             threshold,
             left_percent,
-        } => format!(
-            "what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
-        ),
+            carried_by,
+        } => {
+            let head = format!("what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause");
+            match carried_by {
+                None => format!("{head} (an effect outside the library, or the base model's own form), not noise"),
+                Some(c) => format!("{head}, not noise: {}", carried(c)),
+            }
+        }
+    }
+}
+
+/// Where the further cause of what a verdict leaves lies: the channel
+/// that carries most of it, and either the warning on it above that names
+/// what the report holds about it or the causes in general.
+fn carried(c: &CarriedBy) -> String {
+    let name = c.channel.name();
+    let share = format!("{name} carries {:.0} % of what it leaves", c.share_percent);
+    if c.causes_named {
+        format!("{share}, and the warning on {name} above says what the report holds about it")
+    } else {
+        format!("{share} (an effect outside the library, the base model's own form, or {name}'s sensor)")
     }
 }
 

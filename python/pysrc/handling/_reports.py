@@ -424,10 +424,16 @@ class Verdict:
     """The effects explain only part of the gap, below 50 % (explained)."""
     warning_details: List[Dict[str, Any]] = field(default_factory=list)
     """The warnings typed (``kind``: ``channel_worsened`` with ``channel``,
-    ``before``, ``after``, ``noise_floor``, ``added_percent``;
+    ``before``, ``after``, ``noise_floor``, ``added_percent``, ``causes``;
     ``channel_left`` with ``channel``, ``before``, ``after``,
-    ``noise_floor``, ``removed_percent``, ``acceptance_percent``; or
-    ``on_search_bound`` with ``parameters``)."""
+    ``noise_floor``, ``removed_percent``, ``acceptance_percent``,
+    ``causes``; ``gap_remains`` with ``carried_by`` (``channel``,
+    ``share_percent``, ``causes_named``) where one channel carries what is
+    left; ``tyres_far_from_load`` with ``front``, ``rear``; or
+    ``on_search_bound`` with ``parameters``). ``causes`` lists
+    what the report holds elsewhere about the channel, each with ``kind``:
+    ``beta_against`` (``file``, ``correlation``), ``run_carries``
+    (``run``, ``share_percent``, ``rms``) or ``steady_offset``."""
     threshold: Optional[float] = None
     """The multiple of the noise level a gap must exceed (no significant gap)."""
     no_tyre: List[Dict[str, Any]] = field(default_factory=list)

@@ -427,9 +427,10 @@ class Verdict:
     ``before``, ``after``, ``noise_floor``, ``added_percent``, ``causes``;
     ``channel_left`` with ``channel``, ``before``, ``after``,
     ``noise_floor``, ``removed_percent``, ``acceptance_percent``,
-    ``causes``; ``gap_remains`` with ``carried_by`` (``channel``,
-    ``share_percent``, ``causes_named``) where one channel carries what is
-    left; ``tyres_far_from_load`` with ``front``, ``rear``; or
+    ``causes``; ``gap_remains`` with ``heldout_error_after``,
+    ``noise_level``, ``threshold``, ``left_percent`` and ``carried_by``
+    (``channel``, ``share_percent``, ``causes_named``, or null where no
+    one channel carries what is left); ``tyres_far_from_load`` with ``front``, ``rear``; or
     ``on_search_bound`` with ``parameters``). ``causes`` lists
     what the report holds elsewhere about the channel, each with ``kind``:
     ``beta_against`` (``file``, ``correlation``), ``run_carries``

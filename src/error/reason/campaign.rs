@@ -24,19 +24,20 @@ pub enum CampaignReason {
     /// A `min_speed` outside `[0, MAX_MIN_SPEED]` (negative, not a
     /// number, or above: a speed in km/h, or a slip), m/s: said as the
     /// campaign file's other keys' ranges are, with a value to write.
-    #[error("{}", min_speed_range(*min_speed))]
+    #[error("{}", min_speed_range(*min_speed, *default))]
     MinSpeedRange {
         /// The value given, m/s.
         min_speed: f64,
+        /// The default, advised where the value reads as no speed, m/s.
+        default: f64,
     },
 }
 
 /// The words of [`CampaignReason::MinSpeedRange`] for the value `v`, m/s:
 /// the range, why it ends where it does, and what to write (the value in
-/// km/h converted where it reads as one).
-fn min_speed_range(v: f64) -> String {
+/// km/h converted where it reads as one, else the `default`).
+fn min_speed_range(v: f64, default: f64) -> String {
     use crate::format::rounded;
-    let default = crate::measured::clean::DEFAULT_MIN_SPEED;
     let write = match v > MAX_MIN_SPEED && v / 3.6 <= MAX_MIN_SPEED {
         true => format!(
             "the key is in m/s: is it in km/h? {} km/h is {} m/s: write `min_speed = {}`",
@@ -67,15 +68,27 @@ mod tests {
     #[test]
     fn every_min_speed_refused_reads_one_range_and_what_to_write() {
         for v in [-1.0, f64::NAN, 200.0, 1000.0] {
-            let e = CampaignReason::MinSpeedRange { min_speed: v }.to_string();
+            let e = CampaignReason::MinSpeedRange {
+                min_speed: v,
+                default: 5.0,
+            }
+            .to_string();
             assert!(e.starts_with("must lie in [0, 100]: it is the speed in m/s below which samples are left out as slow"), "{e}");
         }
-        let km = CampaignReason::MinSpeedRange { min_speed: 200.0 }.to_string();
+        let km = CampaignReason::MinSpeedRange {
+            min_speed: 200.0,
+            default: 5.0,
+        }
+        .to_string();
         assert!(
             km.ends_with("is it in km/h? 200 km/h is 55.6 m/s: write `min_speed = 55.6`"),
             "{km}"
         );
-        let far = CampaignReason::MinSpeedRange { min_speed: 1000.0 }.to_string();
+        let far = CampaignReason::MinSpeedRange {
+            min_speed: 1000.0,
+            default: 5.0,
+        }
+        .to_string();
         assert!(
             far.ends_with("write a speed in m/s, such as `min_speed = 5` (the default)"),
             "{far}"

@@ -276,6 +276,7 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
                     s.min_speed,
                     ParamReason::Campaign(Box::new(CampaignReason::MinSpeedRange {
                         min_speed: s.min_speed,
+                        default: crate::measured::clean::DEFAULT_MIN_SPEED,
                     })),
                 )),
                 true => Ok(()),

@@ -200,6 +200,56 @@ pub(crate) fn distinct(
     }
 }
 
+/// `values` each with at least `decimals` decimals, and as many more (up
+/// to 15) as it takes for two different values never to print alike and a
+/// value that is not zero never to print as zero: the numbers of a
+/// sentence that compares them never contradict it ("at 49.6 % of it,
+/// where a step steer stays between 50 % and 150 %", not "at 50 %"; "a
+/// record 0.004 s longer", not "0.00 s longer"). Values that agree print
+/// as [`fixed`] prints them.
+pub fn fixed_apart(values: &[f64], decimals: usize) -> Vec<String> {
+    apart(values, decimals, 15, fixed)
+}
+
+/// `values` each with at least `digits` significant digits as
+/// [`readable`] writes them, and as many more (up to 17) as it takes for
+/// two different values never to print alike: "0.000169 rad, less than
+/// the 0.00017 rad of a step", not "0.00017 rad, less than the 0.00017
+/// rad".
+pub fn readable_apart(values: &[f64], digits: usize) -> Vec<String> {
+    apart(values, digits, 17, readable)
+}
+
+/// `values` written by `write` at the least precision from `least` to
+/// `most` under which no two different values print alike and no value
+/// that is not zero prints as zero.
+fn apart(
+    values: &[f64],
+    least: usize,
+    most: usize,
+    write: fn(f64, usize) -> String,
+) -> Vec<String> {
+    let differ = |a: f64, b: f64| a != b && !(a.is_nan() && b.is_nan());
+    let clash = |shown: &[String]| {
+        values.iter().zip(shown).enumerate().any(|(i, (&v, s))| {
+            let as_zero = v != 0.0 && !v.is_nan() && s.chars().all(|c| "-0.".contains(c));
+            as_zero
+                || values[i + 1..]
+                    .iter()
+                    .zip(&shown[i + 1..])
+                    .any(|(&w, t)| differ(v, w) && t == s)
+        })
+    };
+    let mut n = least;
+    loop {
+        let shown: Vec<String> = values.iter().map(|&v| write(v, n)).collect();
+        if n >= most || !clash(&shown) {
+            return shown;
+        }
+        n += 1;
+    }
+}
+
 fn unsigned_zero(s: String) -> String {
     match s.strip_prefix('-') {
         Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
@@ -347,6 +397,35 @@ mod tests {
         assert_eq!(finer_than_error("1.3038", 1.30381, 0.00327), "1.3038");
         assert_eq!(finer_than_error("1.3038", 1.303812, 0.0000327), "1.303812");
         assert_eq!(finer_than_error("8.9e-5", 8.9e-5, 1e-7), "8.9e-5");
+    }
+
+    /// A number printed beside the ones it is compared with, or in a
+    /// sentence that says it is not zero, never rounds onto them: the
+    /// fewest decimals (digits) from those asked that tell them apart.
+    #[test]
+    fn numbers_said_together_never_round_onto_each_other_or_onto_zero() {
+        // 49.6 % of a step beside the band 50–150 %: one decimal more.
+        assert_eq!(
+            fixed_apart(&[49.6, 50.0, 150.0], 0),
+            ["49.6", "50.0", "150.0"]
+        );
+        // Apart already: as `fixed` prints them.
+        assert_eq!(fixed_apart(&[31.0, 50.0, 150.0], 0), ["31", "50", "150"]);
+        // A small duration is not "0.00 s", nor a small negative "-0.00".
+        assert_eq!(fixed_apart(&[0.004], 2), ["0.004"]);
+        assert_eq!(fixed_apart(&[-0.0031], 2), ["-0.003"]);
+        // Zero stays zero, equal values stay alike.
+        assert_eq!(fixed_apart(&[0.0, 0.0], 2), ["0.00", "0.00"]);
+        assert_eq!(fixed_apart(&[0.2, 0.2], 2), ["0.20", "0.20"]);
+        assert_eq!(fixed_apart(&[0.2004, 0.2], 2), ["0.2004", "0.2000"]);
+        // Significant digits: a span just under the least step.
+        assert_eq!(
+            readable_apart(&[0.000169, 0.00017], 2),
+            ["0.000169", "0.000170"]
+        );
+        assert_eq!(readable_apart(&[0.0095, 0.01], 2), ["0.0095", "0.010"]);
+        assert_eq!(readable_apart(&[0.01, 0.01], 2), ["0.010", "0.010"]);
+        assert_eq!(readable_apart(&[f64::NAN, f64::NAN], 2), ["NaN", "NaN"]);
     }
 
     #[test]

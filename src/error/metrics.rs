@@ -61,10 +61,17 @@ fn pulse(initial: f64, size: f64, start: f64, duration: f64, steady: f64, window
         angle(size),
         angle(initial),
         fixed(start, 2),
-        fixed(duration, 2),
+        nonzero(duration, 2),
         angle(steady),
         Num(window)
     )
+}
+
+/// A length or time `v` (s) that is not zero to `decimals` decimals, and
+/// more where those round it to zero: "a record 0.004 s longer", not
+/// "0.00 s longer" ([`crate::format::fixed_apart`]).
+fn nonzero(v: f64, decimals: usize) -> String {
+    crate::format::fixed_apart(&[v], decimals).swap_remove(0)
 }
 
 /// Why the metrics could not be computed.
@@ -184,7 +191,7 @@ pub enum MetricsError {
     /// A record too short for its steady window: the window, the record's
     /// last `--steady-window` seconds, starts before the steer has reached
     /// its step, so its means mix the step (and the time before it) in.
-    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so {}; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), advice.words(to - settles, *to), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
+    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so {}; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), advice.words(to - settles, *to), nonzero(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), nonzero(settles - from, 2))]
     ShortForSteadyWindow {
         /// Which shorter window, if any, reads a settled response.
         advice: SteadyAdvice,
@@ -209,7 +216,7 @@ pub enum MetricsError {
         to: f64,
     },
     /// The steer leaves its step after reaching it: a sweep or a sine.
-    #[error("the steer does not hold its step: after reaching 90 % of it at {reached:.2} s it is at {} % of it at {time:.2} s, where a step steer stays between {} % and {} %: a sweep or a sine is not measured as a step steer", fixed(100.0 * share, 0), Num(100.0 * HELD_STEP.0), Num(100.0 * HELD_STEP.1))]
+    #[error("the steer does not hold its step: after reaching 90 % of it at {reached:.2} s it is at {} % of it at {time:.2} s, where a step steer stays between {} % and {} %: a sweep or a sine is not measured as a step steer", crate::format::fixed_apart(&[100.0 * share, 100.0 * HELD_STEP.0, 100.0 * HELD_STEP.1], 0)[0], Num(100.0 * HELD_STEP.0), Num(100.0 * HELD_STEP.1))]
     SteerNotHeld {
         /// Where the steer first reaches 90 % of its step, s.
         reached: f64,
@@ -219,7 +226,7 @@ pub enum MetricsError {
         share: f64,
     },
     /// A steer that takes longer than a step may to rise: a ramp.
-    #[error("the steer rises from 10 % to 90 % of its change in {rise:.2} s, from {from:.2} s: a ramp steer, not a step (GB/T 6323 steps within 0.2 s, ISO 7401 within 0.15 s; a step taking more than {} s is refused), and the step-steer metrics measure nothing of it", Num(*limit))]
+    #[error("the steer rises from 10 % to 90 % of its change in {} s, from {from:.2} s: a ramp steer, not a step (GB/T 6323 steps within 0.2 s, ISO 7401 within 0.15 s; a step taking more than {} s is refused), and the step-steer metrics measure nothing of it", crate::format::fixed_apart(&[*rise, *limit], 2)[0], Num(*limit))]
     SteerRamp {
         /// The 10–90 % rise, s.
         rise: f64,
@@ -286,10 +293,47 @@ impl SteadyAdvice {
             ),
             Self::NoneSettles { shortest } => format!(
                 "a steady window must start after it, and no window {} s to {most} s long ending at the record's end (starting from {} s to {} s) reads a settled response (every channel within 2 % of its step and no longer approaching it): the record ends before the car reaches its steady state, and a gain read from it is no steady-state gain; record the step held longer",
-                crate::format::fixed(shortest, 2),
+                nonzero(shortest, 2),
                 crate::format::fixed(end - (held * 100.0).floor().max(0.0) / 100.0, 2),
                 crate::format::fixed(end - shortest, 2)
             ),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A steer at 49.6 % of its step read "at 50 % of it, where a step
+    /// steer stays between 50 % and 150 %"; a rise just past the limit
+    /// read as the limit; a record a few milliseconds short "0.00 s
+    /// longer".
+    #[test]
+    fn a_refusal_never_prints_its_value_as_the_bound_it_broke_or_as_zero() {
+        let e = MetricsError::SteerNotHeld {
+            reached: 1.1,
+            time: 2.0,
+            share: 0.496,
+        };
+        assert!(
+            e.to_string().contains(
+                "it is at 49.6 % of it at 2.00 s, where a step steer stays between 50 % and 150 %"
+            ),
+            "{e}"
+        );
+        let e = MetricsError::SteerRamp {
+            rise: 0.5004,
+            from: 1.0,
+            limit: 0.5,
+        };
+        assert!(e.to_string().contains("in 0.5004 s, from 1.00 s"), "{e}");
+        let e = MetricsError::ShortForSteadyWindow {
+            advice: SteadyAdvice::SteerOnly,
+            settles: 3.004,
+            from: 3.0,
+            to: 4.0,
+        };
+        assert!(e.to_string().ends_with("(a record 0.004 s longer)"), "{e}");
     }
 }

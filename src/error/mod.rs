@@ -64,7 +64,7 @@ mod vehicle_limit;
 
 pub use bank_degrees::BankInDegrees;
 pub use bank_reversed::BankReversed;
-pub use beta_sign::BetaAgainstModel;
+pub use beta_sign::{BetaAgainstModel, FilesAgainst};
 pub use camber::{MOST_CAMBER, STEEP_CAMBER};
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};

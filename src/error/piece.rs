@@ -34,13 +34,16 @@ pub enum PieceRefusal {
     /// Another piece of the run was used (a single use takes one).
     #[error("another piece was used")]
     AnotherPieceUsed,
-    /// A replay's piece whose steer stays within `span` (less than `min`,
-    /// a step's worth) while another piece of the run moves it: the piece
-    /// that moves it is replayed, the longest otherwise. Rad.
-    #[error("its steer stays within {} rad (less than the {} rad of a step) while another piece moves it, and that piece is replayed; to replay this one, cut the run file to its span", crate::format::readable(*span, 2), crate::format::readable(*min, 2))]
+    /// A replay's piece whose steer stays between `from` and `to` (a
+    /// range less than `min`, a step's worth) while another piece of the
+    /// run moves it: the piece that moves it is replayed, the longest
+    /// otherwise. Rad.
+    #[error("{} while another piece moves it, and that piece is replayed; to replay this one, cut the run file to its span", steer_held(*from, *to, *min))]
     SteerHeld {
-        /// The steer's range in the piece, rad.
-        span: f64,
+        /// The steer's least value in the piece, rad.
+        from: f64,
+        /// Its largest, rad.
+        to: f64,
         /// The least range that moves the steer, rad.
         min: f64,
     },
@@ -82,6 +85,27 @@ pub enum PieceRefusal {
         /// The gap before it.
         gap: GapAt,
     },
+}
+
+/// The steer of a piece held between `from` and `to` (rad), less than
+/// the `min` a step moves it by: said by where it is held and how far it
+/// moves, each number with the digits that tell it from the others ("its
+/// steer stays within 0 rad" read as a steer at 0 for one held at 0.010
+/// rad).
+fn steer_held(from: f64, to: f64, min: f64) -> String {
+    let moved = crate::format::readable_apart(&[to - from, min], 2);
+    if from == to {
+        return format!(
+            "its steer holds at {} rad throughout (it does not move; a step moves it by {} rad or more)",
+            crate::format::readable(from, 2),
+            moved[1]
+        );
+    }
+    let range = crate::format::readable_apart(&[from, to], 2);
+    format!(
+        "its steer stays between {} and {} rad (it moves by {} rad, less than the {} rad of a step)",
+        range[0], range[1], moved[0], moved[1]
+    )
 }
 
 /// What to do with a hole that cuts a step: the advice of [`PieceRefusal::CutByGap`] and
@@ -164,4 +188,28 @@ pub(super) fn no_steer_step(pieces: &[RefusedPiece], gaps: &[(f64, f64)]) -> Str
         "no moving piece holds a steer step: {}{split}",
         each.join("; ")
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A piece held at 0.010 rad was said to stay "within 0 rad": the
+    /// sentence says where the steer is held, and a span just under a
+    /// step's is not printed as the step.
+    #[test]
+    fn a_held_steer_is_said_where_it_is_held_never_as_zero() {
+        let held = |from, to| {
+            PieceRefusal::SteerHeld {
+                from,
+                to,
+                min: 0.00017,
+            }
+            .to_string()
+        };
+        let at = held(0.01, 0.01);
+        assert!(at.starts_with("its steer holds at 0.010 rad throughout (it does not move; a step moves it by 0.00017 rad or more)"), "{at}");
+        let near = held(0.01, 0.010169);
+        assert!(near.starts_with("its steer stays between 0.0100 and 0.0102 rad (it moves by 0.000169 rad, less than the 0.000170 rad of a step)"), "{near}");
+    }
 }

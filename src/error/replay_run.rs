@@ -95,11 +95,13 @@ impl fmt::Display for ReplayRunProblem {
             }
             ReplayRunProblem::SteerAboveYaw { run, median, samples } => write!(
                 f,
-                "the run {run}: the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians; a column the run logs in degrees is declared so in this scenario: `degrees = [\"steer\"]` under [manoeuvre]",
+                "the run {run}: the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians; a column the run logs in degrees is declared so in this scenario: `degrees = [\"steer\"]` under [manoeuvre]",
                 match *median > 0.0 {
                     true => format!("{}× smaller", crate::format::readable(1.0 / median, 2)),
                     false => "far smaller".into(),
-                }
+                },
+                // 0.0004 is not "0.000" beside "2500× smaller".
+                crate::format::fixed_apart(&[*median], 3)[0]
             ),
             ReplayRunProblem::DeclaredInDegrees { run, column, median, samples } => {
                 let (what, unit) = match *column {

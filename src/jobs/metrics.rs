@@ -7,7 +7,7 @@ use crate::io::{read_run_reading, AngleColumn, DeclaredBy, Slip};
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
 use crate::metrics::measured::{
-    measured_step_metrics, AyCheck, MeasuredMetrics, AY_METRICS, NO_AY,
+    measured_step_metrics, AyCheck, MeasuredMetrics, AY_METRICS, NO_AY, NO_BETA,
 };
 use crate::metrics::{MetricSettings, StepMetrics};
 pub use body_ay::{AyColumn, RollLevelling};
@@ -95,7 +95,10 @@ pub fn run_with_degrees(
     let ay_column = body_ay::body_frame_ay(path, &mut run)?;
     // Before a dead `ay` is left out: it is said as dead, not as absent.
     let unchecked = crate::io::unchecked_speed_unit(&run);
+    let had_beta = run.beta.is_some();
     let mut dead = leave_out_dead_channels(&mut run)?;
+    // A dead `beta` left out is said as dead, not as absent.
+    let beta_dead = had_beta && run.beta.is_none();
     let ay_read = body_ay::level_by_roll(&mut run, ay_column);
     dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
@@ -124,7 +127,8 @@ pub fn run_with_degrees(
     coarse::withhold_unresolved(&mut m.metrics, dt, m.steer_rise_time);
     if !dead.is_empty() {
         // A dead `ay`'s warning says more than that the run has none.
-        m.warnings.retain(|w| w != NO_AY);
+        m.warnings
+            .retain(|w| w != NO_AY && !(beta_dead && w == NO_BETA));
         m.warnings.splice(0..0, dead);
     }
     // First: every other warning reads the steer as logged.

@@ -210,8 +210,8 @@ fn sliding_words(
         {
             let [front, rear] = linear_slip.unwrap_or_default();
             format!(
-                "the steady sideslip is {:.1}°, beyond 10°, {}",
-                beta.to_degrees(),
+                "the steady sideslip is {}°, beyond 10°, {}",
+                degrees_apart(beta),
                 kinematic_turn_because(
                     &format!(
                         "the linear tyres' slip angles stay within {}° (front) and {}° (rear), short of the 3° where real tyres' forces begin to peak",
@@ -225,25 +225,25 @@ fn sliding_words(
         }
         // Linear tyres have no grip to slide past.
         _ if gripless => format!(
-            "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity ({}a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
-            beta.to_degrees(),
+            "the steady sideslip is {}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity ({}a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
+            degrees_apart(beta),
             linear_slip.map_or_else(String::new, |s| format!(
                 "the largest is {}°; ",
                 crate::format::significant(s[0].max(s[1]).to_degrees(), 2)
             ))
         ),
         (Some((share, g)), Some(u)) => format!(
-            "the steady sideslip is {:.1}°, beyond 10°, {}",
-            beta.to_degrees(),
+            "the steady sideslip is {}°, beyond 10°, {}",
+            degrees_apart(beta),
             kinematic_turn(share, g.words(), u, m.steer_step)
         ),
         _ if beta.abs() > std::f64::consts::FRAC_PI_2 => format!(
-            "the steady sideslip is {:.1}°, past a quarter turn: the car has spun, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
-            beta.to_degrees()
+            "the steady sideslip is {}°, past a quarter turn: the car has spun, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+            degrees_apart(beta)
         ),
         _ => format!(
-            "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
-            beta.to_degrees()
+            "the steady sideslip is {}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+            degrees_apart(beta)
         ),
     }
 }
@@ -265,8 +265,8 @@ pub fn applicability_with_grip(
     let mut out = Vec::new();
     if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
         out.push(format!(
-            "the step is at {:.2} m/s, below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry, and neither the response times nor the total variances (E_r, E_ay, Er: the lags of a geometric turn) measure handling (ISO 7401 steps at 80 km/h, as Wang & Liang's validation of Er does)",
-            u.abs()
+            "the step is at {} m/s, below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry, and neither the response times nor the total variances (E_r, E_ay, Er: the lags of a geometric turn) measure handling (ISO 7401 steps at 80 km/h, as Wang & Liang's validation of Er does)",
+            crate::format::fixed_apart(&[u.abs(), CRAWL_SPEED], 2)[0]
         ));
     }
     // A simulation's channels share one clock, and its tyres are known.
@@ -317,30 +317,42 @@ fn leading_cause(simulated: bool, speed: Option<f64>) -> &'static str {
     }
 }
 
+/// A sideslip `beta` (rad) in degrees to one decimal, more where one
+/// would round it onto the 10° of a sliding car or a quarter turn it is
+/// said against ("10.0°, beyond 10°" for 10.04°).
+fn degrees_apart(beta: f64) -> String {
+    let limits = [10.0, -10.0, 90.0, -90.0];
+    let mut all = vec![beta.to_degrees()];
+    all.extend(limits);
+    crate::format::fixed_apart(&all, 1).swap_remove(0)
+}
+
 /// The warning on a yaw-rate overshoot of `percent` beyond
 /// [`SPIN_OVERSHOOT`] at `speed` (m/s), judged by `evidence`.
 fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>) -> String {
     let at = speed.map_or_else(String::new, |u| format!(", here {:.1} m/s", u.abs()));
+    // 100.4 % is not "100 %" beside "more than twice the steady value".
+    let said = crate::format::fixed_apart(&[percent, SPIN_OVERSHOOT], 0).swap_remove(0);
     let ringing =
         "the metrics still describe it, a response far from the standards' well-damped steps";
-    let spin = format!("the yaw rate overshoots its steady value by {percent:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe");
+    let spin = format!("the yaw rate overshoots its steady value by {said} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe");
     match evidence {
         Some(Overshoot::GripUsed(share)) if share < KINEMATIC_GRIP => format!(
-            "the yaw rate overshoots its steady value by {percent:.0} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{at}); {ringing}",
+            "the yaw rate overshoots its steady value by {said} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{at}); {ringing}",
             100.0 * share
         ),
         Some(Overshoot::Sideslip(beta)) if beta <= SLIDING_SIDESLIP => format!(
-            "the yaw rate overshoots its steady value by {percent:.0} % with the sideslip within ±{:.1}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
-            beta.to_degrees()
+            "the yaw rate overshoots its steady value by {said} % with the sideslip within ±{}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
+            degrees_apart(beta)
         ),
         Some(Overshoot::NoGripLimit | Overshoot::LinearSlip(_)) => format!(
-            "the yaw rate overshoots its steady value by {percent:.0} % on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response (the yaw damping falls with speed{at}, and soft tyres lower it); {ringing}"
+            "the yaw rate overshoots its steady value by {said} % on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response (the yaw damping falls with speed{at}, and soft tyres lower it); {ringing}"
         ),
         Some(Overshoot::NoSideslip) => format!(
             "{spin}; or, at speed, a lightly damped response that never left the tyres' linear range: the run has no `beta` to tell them apart"
         ),
         Some(Overshoot::SpeedFalls { at_peak, steady }) => format!(
-            "the yaw rate overshoots its steady value by {percent:.0} %, but the speed falls from {} m/s at the peak to {} m/s over the steady window: a neutral car's steady yaw rate, u·δ/l, is {} times as large at the peak's speed, no less than the {} times the peak stands above the steady value: the overshoot compares the yaw rate at two speeds and measures neither a spin nor the damping; hold the speed through the step to measure them (GB/T 6323 and ISO 7401 do)",
+            "the yaw rate overshoots its steady value by {said} %, but the speed falls from {} m/s at the peak to {} m/s over the steady window: a neutral car's steady yaw rate, u·δ/l, is {} times as large at the peak's speed, no less than the {} times the peak stands above the steady value: the overshoot compares the yaw rate at two speeds and measures neither a spin nor the damping; hold the speed through the step to measure them (GB/T 6323 and ISO 7401 do)",
             crate::format::readable(at_peak.abs(), 3),
             crate::format::readable(steady.abs(), 3),
             crate::format::fixed(at_peak.abs() / steady.abs(), 2),

@@ -341,3 +341,25 @@ fn a_leading_response_is_blamed_on_the_logger_only_where_there_is_one() {
         "{said}"
     );
 }
+
+/// A sideslip of 10.04° read "10.0°, beyond 10°", an overshoot of
+/// 100.4 % "100 %" beside "more than twice the steady value": each is
+/// printed with the digits that tell it from the limit it is said against.
+#[test]
+fn a_value_beyond_a_limit_never_prints_as_the_limit() {
+    assert_eq!(degrees_apart(10.04_f64.to_radians()), "10.04");
+    assert_eq!(degrees_apart(-10.04_f64.to_radians()), "-10.04");
+    assert_eq!(degrees_apart(17.8_f64.to_radians()), "17.8");
+    let w = overshoot_words(100.4, None, None);
+    assert!(
+        w.starts_with(
+            "the yaw rate overshoots its steady value by 100.4 %: a peak more than twice"
+        ),
+        "{w}"
+    );
+    let w = overshoot_words(140.0, None, None);
+    assert!(
+        w.starts_with("the yaw rate overshoots its steady value by 140 %:"),
+        "{w}"
+    );
+}

@@ -123,8 +123,10 @@ fn correlation(run: &MeasuredRun) -> Option<f64> {
 pub(crate) fn against_kinematics(run: &MeasuredRun) -> Option<String> {
     let k = correlation(run)?;
     (k < AGAINST).then(|| {
+        // -0.5004 is not "-0.50" beside "below -0.5".
+        let k = crate::format::fixed_apart(&[k, AGAINST], 2).swap_remove(0);
         format!(
-            "the sideslip turns against the car: its rate correlates at {k:.2} with ay/u − r (β̇ = ay/u − r on a flat road, ISO 8855; below {AGAINST} it is taken as reversed, as the diagnosis refuses a β against its model's): `beta` is logged in the other sign convention (FORMATS.md: at speed a left turn's β is negative)? Negate the column; the steady sideslip and the metrics read from β carry the wrong sign"
+            "the sideslip turns against the car: its rate correlates at {k} with ay/u − r (β̇ = ay/u − r on a flat road, ISO 8855; below {AGAINST} it is taken as reversed, as the diagnosis refuses a β against its model's): `beta` is logged in the other sign convention (FORMATS.md: at speed a left turn's β is negative)? Negate the column; the steady sideslip and the metrics read from β carry the wrong sign"
         )
     })
 }

@@ -414,9 +414,16 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, settings: &MetricSettings) -> 
 }
 
 /// The warning of a run without `ay` (a dead `ay` left out says so itself,
-/// and `metrics` drops this one for it).
+/// and `metrics` drops this one for it): the column, and the rows of the
+/// table that read "—" for want of it, said once.
 pub(crate) const NO_AY: &str =
-    "the run has no `ay`: lateral-acceleration metrics and Er are left out";
+    "the run has no `ay` column, which the ay response time, steady ay, E_ay and Er rows need: they read — (null in --json)";
+
+/// The warning of a run without `beta` (a dead `beta` left out says so
+/// itself, and `metrics` drops this one for it): the sideslip and TB rows
+/// read "—" without a word of why.
+pub(crate) const NO_BETA: &str =
+    "the run has no `beta` column, which the steady sideslip and TB rows need (TB is the yaw-rate peak time × the steady sideslip): they read — (null in --json)";
 
 /// The warning of a steady window whose response samples the cleaning
 /// masked (a stuck sensor to the end of the record, a burst of spikes) and
@@ -523,6 +530,9 @@ pub fn measured_step_metrics(
     warnings.extend(super::beta_sign::against_kinematics(&piece));
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());
+    }
+    if piece.beta.is_none() {
+        warnings.push(NO_BETA.into());
     }
     let ay_basis = ay_check::ay_basis(&piece, &metrics, settings);
     Ok(MeasuredMetrics {

@@ -175,14 +175,19 @@ impl MetricSettings {
             let reason = crate::error::ParamReason::ErWeightsZero;
             return Err(ParamError::new("e2", self.e2, reason));
         }
-        ParamError::non_negative("min_overshoot", self.min_overshoot)?;
-        ParamError::in_range(
-            "min_overshoot",
-            self.min_overshoot,
-            -f64::MIN_POSITIVE,
-            MAX_MIN_OVERSHOOT,
-            crate::error::Limit::MinOvershoot,
-        )?;
+        // One range for every value refused (negative, NaN, infinite or
+        // above it), said by `metrics --min-overshoot` and a scenario's
+        // `[metrics]` alike: "must not be negative" at -1 and "must lie in
+        // [0, 100]" at 1e308 read as two different limits.
+        let m = self.min_overshoot;
+        if !(0.0..=MAX_MIN_OVERSHOOT).contains(&m) {
+            let reason = crate::error::ParamReason::OutOfRange {
+                lo: -f64::MIN_POSITIVE,
+                hi: MAX_MIN_OVERSHOOT,
+                why: crate::error::Limit::MinOvershoot,
+            };
+            return Err(ParamError::new("min_overshoot", m, reason));
+        }
         if let Some(f) = self.filter_hz {
             ParamError::finite("filter_hz", f)?;
             if f <= MIN_FILTER_HZ {

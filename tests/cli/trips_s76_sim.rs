@@ -126,7 +126,7 @@ fn a_replay_split_by_a_time_gap_replays_the_piece_that_holds_the_step() {
     let said = simulated(&sc, "out");
     // The pieces are named by the run's path, as the scenario resolves it.
     for (starts, ends) in [
-        ("  cleaning: piece ", "gap_run.csv#2 (4.00–12.00 s, 801 samples) dropped: its steer stays within 0 rad (less than the 0.00017 rad of a step) while another piece moves it, and that piece is replayed; to replay this one, cut the run file to its span"),
+        ("  cleaning: piece ", "gap_run.csv#2 (4.00–12.00 s, 801 samples) dropped: its steer holds at 0.017 rad throughout (it does not move; a step moves it by 0.00017 rad or more) while another piece moves it, and that piece is replayed; to replay this one, cut the run file to its span"),
         ("  cleaning: replayed piece ", "gap_run.csv#1 (0.00–3.00 s, 301 samples): the longest piece that moves the steer (a longer one holds it)"),
     ] {
         let found = said.lines().any(|l| l.starts_with(starts) && l.ends_with(ends));

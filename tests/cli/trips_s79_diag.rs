@@ -231,7 +231,7 @@ fn an_absurd_min_speed_is_refused_at_its_line() {
     );
     let e = fails_cleanly("diagnose", &s, dir.path());
     assert!(
-        e.contains("s.toml:14:13: `diagnose.min_speed` = 200: is above 100 m/s (360 km/h), faster than any car's handling log: every sample would be excluded as slow; the key is in m/s (is it in km/h? 200 km/h is 55.6 m/s)"),
+        e.contains("s.toml:14:13: `diagnose.min_speed` = 200: must lie in [0, 100]: it is the speed in m/s below which samples are left out as slow, and no car's handling log is measured above 100 m/s (360 km/h); the key is in m/s: is it in km/h? 200 km/h is 55.6 m/s: write `min_speed = 55.6`"),
         "{e}"
     );
 }

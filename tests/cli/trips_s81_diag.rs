@@ -95,12 +95,14 @@ fn a_min_speed_above_every_run_is_named_with_the_top_speeds() {
     let line = text.lines().count() + 1;
     let e = refused_campaign(dir.path(), &c);
     assert!(
-        e.contains(&format!("vehicle.toml:{line}:13: min_speed = 50 m/s removed every run: no sample of theirs reaches it")),
+        e.contains(&format!(
+            "vehicle.toml:{line}:13: `diagnose.min_speed` = 50: must lie in [0, "
+        )) && e.contains("it removes every run: no sample of theirs reaches it"),
         "{e}"
     );
     assert!(e.contains("step_040kph_3ms2.csv 11.1 m/s"), "{e}");
     assert!(e.contains("step_120kph_4ms2.csv 33.3 m/s"), "{e}");
-    assert!(e.contains("set `min_speed = 5` under [diagnose]"), "{e}");
+    assert!(e.contains("write `min_speed = 5` under [diagnose]"), "{e}");
     assert!(!e.contains("segment"), "{e}");
 }
 

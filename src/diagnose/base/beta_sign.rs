@@ -17,12 +17,13 @@
 //! where the model misses a transient may reach −0.8 alone; a file's sign
 //! convention is the same throughout), and refused where its correlation
 //! is a sign slip's ([`SLIP`]): scored as logged, one run's negated β
-//! carried 70 % of the gap and sank a right verdict.
+//! carried 70 % of the gap and sank a right verdict. Every file that
+//! slips is named in the one refusal, each with its correlation.
 
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
-use crate::error::BetaAgainstModel;
+use crate::error::{BetaAgainstModel, FilesAgainst};
 use crate::measured::clean::source_file;
 use crate::measured::MeasuredRun;
 use crate::stats::CentredSums;
@@ -92,7 +93,7 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, 
     let all = judged
         .iter()
         .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s));
-    let against = |file: Option<&str>| {
+    let against = |file: Option<&str>| -> Vec<(String, f64, usize)> {
         judged
             .iter()
             .filter(|(run, _)| file.is_none_or(|f| source_file(std::path::Path::new(run)) == f))
@@ -104,16 +105,26 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, 
         Some(k) if k < AGAINST => k,
         _ => {
             let files = files_against(&judged);
-            return match files.iter().find(|f| is_slip(f)) {
-                Some(f) => Err(BetaAgainstModel {
-                    correlation: f.correlation,
-                    samples: f.samples,
-                    against: against(Some(&f.file)),
-                    judged: judged.len(),
-                    others: Some((f.file.clone(), others_of(&judged, &f.file))),
+            // Every file that slips, in one refusal: named one at a time,
+            // the user heard of the second only after fixing the first.
+            let slips: Vec<&FileAgainst> = files.iter().filter(|f| is_slip(f)).collect();
+            if slips.is_empty() {
+                return Ok(files);
+            }
+            let names: Vec<&str> = slips.iter().map(|f| f.file.as_str()).collect();
+            return Err(BetaAgainstModel {
+                correlation: slips[0].correlation,
+                samples: slips[0].samples,
+                against: names.iter().flat_map(|f| against(Some(*f))).collect(),
+                judged: judged.len(),
+                files: Some(FilesAgainst {
+                    files: slips
+                        .iter()
+                        .map(|f| (f.file.clone(), f.correlation, f.samples))
+                        .collect(),
+                    others: others_of(&judged, &names),
                 }),
-                None => Ok(files),
-            };
+            });
         }
     };
     Err(BetaAgainstModel {
@@ -121,7 +132,7 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, 
         samples: all.n,
         against: against(None),
         judged: judged.len(),
-        others: None,
+        files: None,
     })
 }
 
@@ -141,11 +152,11 @@ fn is_slip(f: &FileAgainst) -> bool {
     f.correlation < SLIP && f.samples >= SLIP_SAMPLES
 }
 
-/// The pooled correlation of the runs not from `file`.
-fn others_of(judged: &[(String, CentredSums)], file: &str) -> f64 {
+/// The pooled correlation of the runs from none of `files`.
+fn others_of(judged: &[(String, CentredSums)], files: &[&str]) -> f64 {
     judged
         .iter()
-        .filter(|(run, _)| source_file(std::path::Path::new(run)) != file)
+        .filter(|(run, _)| !files.contains(&source_file(std::path::Path::new(run)).as_str()))
         .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s))
         .correlation()
         .unwrap_or(f64::NAN)
@@ -234,6 +245,8 @@ mod tests {
             ("c.csv".to_string(), sums(2.0)),
         ];
         // Pooled: Σxy = 5 + 10, Σxx = 5 + 5, Σyy = 5 + 20: 15/√250.
-        assert!((others_of(&judged, "b.csv") - 3.0 / 10f64.sqrt()).abs() < 1e-12);
+        assert!((others_of(&judged, &["b.csv"]) - 3.0 / 10f64.sqrt()).abs() < 1e-12);
+        // Two files against: the others are the third alone (a perfect +1).
+        assert!((others_of(&judged, &["a.csv", "b.csv"]) - 1.0).abs() < 1e-12);
     }
 }

@@ -21,7 +21,9 @@ fn header(path: &std::path::Path) -> Option<Vec<String>> {
 }
 
 /// Refuses at `runs.degrees[i]` a column none of `files` has, nor a
-/// column named nearly so (a `Bank` the file's reader names for renaming).
+/// column named nearly so (a `Bank` the file's reader names for renaming):
+/// every such column in one refusal (refused one at a time, `degrees =
+/// ["roll", "bank"]` was mended and rerun to hear of `bank`).
 pub(super) fn check_declared(
     src: &TomlSource,
     degrees: &[AngleColumn],
@@ -39,6 +41,7 @@ pub(super) fn check_declared(
             crate::format::nearest_name(name, &h).is_some()
         })
     };
+    let mut refused = Vec::new();
     for (i, column) in degrees.iter().enumerate() {
         let name = column.name();
         if has(name) || near(name) {
@@ -55,7 +58,11 @@ pub(super) fn check_declared(
             allowed: AngleColumn::ALL.iter().map(|a| a.name()).collect(),
         };
         let span = src.key_span(&format!("runs.degrees[{i}]"));
-        return Err(src.located(span, InputProblem::Kind(Box::new(problem))));
+        refused.push(src.located(span, InputProblem::Kind(Box::new(problem))));
     }
-    Ok(())
+    let path = refused.first().map(|e| e.path().to_path_buf());
+    match path.and_then(|p| InputError::all_in_file_order(&p, refused)) {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
 }

@@ -268,17 +268,20 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
                 Limit::ResidualRate,
             )
         })
-        .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
-        .and_then(|_| match s.min_speed > crate::error::MAX_MIN_SPEED {
-            true => Err(ParamError::new(
-                "min_speed",
-                s.min_speed,
-                ParamReason::Campaign(Box::new(CampaignReason::MinSpeedAbsurd {
-                    min_speed: s.min_speed,
-                })),
-            )),
-            false => Ok(()),
-        })
+        // One range for a negative, NaN and too high value alike.
+        .and_then(
+            |_| match (0.0..=crate::error::MAX_MIN_SPEED).contains(&s.min_speed) {
+                false => Err(ParamError::new(
+                    "min_speed",
+                    s.min_speed,
+                    ParamReason::Campaign(Box::new(CampaignReason::MinSpeedRange {
+                        min_speed: s.min_speed,
+                        default: crate::measured::clean::DEFAULT_MIN_SPEED,
+                    })),
+                )),
+                true => Ok(()),
+            },
+        )
         .and_then(|_| {
             ParamError::in_range(
                 "max_effects",

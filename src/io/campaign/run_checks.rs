@@ -218,9 +218,16 @@ fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the
 /// whole run (a dead sensor logging zeros, [`MeasuredRun::dead_channels`]):
 /// its noise floor would be zero and any gap to it infinitely significant.
+/// Every dead channel in one refusal: naming the first, a run with `ay`
+/// and `beta` dead was mended and rerun to hear of the second.
 fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
-    match run.dead_channels().first() {
-        Some(d) => Err(file_error(&run.path, d.problem())),
+    let each = run
+        .dead_channels()
+        .iter()
+        .map(|d| file_error(&run.path, d.problem()))
+        .collect();
+    match InputError::all_of(&run.path, each) {
+        Some(e) => Err(e),
         None => Ok(()),
     }
 }

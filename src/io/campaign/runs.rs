@@ -456,15 +456,19 @@ fn pieces_note(
 }
 
 /// The notes on a column declared in degrees that some of the `files`
-/// runs lack (with the files); the refusal of one that all of them lack.
+/// runs lack (with the files); the refusal of those that all of them lack,
+/// every such column in one (refused one at a time, `degrees = ["roll",
+/// "bank"]` was mended twice).
 fn absent_notes(
     absent: Vec<(AngleColumn, Vec<String>, InputError)>,
     files: usize,
 ) -> Result<Vec<String>, InputError> {
     let mut notes = Vec::new();
+    let mut refused = Vec::new();
     for (column, lacking, first) in absent {
         if lacking.len() == files {
-            return Err(first);
+            refused.push(first);
+            continue;
         }
         notes.push(format!(
             "`degrees` under [runs] names `{}`, a column {} of {files} files do not have: {}",
@@ -473,7 +477,11 @@ fn absent_notes(
             lacking.join(", ")
         ));
     }
-    Ok(notes)
+    let path = refused.first().map(|e| e.path().to_path_buf());
+    match path.and_then(|p| InputError::all_in_file_order(&p, refused)) {
+        Some(e) => Err(e),
+        None => Ok(notes),
+    }
 }
 
 /// Each raw run's file and top speed, m/s.

@@ -225,14 +225,18 @@ fn in_degrees(src: &TomlSource, r: &ReplaySpec, e: &InputError) -> Option<InputE
     Some(at_key(src, "manoeuvre.run", p))
 }
 
-/// The steer's range over `run`, rad.
-fn steer_span(run: &MeasuredRun) -> f64 {
-    let (lo, hi) = run
-        .steer
+/// The steer's least and largest values over `run`, rad.
+fn steer_range(run: &MeasuredRun) -> (f64, f64) {
+    run.steer
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &d| {
             (lo.min(d), hi.max(d))
-        });
+        })
+}
+
+/// The steer's range over `run`, rad.
+fn steer_span(run: &MeasuredRun) -> f64 {
+    let (lo, hi) = steer_range(run);
     hi - lo
 }
 
@@ -250,10 +254,11 @@ fn replayed_piece(
     let pieces = clean_run(read.clone(), settings, &mut probe);
     let any_moves = pieces.iter().any(|p| steer_span(p) >= MIN_STEP);
     let fits = |p: &MeasuredRun| {
-        let span = steer_span(p);
-        match any_moves && span < MIN_STEP {
+        let (from, to) = steer_range(p);
+        match any_moves && to - from < MIN_STEP {
             true => Err(PieceRefusal::SteerHeld {
-                span,
+                from,
+                to,
                 min: MIN_STEP,
             }),
             false => Ok(()),

@@ -83,7 +83,8 @@ pub(crate) fn filter_measures_itself_with(
             "the low-pass at {} Hz rises (10–90 %) in {} s, {} % of the yaw rate's response time of {} s: the response and peak times, the total variances and E_r measure the filter as much as the car; a cutoff of {} Hz or more keeps its rise within {} % (or filter less and accept more noise){noise}",
             crate::error::Num(f),
             significant(rise, 2),
-            fixed(100.0 * share, 0),
+            // Not "50 %" beside "within 50 %" for 50.3 %.
+            crate::format::fixed_apart(&[100.0 * share, 100.0 * FILTER_RISE_SHARE], 0)[0],
             significant(response, 3),
             rounded(least, 2),
             fixed(100.0 * FILTER_RISE_SHARE, 0),

@@ -146,8 +146,19 @@ impl Wanted {
             Wanted::Sweep => "an equilibrium sweep (a TOML file with [vehicle], [tyres] and [sweep]), which `handling equilibria` reads",
             Wanted::Study => "a stiffness study (a TOML file with [vehicle], [tyres], [manoeuvre] and [stiffness] or [rbf]), which `handling study` reads",
             Wanted::Template => "a Magic Formula tyre property file (.tir, with [MODEL] and FITTYP), which `handling identify --template` takes: its coefficients start the staged fit and its layout is the written file's",
-            Wanted::TirContent => "a Magic Formula tyre property file (.tir, with [MODEL] and FITTYP), which its .tir name promises: rename it .toml, and it is read as the tyre file it is",
+            Wanted::TirContent => "a Magic Formula tyre property file (.tir, with [MODEL] and FITTYP), which its .tir name promises",
         }
+    }
+}
+
+/// What a file of `kind` read for its `.tir` name (`wanted`) is to become,
+/// said after the wanted kind and after the reader: a TOML tyre renamed
+/// `.toml`; any other file is no tyre, and a tyre is one of two kinds.
+fn tir_content(kind: &FileKind, wanted: Wanted) -> (&'static str, &'static str) {
+    match (wanted, kind) {
+        (Wanted::TirContent, FileKind::TyreToml { .. }) => (": rename it .toml, and it is read as the tyre file it is", ""),
+        (Wanted::TirContent, _) => ("", "; a tyre is a .tir (with [MODEL] and FITTYP) or a TOML tyre file (`model = \"…\"`, which `handling identify` writes)"),
+        _ => ("", ""),
     }
 }
 
@@ -214,12 +225,13 @@ impl fmt::Display for KindProblem {
                     true => String::new(),
                     false => format!(" (columns {})", columns.join(", ")),
                 };
+                let (rename, tyre) = tir_content(kind, *wanted);
                 write!(
                     f,
-                    "this is {}{columns}, not {}: {}",
+                    "this is {}{columns}, not {}{rename}: {}{tyre}",
                     kind.what(),
                     wanted.what(),
-                    kind.reader()
+                    kind.reader(),
                 )
             }
             KindProblem::DegreesNowhere {

@@ -258,19 +258,14 @@ pub enum InputProblem {
     /// A points CSV given where `tyre-eval` takes its tyre file.
     #[error("not a tyre file (.tir/.toml): it looks like a points CSV; the order is `tyre-eval <tyre> <points>`")]
     PointsAsTyre,
-    /// A load a Magic Formula file's vertical model carries at no loaded
-    /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
-    #[error("fz = {} N is more than the tyre's vertical model carries: {}, so no loaded radius `rl` is physical there{}", Num(*fz), super::carried::at_most(*most, *free, *blown_rl), super::carried::held(*blown_rl))]
+    /// A load a Magic Formula file's vertical model does not carry
+    /// (`carried.rs`: at no radius, Re through 0, past the rim).
+    #[error("fz = {} N is more than the tyre's vertical model carries: {why}, so no loaded radius `rl` is physical there{}", Num(*fz), why.held())]
     LoadNotCarried {
         /// The load, N.
         fz: f64,
-        /// The `rl` MFeval's closed form gives where the effective rolling
-        /// radius, taken at the load given, falls through 0 (any mode).
-        blown_rl: Option<f64>,
-        /// The most the vertical model carries, N.
-        most: f64,
-        /// The free radius, m.
-        free: f64,
+        /// Why it is not carried.
+        why: super::carried::WhyNotCarried,
     },
     /// A pressure outside a Magic Formula file's range at which its
     /// vertical model does not carry the point's load, which it carries at

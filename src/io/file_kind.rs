@@ -38,10 +38,17 @@ pub(crate) fn recognise(path: &Path) -> Option<FileKind> {
         return Some(FileKind::Tir);
     }
     // A `.tir` name on a file without [MODEL] that reads as one of the
-    // project's TOML files (a TOML tyre saved as `.tir`) is that file.
+    // project's TOML files (a TOML tyre saved as `.tir`) is that file; one
+    // whose first line is a CSV header (a rig file copied under a tyre's
+    // name) is that CSV, not a `.tir` missing its keys.
     if ext == "tir" {
         let toml = text.parse::<toml::Table>().ok();
-        return Some(toml.and_then(|t| toml_kind(&t)).unwrap_or(FileKind::Tir));
+        let csv = first.contains(',') && !first.contains(['=', '[']);
+        let kind = toml.and_then(|t| toml_kind(&t));
+        return Some(kind.unwrap_or_else(|| match csv {
+            true => csv_kind(first),
+            false => FileKind::Tir,
+        }));
     }
     if ext == "json" || first.trim_start().starts_with('{') {
         return Some(FileKind::Json);

@@ -498,6 +498,7 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 mod core;
 mod long_stiffness;
 mod ranges;
+mod rim;
 mod stiffness;
 mod units;
 

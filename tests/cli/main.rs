@@ -605,6 +605,7 @@ mod trips_s106_shares41;
 mod trips_s106_small41;
 mod trips_s106_step40;
 mod trips_s106_units41;
+mod trips_s107_tyreeval42;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;

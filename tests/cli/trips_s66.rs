@@ -165,7 +165,7 @@ fn a_loaded_radius_past_the_load_range_is_said_to_take_the_load_given() {
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("(`my` and `rl` at the load given, as MFeval does)"),
+        said.contains("(`my` at the load given, and `rl` the free radius at the load given less the deflection at the load held within FZMAX, as MFeval does)"),
         "{said}"
     );
     let (fy, rl) = (column(&written, "fy"), column(&written, "rl"));

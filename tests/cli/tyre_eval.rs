@@ -148,7 +148,11 @@ fn a_load_the_vertical_model_does_not_carry_is_refused_at_its_row() {
     );
     assert!(!e.contains("p.csv:2:"), "{e}");
     // The limit checks hold the load at FZMAX (18000 N): a radius below
-    // the free one and above 0.
+    // the free one and above 0 (40 kN: 1 MN puts the tyre on its rim,
+    // refused in every mode since session 107).
+    let (o, _) = eval(dir.path(), &tir, points, &[]);
+    assert!(stderr(&o).contains("p.csv:3:1: fz = 1000000 N is more than the tyre's vertical model carries: by its own vertical stiffness"), "{}", stderr(&o));
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,16\n40000,0,0,0,16\n";
     let (o, written) = eval(dir.path(), &tir, points, &[]);
     assert!(o.status.success(), "{}", stderr(&o));
     let rl = column(&written, "rl");

@@ -5,14 +5,15 @@
 //! assembled, a non-finite output refused at its point. Units: SI, rad,
 //! Pa, as the points file gives them.
 
+use super::bottoming::rim_of;
 use super::columns::{self, Outputs};
 use super::points::{read_points, PointColumns};
 use super::{
     camber, checks, file_checks, fitted, friction, light_load, magic_formula_extras, meant,
-    measured, model_loads, not_carried, opposed, order, pressure, rolling, slip_ratio, standstill,
-    stiffness, unfitted_lateral, unread, zero_slip, AgainstSlip, AtRest, BeyondFriction,
-    BeyondMySpeed, FileChecks, LightLoad, LoadsLeft, MeasuredDifference, SignChange, StandstillMz,
-    SteepCamber, TyreEvalReport, Uncoupled, ZeroOutput,
+    measured, model_loads, opposed, order, pressure, rolling, slip_ratio, standstill, stiffness,
+    unfitted_lateral, unread, zero_slip, AgainstSlip, AtRest, BeyondFriction, BeyondMySpeed,
+    FileChecks, LightLoad, LoadsLeft, MeasuredDifference, SignChange, StandstillMz, SteepCamber,
+    TyreEvalReport, Uncoupled, ZeroOutput,
 };
 use crate::error::Error;
 use crate::io::fitted_ranges::FittedRanges;
@@ -54,9 +55,8 @@ pub fn run(
     let lines = &read.file.lines;
     let at = (&tyre, tyre_path);
     let c = PointChecks::of(at, fitted_ranges.as_ref(), &given, (&f, &unread), lines);
-    let mut extras = magic_formula_extras(&tyre, &given, lines);
-    let radius_above_free = std::mem::take(&mut extras.radius_above_free);
-    not_carried::refuse_not_carried(points, &read.file, &extras.not_carried, &extras.blown)?;
+    let mut extras = magic_formula_extras((&tyre, rim_of(tyre_path, &tyre)), &given, lines);
+    extras.refuse(points, &read.file)?;
     let tyre_side = match &tyre {
         Tyre::MagicFormula(m) => Some(m.side),
         _ => None,
@@ -64,8 +64,7 @@ pub fn run(
     // Every model gives no force off the road: said for each, not only
     // where a loaded radius is written.
     let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
-    let loaded_radius = extras.loaded_radius.take();
-    let w = written_columns(points, &tyre, read, &f, loaded_radius)?;
+    let w = written_columns(points, &tyre, read, &f, extras.loaded_radius.take())?;
     Ok(TyreEvalReport {
         measured: w.measured,
         kept: w.kept,
@@ -82,7 +81,8 @@ pub fn run(
         ranges_left: extras.ranges_left,
         loads_left: c.loads_left,
         not_meant: c.not_meant,
-        radius_above_free,
+        radius_above_free: std::mem::take(&mut extras.radius_above_free),
+        radius_past_fzmax: extras.radius_past_fzmax.take(),
         light_load: c.light_load,
         steep_camber: c.steep_camber,
         off_road,

@@ -42,9 +42,13 @@
 //! friction and a model that does not couple `fx` and `fy` at combined
 //! slip (UniTire, PAC89); (`standstill.rs`) a Magic Formula `mz` at zero
 //! speed, its residual torque alone; (`radius.rs`) a loaded radius above
-//! the free radius at the point's speed, with what drives it.
+//! the free radius at the point's speed, with what drives it; (`past_fzmax.rs`)
+//! a loaded radius past `FZMAX`, the deflection there held (MFeval's).
+//! A load past the one that pushes a Magic Formula tyre onto its rim is
+//! refused at its row in every mode (`bottoming.rs`).
 
 mod at_points;
+mod bottoming;
 pub use at_points::{refused_points, slip_past_lock, PointRefused};
 pub use slip_ratio::SlipPastLock;
 mod camber;
@@ -66,6 +70,7 @@ mod model_loads;
 mod not_carried;
 mod opposed;
 mod order;
+mod past_fzmax;
 mod physical;
 mod points;
 mod pressure;
@@ -139,6 +144,9 @@ pub struct TyreEvalReport {
     /// Points whose loaded radius exceeds the free radius at their speed,
     /// by what drives it (`radius.rs`).
     pub radius_above_free: Vec<radius::RadiusAboveFree>,
+    /// Points past `FZMAX`, the limit checks on, whose loaded radius
+    /// holds the deflection at `FZMAX` (`past_fzmax.rs`).
+    pub radius_past_fzmax: Option<past_fzmax::RadiusPastFzmax>,
     /// Points at a positive load below a Magic Formula file's floor (its
     /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
     pub light_load: Option<LightLoad>,
@@ -231,11 +239,28 @@ struct MfExtras {
     loaded_radius: Option<Vec<f64>>,
     not_carried: Vec<not_carried::NotCarriedAt>,
     blown: Vec<not_carried::BlownAt>,
+    bottomed: Vec<not_carried::BottomedAt>,
     radius_above_free: Vec<radius::RadiusAboveFree>,
+    radius_past_fzmax: Option<past_fzmax::RadiusPastFzmax>,
 }
 
-/// The [`MfExtras`] of `tyre` at the points `p`.
-fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfExtras {
+impl MfExtras {
+    /// Refuses the points whose load the vertical model does not carry,
+    /// blows the loaded radius past the free radius or pushes the tyre
+    /// onto its rim, at their rows of the points file `points` (`file`).
+    fn refuse(&self, points: &std::path::Path, file: &crate::io::Columns) -> Result<(), Error> {
+        let refused = (&self.blown[..], &self.bottomed[..]);
+        not_carried::refuse_not_carried(points, file, &self.not_carried, refused)
+    }
+}
+
+/// The [`MfExtras`] of `tyre` (its file's `rim`, `bottoming.rs`) at the
+/// points `p`.
+fn magic_formula_extras(
+    (tyre, rim): (&Tyre, Option<crate::error::RimFrom>),
+    p: &unread::Points,
+    lines: &[usize],
+) -> MfExtras {
     let Tyre::MagicFormula(t) = tyre else {
         return MfExtras::default();
     };
@@ -274,6 +299,9 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
     let blown = loaded_radius
         .as_deref()
         .map_or_else(Vec::new, |rl| radius::blown_by_load(t, rl, &inputs));
+    let radius_past_fzmax = loaded_radius
+        .as_deref()
+        .and_then(|rl| past_fzmax::past_fzmax(t, rl, &inputs, lines));
     MfExtras {
         mode: Some(t.mode().use_mode()),
         clamped,
@@ -282,7 +310,9 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
         loaded_radius,
         not_carried,
         blown,
+        bottomed: bottoming::past_rim(t, rim, &inputs),
         radius_above_free,
+        radius_past_fzmax,
     }
 }
 
@@ -325,6 +355,7 @@ impl TyreEvalReport {
         out.extend(self.not_meant.iter().map(|m| m.line(self.count)));
         out.extend(self.light_load.iter().map(|l| l.line(self.count)));
         out.extend(self.radius_above_free.iter().map(|r| r.line(self.count)));
+        out.extend(self.radius_past_fzmax.iter().map(|r| r.line(self.count)));
         out.extend(
             self.steep_camber
                 .iter()
@@ -361,24 +392,34 @@ impl TyreEvalReport {
     }
 
     /// The points held at the file's ranges' ends, said in the closing
-    /// line. MFeval takes the rolling resistance and the loaded radius at
-    /// the load given, not the one saturated to FZMAX: said, or a 1 MN
-    /// point's `my` or `rl` reads as one evaluated at the file's range.
+    /// line. MFeval takes the rolling resistance at the load given, not
+    /// the one saturated to FZMAX, and the loaded radius's free radius
+    /// there too: said, or a 40 kN point's `my` or `rl` reads as one
+    /// evaluated at the file's range.
     fn held_at_ends(&self) -> String {
         if self.clamped == 0 {
             return String::new();
         }
-        let given: Vec<String> = ["my", "rl"]
-            .into_iter()
-            .map(|k| self.model_column(k))
-            .filter(|k| self.columns.iter().any(|(n, _)| n == k))
-            .map(|k| format!("`{k}`"))
-            .collect();
+        let column = |k: &'static str| {
+            let k = self.model_column(k);
+            self.columns.iter().any(|(n, _)| *n == k).then_some(k)
+        };
+        // MFeval's `rl` keeps the load given in its free radius only: the
+        // deflection is the one at the load held (`past_fzmax.rs`).
+        let given: Vec<String> = [
+            column("my").map(|k| format!("`{k}` at the load given")),
+            column("rl").map(|k| {
+                format!("`{k}` the free radius at the load given less the deflection at the load held within FZMAX")
+            }),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
         format!(
             "; {} of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends{}",
             self.clamped,
             match given.is_empty() {
-                false => format!(" ({} at the load given, as MFeval does)", given.join(" and ")),
+                false => format!(" ({}, as MFeval does)", given.join(", and ")),
                 true => String::new(),
             }
         )

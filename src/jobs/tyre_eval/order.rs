@@ -7,7 +7,7 @@ use crate::error::{InputError, InputProblem};
 use std::path::Path;
 
 /// Refuses a `tyre` path that is a points CSV: a `.csv` name, or (any
-/// other name but `.tir`) a first line that is a CSV header, naming
+/// other name but `.toml`) a first line that is a CSV header, naming
 /// `fz` among comma- or semicolon-separated columns and holding no `=`
 /// or `[` of a TOML file.
 pub(crate) fn refuse_points_as_tyre(tyre: &Path) -> Result<(), InputError> {
@@ -18,7 +18,10 @@ pub(crate) fn refuse_points_as_tyre(tyre: &Path) -> Result<(), InputError> {
         return Err(e);
     }
     let ext = tyre.extension().and_then(|e| e.to_str()).unwrap_or("");
-    if ext.eq_ignore_ascii_case("tir") || ext.eq_ignore_ascii_case("toml") {
+    // A `.tir` name on a points CSV (no `[MODEL]`: its header first) is
+    // the order's slip as much as a `.csv` name.
+    let tir = ext.eq_ignore_ascii_case("tir");
+    if ext.eq_ignore_ascii_case("toml") || (tir && !first_line_is_points_header(tyre)) {
         return Ok(());
     }
     let csv = ext.eq_ignore_ascii_case("csv") || first_line_is_points_header(tyre);

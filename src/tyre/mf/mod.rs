@@ -91,6 +91,7 @@ mod formulae;
 mod lateral_of;
 mod mode;
 mod pure_curves;
+mod rim_load;
 pub use pure_curves::PeakFriction;
 pub(crate) use pure_curves::WARN_FRICTION;
 mod slip;

@@ -34,6 +34,18 @@
 //! mirrored right-side tyre gives the same `Fz` and `Rl`, all its terms
 //! being even under the mirror), `γ` and the pressure after the limit
 //! checks, the load, slip ratio and speed as given. Units: SI (m, N, rad).
+//!
+//! Past `FZMAX` with the limit checks on, MFeval takes the deflection at
+//! the load held at `FZMAX` (6.1's `Fz_lowLimit`, 6.2's limited `Fz`) and
+//! the free radius `RΩ` at the load given (`calculateRe` takes the
+//! unlimited `Fz`): `Re` shrinks with the load, `Ω = Vx/Re` and `RΩ` grow,
+//! and `Rl` rises with the load (0.30443 m at 10 kN, 0.30616 m at 400 kN on
+//! the public `car205_60R19.tir` at 16.7 m/s; checked against MFeval's
+//! June 2020 C++ build). Followed, for the file to stay comparable; the
+//! caller says it (`jobs/tyre_eval/past_fzmax.rs`). No tyre deflects past
+//! its rim: `rim_load.rs` gives the load at which this vertical force,
+//! standing and free of force, reaches a deflection (the caller's bound:
+//! the rim on the road, `jobs/tyre_eval/bottoming.rs`).
 
 use super::MfCoefficients;
 

@@ -887,3 +887,4 @@ pub(crate) fn one_sample_longer(text: &str) -> String {
     let rest = &last[last.find(',').unwrap()..];
     format!("{}{next:.4}{rest}\n", text)
 }
+mod trips_s107_mf42;

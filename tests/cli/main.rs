@@ -605,7 +605,6 @@ mod trips_s106_shares41;
 mod trips_s106_small41;
 mod trips_s106_step40;
 mod trips_s106_units41;
-mod trips_s107_tyreeval42;
 mod trips_s62;
 mod trips_s62b;
 mod trips_s62c;
@@ -889,4 +888,6 @@ pub(crate) fn one_sample_longer(text: &str) -> String {
     format!("{}{next:.4}{rest}\n", text)
 }
 mod trips_s107_diagwords42;
+mod trips_s107_mf42;
 mod trips_s107_runwords42;
+mod trips_s107_tyreeval42;

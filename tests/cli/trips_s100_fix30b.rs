@@ -40,7 +40,7 @@ fn a_conditions_own_load_is_said_beside_its_levels_name() {
     let Some((said, written)) = hoosier(test, "gim", &["--load", "1650"], "g.toml") else {
         return;
     };
-    let line = "a condition's load, camber and pressure are the medians of its samples fitted (the report's `curves`, the figure's fitted lines and the tyre's reference load where its model has one), inside the level the lines above name by every sample of it in the file: 1639.7 N in the 1656 N level";
+    let line = "a condition's load, camber and pressure are the medians of its samples fitted (the report's `curves`, the figure's fitted lines and the tyre's reference load where its model has one), inside the level the lines above name by every sample of it in the file: 1640 N in the 1656 N level";
     assert!(said.contains(&format!("  {line}\n")), "{said}");
     assert!(said.contains("    Fz    1656 N, camber  0.00°"), "{said}");
     assert!(written.contains(&format!("# {line}\n")), "{written}");

@@ -270,7 +270,9 @@ fn a_gim_contact_length_longer_than_any_tyres_is_warned_of() {
 
 /// Before: one note said the conditions' own loads as `524 N`, `1082 N`,
 /// `1639.7 N`, `2194.3 N`, `2736.55 N` (the report's digits, three
-/// roundings), as the figure's key did. Now each to 0.1 N.
+/// roundings), as the figure's key did; then each to 0.1 N, beside level
+/// names in whole newtons (`1082.0 N in the 1095 N level`, round 38). Now
+/// each as its level is named, in whole newtons.
 #[test]
 fn a_notes_loads_are_said_to_one_rounding() {
     let test = "a_notes_loads_are_said_to_one_rounding";
@@ -281,16 +283,21 @@ fn a_notes_loads_are_said_to_one_rounding() {
         .lines()
         .find(|l| l.contains("inside the level the lines above name"))
         .unwrap_or_else(|| panic!("{said}"));
-    assert!(note.contains("524.0 N in the 534 N level"), "{note}");
-    assert!(note.contains("1639.7 N in the 1656 N level"), "{note}");
+    assert!(note.contains("524 N in the 534 N level"), "{note}");
+    assert!(note.contains("1640 N in the 1656 N level"), "{note}");
     assert!(!note.contains("2736.55"), "{note}");
-    let loads: Vec<&str> = note
-        .split(" N in the ")
-        .filter_map(|s| s.rsplit(' ').next())
-        .collect();
-    assert!(loads.len() >= 5, "{note}");
-    for l in loads.iter().filter(|l| l.contains('.')) {
-        assert_eq!(l.split('.').nth(1).map(str::len), Some(1), "{l}: {note}");
+    // The own load before each ` N in the `, and the level's name after.
+    let pieces: Vec<&str> = note.split(" N in the ").collect();
+    assert!(pieces.len() >= 6, "{note}");
+    for (i, p) in pieces.iter().enumerate() {
+        let own = p.rsplit(' ').next().unwrap();
+        let level = p.split(' ').next().unwrap();
+        if i + 1 < pieces.len() {
+            assert!(own.parse::<u32>().is_ok(), "{own}: {note}");
+        }
+        if i > 0 {
+            assert!(level.parse::<u32>().is_ok(), "{level}: {note}");
+        }
     }
 }
 

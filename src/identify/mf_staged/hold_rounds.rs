@@ -27,6 +27,17 @@ pub(super) struct StageFit<'a> {
     pub(super) starts: Vec<f64>,
 }
 
+impl StageFit<'_> {
+    /// Parameter `k` held at `value`, out of the free ones.
+    pub(super) fn hold_out(&mut self, k: usize, value: f64) {
+        self.problem = held_out(&self.problem, &self.p, k, value);
+        self.p.remove(k);
+        self.needs.remove(k);
+        self.starts.remove(k);
+        self.bounds.remove(k);
+    }
+}
+
 /// What the holds of a stage came to: each parameter held, with its
 /// value and reason, and each whose hold the guard refused, with what was
 /// tried and what it cost (`hold_refusal.rs`).

@@ -44,6 +44,7 @@
 //! primary ones at a passenger tyre's values.
 
 use super::book_defaults::pacejka_book_default;
+use super::curvature_clip::AtClip;
 use super::params::{Need, HELD};
 use super::uncertainty::ABSURD_EFFECT_PERCENT;
 use crate::format::{exact, readable};
@@ -126,6 +127,15 @@ pub enum HoldReason {
         /// fitted free just before (`None`: not measured).
         sigma_held_free: Option<[f64; 2]>,
     },
+    /// Its curvature factor reaches the Magic Formula's clip at 1 over
+    /// every row it shapes, where the force does not depend on it: held
+    /// where the fit left it (`curvature_clip.rs`), not for want of data.
+    AtCurvatureClip {
+        /// Where the fit left it, and it is held.
+        fitted: f64,
+        /// The factor, and where it reaches 1.
+        clip: AtClip,
+    },
 }
 
 /// `sigma` (%) to the digits that tell it from `other`: three decimals,
@@ -207,6 +217,7 @@ impl fmt::Display for HoldReason {
             HoldReason::Levels { need, have } => f.write_str(&lacking_levels(need, have)),
             HoldReason::ByDesign { design } => f.write_str(design.why()),
             HoldReason::Given => f.write_str("given with --hold"),
+            HoldReason::AtCurvatureClip { clip, .. } => f.write_str(&clip.said()),
             HoldReason::NotIdentifiable {
                 fitted,
                 std_error: Some(_),

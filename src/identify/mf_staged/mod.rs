@@ -30,8 +30,9 @@
 //! residual torque's slope that rig data barely separate.
 //!
 //! Rows: the wheel moments `mx`, `my` ride on the rows of files whose
-//! samples are rows (with `kappa`, `fx`). A row is *pure longitudinal* when `|α| ≤ 1e-3 rad`, *pure lateral*
-//! when `|κ| ≤ 1e-3`, *combined* otherwise. The combined `Fy` and `Mz`
+//! samples are rows (with `kappa`, `fx`). A row is *pure longitudinal*
+//! when `|α| ≤ 1e-3 rad`, *pure lateral* when `|κ| ≤ 1e-3`, *combined*
+//! otherwise. The combined `Fy` and `Mz`
 //! stages take every row with longitudinal slip, the pure longitudinal
 //! ones included: at α = 0, `Fy = Gyκ·Fy0(0) + SVyκ` is what pins the
 //! κ-induced side force `SVyκ`, and `Mz` carries `s·Fx` ([`Stage::takes`]).
@@ -74,9 +75,9 @@
 //! Residual metric: the paper's residual table lost its formula in the
 //! surviving text; this module reports `σ = sqrt(Σe²/ΣF_test²)·100 %` per
 //! stage over its rows, and one overall figure, the same σ pooled over
-//! every raw sample and measured channel ([`pooled_sigma`]), the definition of Zhang & Li (2017) used throughout the crate
-//! ([`super::sigma_of`]), which is what a percentage residual of a force
-//! channel means there.
+//! every raw sample and measured channel ([`pooled_sigma`]), the
+//! definition of Zhang & Li (2017) used throughout the crate
+//! ([`super::sigma_of`]).
 //!
 //! Standard errors: `cov = s²·(JᵀJ)⁻¹` at the optimum with `s² = Σe²/(m−n)`,
 //! computed on the column-scaled Jacobian (SVD, pseudo-inverse); a parameter
@@ -97,11 +98,13 @@
 //! the stages and what each may fit (levels needed, physical bounds);
 //! `start.rs` the start values from the data; `problem.rs` a stage's
 //! least-squares problem and its exact Jacobian; `stages.rs` one stage's
-//! fit; `uncertainty.rs` its standard errors and the identifiability rule;
-//! `holds.rs` what a parameter is held at and why; `paper_lm.rs` the
-//! paper's own LM.
+//! fit (`stage_fit.rs` its starts, `template_start.rs` a template's);
+//! `uncertainty.rs` its standard errors and the identifiability rule;
+//! `holds.rs` what a parameter is held at and why (`curvature_clip.rs`:
+//! by `E ≤ 1`); `paper_lm.rs` the paper's own LM.
 
 mod book_defaults;
+mod curvature_clip;
 mod fit_warnings;
 mod hold_guard;
 mod hold_refusal;
@@ -114,20 +117,26 @@ mod problem;
 mod release;
 mod sigma;
 mod spread;
+mod stage_fit;
 mod stages;
 mod start;
 mod template_start;
 mod uncertainty;
 
 pub use book_defaults::pacejka_book_default;
+pub use curvature_clip::{AtClip, CurvatureFactor};
 pub use hold_refusal::{GuardLimit, MoreData, RefusedHold};
 pub use holds::{HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
 pub(crate) use params::fixed_bounds;
 pub use params::Stage;
 pub use problem::Derivatives;
-pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
+pub use sigma::{
+    channel_unit, pooled_sigma, raw_rows, rms_text, round_trip_difference, ChannelSigma,
+    PooledSigma,
+};
 pub use spread::{sweeps_slip_angle, ErrorSpread, LoadSigma};
+pub use template_start::{SecondStart, SecondStartWhy, REPRODUCED_SIGMA_PERCENT};
 
 use super::data::RigData;
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
@@ -136,7 +145,8 @@ use crate::tyre::mf::{MagicFormula, MfCoefficients, MfInput, MfVersion};
 use params::EVEN;
 use release::sigma;
 use serde::Serialize;
-use stages::{run_stage, StageRun};
+use stage_fit::StageRun;
+use stages::run_stage;
 use start::base_tyre;
 use std::path::Path;
 use std::time::Instant;
@@ -328,7 +338,7 @@ pub struct Settings {
     pub max_iterations: usize,
     /// Whether `max_iterations` is the user's: honoured as given. The
     /// default cap is not: a stage stopped on it short of its optimum is
-    /// continued (`stages::continued_cap`).
+    /// continued (`stage_fit::continued_cap`).
     pub cap_given: bool,
     /// The values the user gives and the keys the template gives
     /// (`holds.rs`: what a parameter the data do not determine is held at).
@@ -396,6 +406,9 @@ pub struct StageReport {
     pub warnings: Vec<String>,
     /// Where the fitted stage's squared error lies (`None`: skipped).
     pub error_spread: Option<ErrorSpread>,
+    /// The stage fitted again from the template's values, the σ of both
+    /// starts, the one kept (`None`: none; `template_start.rs`).
+    pub second_start: Option<SecondStart>,
 }
 
 impl StageReport {
@@ -416,6 +429,7 @@ impl StageReport {
             parameters: Vec::new(),
             warnings: Vec::new(),
             error_spread: None,
+            second_start: None,
         }
     }
 }
@@ -566,27 +580,4 @@ pub(super) fn conventional_signs(c: &mut MfCoefficients) {
         c.RVY5 = -c.RVY5;
         c.RVY6 = -c.RVY6;
     }
-}
-
-/// The largest difference of `fx`, `fy`, `mz` between `tyre` and `back`
-/// (the tyre read back from its written `.tir`) over `rows`, relative to the
-/// largest magnitude of each channel (0 when the file reproduces the tyre).
-pub fn round_trip_difference(tyre: &MagicFormula, back: &MagicFormula, rows: &[MfRow]) -> f64 {
-    let mut worst: f64 = 0.0;
-    let mut scale = [1e-9f64; 3];
-    let mut diff = [0.0f64; 3];
-    for r in rows {
-        let (a, b) = (tyre.evaluate(&r.input()), back.evaluate(&r.input()));
-        for (k, (x, y)) in [(a.fx, b.fx), (a.fy, b.fy), (a.mz, b.mz)]
-            .iter()
-            .enumerate()
-        {
-            scale[k] = scale[k].max(x.abs());
-            diff[k] = diff[k].max((x - y).abs());
-        }
-    }
-    for k in 0..3 {
-        worst = worst.max(diff[k] / scale[k]);
-    }
-    worst
 }

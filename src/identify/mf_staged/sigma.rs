@@ -302,6 +302,29 @@ pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow], fitted: &[Stage]) -> Po
     }
 }
 
+/// The largest difference of `fx`, `fy`, `mz` between `tyre` and `back`
+/// (the tyre read back from its written `.tir`) over `rows`, relative to the
+/// largest magnitude of each channel (0 when the file reproduces the tyre).
+pub fn round_trip_difference(tyre: &MagicFormula, back: &MagicFormula, rows: &[MfRow]) -> f64 {
+    let mut worst: f64 = 0.0;
+    let mut scale = [1e-9f64; 3];
+    let mut diff = [0.0f64; 3];
+    for r in rows {
+        let (a, b) = (tyre.evaluate(&r.input()), back.evaluate(&r.input()));
+        for (k, (x, y)) in [(a.fx, b.fx), (a.fy, b.fy), (a.mz, b.mz)]
+            .iter()
+            .enumerate()
+        {
+            scale[k] = scale[k].max(x.abs());
+            diff[k] = diff[k].max((x - y).abs());
+        }
+    }
+    for k in 0..3 {
+        worst = worst.max(diff[k] / scale[k]);
+    }
+    worst
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,19 +4,20 @@
 //! value (`holds.rs`), and the standard errors and identifiability
 //! warnings at the optimum (`uncertainty.rs`).
 
+use super::curvature_clip::at_clip;
 use super::hold_rounds::{hold_undetermined, HoldOutcome, StageFit};
-use super::holds::{held_reason, HoldReason, Holding};
-use super::paper_lm::paper_lm;
+use super::holds::{held_reason, HoldReason};
 use super::params::{names_of, physical_bounds, Need, Stage};
-use super::problem::{unbounded, Derivatives, StageProblem};
+use super::problem::{unbounded, StageProblem};
 use super::release::{
-    at_bound, bounded, no_slip_angle, only_pure_longitudinal, profiled, released_fit, sigma,
-    skip_reason,
+    at_bound, no_slip_angle, only_pure_longitudinal, released_fit, sigma, skip_reason,
 };
+use super::stage_fit::{continued_cap, StageRun, ITERATIONS_PER_FREE, PAPER_ITERATIONS};
 use super::start::{data_start, level_counts, template_value};
+use super::template_start::SecondStart;
 use super::uncertainty::{uncertainty, Uncertainty};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
-use crate::optim::local::{LocalResult, Residuals};
+use crate::optim::local::Residuals;
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
 use std::time::Instant;
 
@@ -74,25 +75,6 @@ fn start_values(
     (base, starts)
 }
 
-/// How the stages are run: the start scheme, the iteration cap, the
-/// derivatives, the values the user gives and the template.
-pub(super) struct StageRun<'a> {
-    pub(super) start: StartScheme,
-    pub(super) max_iterations: usize,
-    pub(super) cap_given: bool,
-    pub(super) derivatives: Derivatives,
-    pub(super) holding: &'a Holding,
-    pub(super) template: Option<&'a MagicFormula>,
-}
-
-impl StageRun<'_> {
-    /// The iteration cap of the paper's scheme: at least
-    /// [`PAPER_ITERATIONS`].
-    fn paper_cap(&self) -> usize {
-        self.max_iterations.max(PAPER_ITERATIONS)
-    }
-}
-
 /// Fits one stage on its rows, updating `tyre`, and reports it.
 pub(super) fn run_stage(
     stage: Stage,
@@ -121,7 +103,12 @@ pub(super) fn run_stage(
     );
     let (sigma_start, ..) = sigma(stage, &base, rows);
     let bounds = start_bounds(run.start, &names, &starts);
-    let (result, starts, restart) = stage_fit(&problem, &free, starts, &bounds, run);
+    let super::stage_fit::Fitted {
+        result,
+        starts,
+        second,
+        off_bound,
+    } = super::stage_fit::stage_fit(&problem, &free, starts, &bounds, run);
     let mut evaluations = result.evaluations;
     let mut fit = StageFit {
         problem,
@@ -157,139 +144,14 @@ pub(super) fn run_stage(
         warnings: u
             .near_singular
             .into_iter()
-            .chain(restart)
+            .chain(second.filter(SecondStart::said).map(|s| s.to_string()))
+            .chain(off_bound)
             .chain(not_converged(converged, run, free.len()))
             .chain(paper_unheld(run.start, &parameters))
             .collect(),
         parameters,
         error_spread: None,
-    }
-}
-
-/// The stage's fit of `problem` from `starts` by its scheme, the starts
-/// of the fit kept, and what a second start found. A fit of the data or
-/// template scheme that ends with a parameter on its physical bound is
-/// fitted again with that parameter held inside its box first (at its
-/// stated value, and a curvature at −1 too), then released (`profiled`):
-/// on noise-free MF 6.1 data the combined-Fx fit from the data's
-/// estimates stopped with `REX1` on its bound 1 at σ 0.70 %, where the
-/// generating tyre's `REX1` is −1.39 and σ 0. The better cost is kept,
-/// and said.
-fn stage_fit(
-    problem: &StageProblem,
-    free: &[(&'static str, Need)],
-    starts: Vec<f64>,
-    bounds: &[(f64, f64)],
-    run: &StageRun,
-) -> (LocalResult, Vec<f64>, Option<String>) {
-    if run.start == StartScheme::Paper {
-        let r = paper_lm(problem, &starts, 1.0, run.paper_cap());
-        return (r, starts, None);
-    }
-    let first = released_fit(problem, free, &starts, bounds, run.max_iterations);
-    let first = continued(problem, first, bounds, run);
-    // Ended near-singular from the data's estimates: the template's
-    // values tried too (`template_start.rs`).
-    let with = (run.start, run.template, run.max_iterations);
-    let (first, from, before) =
-        super::template_start::from_template(problem, free, first, bounds, with);
-    let (first, starts) = (
-        continued(problem, first, bounds, run),
-        from.unwrap_or(starts),
-    );
-    let Some(k) = (0..starts.len()).find(|&k| at_bound(first.params[k], bounds[k]).is_some())
-    else {
-        return (first, starts, before);
-    };
-    let name = problem.names[k];
-    let template = run.template.and_then(|t| template_value(t, name));
-    let stated = run.holding.stated(name, template).0;
-    let Some((second, held, from)) = profiled(
-        problem,
-        &first.params,
-        k,
-        (bounds, stated),
-        run.max_iterations,
-    ) else {
-        return (first, starts, before);
-    };
-    let second = continued(problem, second, bounds, run);
-    let evaluations = first.evaluations + second.evaluations;
-    let sigma_of = |p: &[f64]| problem.sigma_percent(p);
-    let (was, now) = (sigma_of(&first.params), sigma_of(&second.params));
-    let better = second.cost < first.cost;
-    let said = format!(
-        "a second start: the fit from the {} ended with {name} on its physical bound (σ {was:.3} %); \
-         refitted with {name} held at {} and then released, it reached σ {now:.3} %: {}",
-        if run.start == StartScheme::Data { "data's estimates" } else { "template's values" },
-        crate::format::exact(held),
-        if better { "kept" } else { "no better, the first kept" }
-    );
-    if better {
-        (
-            LocalResult {
-                evaluations,
-                ..second
-            },
-            from,
-            Some(both(before, said)),
-        )
-    } else {
-        (
-            LocalResult {
-                evaluations,
-                ..first
-            },
-            starts,
-            Some(both(before, said)),
-        )
-    }
-}
-
-/// The second starts' words, the template's first (`None`: only `said`).
-fn both(before: Option<String>, said: String) -> String {
-    before.map_or_else(|| said.clone(), |b| format!("{b}; {said}"))
-}
-
-/// Iterations per free parameter a stage's last step may take where it
-/// stops on `--max-iterations` short of its optimum: the Hoosier file's
-/// pure Fy (26 free) stopped on the default 150 at every run, and
-/// converged with 1000 at the same σ.
-pub(super) const ITERATIONS_PER_FREE: usize = 50;
-
-/// The last step's cap of a stage of `free` parameters: at least
-/// `--max-iterations`, and [`ITERATIONS_PER_FREE`] for each.
-pub(super) fn continued_cap(free: usize, run: &StageRun) -> usize {
-    (ITERATIONS_PER_FREE * free).max(run.max_iterations)
-}
-
-/// The fit `r`, continued from where it stopped on the default cap up to
-/// [`continued_cap`] where it is short of its optimum (not converged, and
-/// a Gauss–Newton step would still lower the cost by more than the data
-/// tell apart: `Uncertainty::at_optimum`). A cap the user gives is
-/// honoured: the stage stops there and says so.
-fn continued(
-    problem: &StageProblem,
-    r: LocalResult,
-    bounds: &[(f64, f64)],
-    run: &StageRun,
-) -> LocalResult {
-    let cap = continued_cap(r.params.len(), run);
-    if run.cap_given
-        || r.converged
-        || cap <= run.max_iterations
-        || uncertainty(problem, &r.params).at_optimum()
-    {
-        return r;
-    }
-    let more = bounded(problem, &r.params, bounds, cap - run.max_iterations);
-    // A continuation that ends worse, or at no number, is dropped.
-    if more.cost.is_nan() || more.cost > r.cost {
-        return r;
-    }
-    LocalResult {
-        evaluations: r.evaluations + more.evaluations,
-        ..more
+        second_start: second,
     }
 }
 
@@ -383,6 +245,19 @@ fn hold_insensitive(
         let mut rest = fit.p.clone();
         rest.remove(k);
         let same = |problem: &StageProblem, p: &[f64]| cost(problem, p) <= before * (1.0 + 1e-9);
+        // Not moved because its curvature factor sits at its clip at 1
+        // over the rows: held there by the bound, not for want of data.
+        let clip = u.std_error[k]
+            .is_none()
+            .then(|| at_clip(&fit.problem, &fit.p, k))
+            .flatten();
+        if let Some(clip) = clip {
+            let fitted = fit.p[k];
+            let reason = HoldReason::AtCurvatureClip { fitted, clip };
+            fit.hold_out(k, fitted);
+            held.push((name, fitted, reason));
+            continue;
+        }
         if u.std_error[k].is_some() || !same(&without, &rest) {
             // Where its stated value moves the fit, a value of no size
             // (`RVY4` = 6.7e-233) is written as the 0 it is to the fit.
@@ -409,11 +284,7 @@ fn hold_insensitive(
                 sigma_held_free: None,
             },
         ));
-        fit.needs.remove(k);
-        fit.starts.remove(k);
-        fit.bounds.remove(k);
-        fit.problem = without;
-        fit.p = rest;
+        fit.hold_out(k, value);
     }
     held
 }
@@ -480,10 +351,6 @@ fn bound_warning((lo, hi): (f64, f64)) -> String {
     )
 }
 
-/// Iterations per step the paper's scheme runs at least: from every
-/// parameter at 1 its LM takes hundreds of steps to reach the data.
-pub(super) const PAPER_ITERATIONS: usize = 500;
-
 /// The warning of a stage fitted by the paper's scheme (`start`) that
 /// leaves parameters the data do not determine where its unbounded LM
 /// stopped (`PKY1` = −415.8 ± 25503 on a cornering file): the scheme
@@ -495,16 +362,25 @@ fn paper_unheld(start: StartScheme, parameters: &[StageParameter]) -> Option<Str
         .filter(|p| p.free && p.warning.is_some())
         .map(|p| format!("{} = {}", p.name, crate::format::rounded(p.value, 4)))
         .collect();
-    // What the data do not move at all is held even here (`hold_insensitive`).
+    // What the data do not move at all is held even here, and what its
+    // curvature's clip at 1 holds (`hold_insensitive`).
     let inert = parameters
         .iter()
         .any(|p| matches!(p.held, Some(HoldReason::NotIdentifiable { .. })));
+    let clipped = parameters
+        .iter()
+        .any(|p| matches!(p.held, Some(HoldReason::AtCurvatureClip { .. })));
     (start == StartScheme::Paper && !unheld.is_empty()).then(|| {
         format!(
             "the paper's scheme (--start paper) holds nothing: {} of its parameters, which these data do not determine ({}), are written where its unbounded Levenberg–Marquardt left them, not at a stated value{}; do not rely on this stage's channel beyond the points; --start data (the default) holds such parameters at the template's or Pacejka's (2012) book values and says so",
             unheld.len(),
             unheld.join(", "),
-            if inert { " (only what the data do not move at all, where its stated value leaves the fit as it is, is held, as said below)" } else { "" }
+            match (inert, clipped) {
+                (true, false) => " (only what the data do not move at all, where its stated value leaves the fit as it is, is held, as said below)",
+                (true, true) => " (only what the data do not move at all, where its stated value leaves the fit as it is, and what a curvature's clip at 1 holds, is held, as said below)",
+                (false, true) => " (only what a curvature's clip at 1 holds is held, as said below)",
+                (false, false) => "",
+            }
         )
     })
 }

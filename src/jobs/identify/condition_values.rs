@@ -37,9 +37,10 @@ pub(crate) fn own_values_note(r: &SwarmReport) -> Option<String> {
     })
 }
 
-/// A condition's own load `fz` to 0.1 N ([`own_load_text`]), with its
-/// level's name where that differs (`1639.7 N (1656 N level)`), else the
-/// level's name alone: the figure's key of the line drawn at it.
+/// A condition's own load `fz` to 0.1 N ([`own_load_text`]), the report's
+/// number, with its level's name where that differs (`1639.7 N (1656 N
+/// level)`), else the level's name alone: the figure's key of the line
+/// drawn at it.
 pub(crate) fn own_load(fz: f64, names: &LevelNames) -> String {
     let level = names.load(fz);
     if Variable::Load.display(fz) == level {
@@ -49,29 +50,34 @@ pub(crate) fn own_load(fz: f64, names: &LevelNames) -> String {
     }
 }
 
-/// A condition's own load, N, to 0.1 N whatever its digits: the report's
-/// `curves[].fz` is the median of the samples fitted, which has as many
-/// digits as the samples do or one more, and said as written one key read
-/// `524 N`, `1639.7 N`, `2736.55 N`, three rules for one quantity.
+/// A condition's own load, N, to 0.1 N whatever its digits, in the
+/// figure's key: the report's `curves[].fz` is the median of the samples
+/// fitted, which has as many digits as the samples do or one more, and
+/// said as written one key read `524 N`, `1639.7 N`, `2736.55 N`, three
+/// rules for one quantity.
 fn own_load_text(fz: f64) -> String {
     format!("{} N", crate::format::fixed(fz, 1))
 }
 
-/// The words of `c`'s values that its level is named otherwise: the load
-/// to 0.1 N (`1639.7 N in the 1656 N level`), a camber or pressure as the
-/// terminal spells it.
+/// The words of `c`'s values that its level is named otherwise, each to
+/// the rounding of its level's name (`1640 N in the 1656 N level`), as
+/// the terminal spells it.
 fn differing(c: &CurveReport, names: &LevelNames) -> Vec<String> {
     let mut out = Vec::new();
-    if Variable::Load.display(c.fz) != names.load(c.fz) {
-        let own = own_load_text(c.fz);
-        out.push(format!("{own} in the {} level", names.load(c.fz)));
-    }
+    // The load too as its level is named, in whole newtons: said to 0.1 N
+    // beside a level so named, the note read `1082.0 N in the 1095 N
+    // level`, two rules in one phrase.
     let mut other = |variable: Variable, v: f64| {
         let (own, level) = (variable.display(v), names.name(variable, v));
         if own != level {
-            out.push(format!("{} {own} in the {level} level", variable.column()));
+            let what = match variable {
+                Variable::Load => String::new(),
+                _ => format!("{} ", variable.column()),
+            };
+            out.push(format!("{what}{own} in the {level} level"));
         }
     };
+    other(Variable::Load, c.fz);
     other(Variable::Camber, c.camber);
     if let Some(p) = c.pressure {
         other(Variable::Pressure, p);
@@ -105,10 +111,12 @@ mod tests {
         assert_eq!(names.load(1639.7), "1656 N");
         assert_eq!(
             differing(&curve(1639.7), &names),
-            vec!["1639.7 N in the 1656 N level".to_string()]
+            vec!["1640 N in the 1656 N level".to_string()]
         );
-        // At its level's name, or outside every level, nothing to say.
+        // At its level's name, within its rounding, or outside every
+        // level, nothing to say.
         assert!(differing(&curve(1656.0), &names).is_empty());
+        assert!(differing(&curve(1655.6), &names).is_empty());
         assert!(differing(&curve(4000.0), &names).is_empty());
         // The figure's key: the report's number beside the level's name.
         assert_eq!(own_load(1639.7, &names), "1639.7 N (1656 N level)");
@@ -117,5 +125,23 @@ mod tests {
         // loads once read 524 N, 1639.7 N and 2736.55 N in one key).
         assert_eq!(own_load_text(524.0), "524.0 N");
         assert_eq!(own_load_text(2736.57), "2736.6 N");
+    }
+
+    #[test]
+    fn a_notes_load_and_its_levels_name_are_said_to_one_rounding() {
+        // The Hoosier file's second level, named 1095 N, fitted at
+        // 1082.04 N: the note read `1082.0 N in the 1095 N level`.
+        let fz: Vec<f64> = (0..41).map(|i| 1065.0 + 1.5 * f64::from(i)).collect();
+        let loads = [levels(Variable::Load, &fz, 10.0)];
+        let names = LevelNames::of(&loads, &[]);
+        assert_eq!(names.load(1082.04), "1095 N");
+        let said = differing(&curve(1082.04), &names);
+        assert_eq!(said, vec!["1082 N in the 1095 N level".to_string()]);
+        // Both numbers of the phrase spelt by one rule: whole newtons.
+        let numbers: Vec<&str> = said[0]
+            .split(' ')
+            .filter(|w| w.starts_with(|c: char| c.is_ascii_digit()))
+            .collect();
+        assert_eq!(numbers, ["1082", "1095"]);
     }
 }

@@ -196,7 +196,11 @@ pub(super) fn stage_lines(
         // What was held at a stated value rather than fitted (the
         // parameters held for want of levels are in the report).
         out.extend(s.parameters.iter().filter_map(|p| match &p.held {
-            Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => Some(format!(
+            Some(
+                why @ (HoldReason::NotIdentifiable { .. }
+                | HoldReason::AtCurvatureClip { .. }
+                | HoldReason::Given),
+            ) => Some(format!(
                 "    held: {} = {}: {}",
                 p.name,
                 p.value,

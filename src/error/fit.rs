@@ -179,6 +179,9 @@ pub enum FitError {
         /// Where and how the stiffness turns, said.
         turn: String,
     },
+    /// A held value's tyre whose slip stiffness turns over (`held_turn.rs`).
+    #[error(transparent)]
+    HeldTurn(Box<super::HeldTurn>),
     /// Rig data with a lateral force and no slip angle (`alpha` 0 in
     /// every sample) and no longitudinal sweep to fit instead: every model
     /// refuses it, as a fit there returns its start values.

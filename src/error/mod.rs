@@ -21,6 +21,7 @@ mod file_kind;
 mod fit;
 mod foreign_format;
 mod header_unit;
+mod held_turn;
 mod hold_rule;
 mod input;
 mod lateral_slope;
@@ -80,6 +81,7 @@ pub use fit::{
 };
 pub use foreign_format::ForeignFormat;
 pub use header_unit::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice};
+pub use held_turn::HeldTurn;
 pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};

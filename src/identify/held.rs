@@ -376,7 +376,7 @@ mod tests {
             standard_errors_away: standard_errors_away(0.77394, 0.9957, Some(24.4)),
         };
         assert!(
-            within.said("a7").ends_with("so it is held at the model's start value 0.77394, 0.0 standard errors from the free fit (within the ±2 standard errors the data allow), and the rest refitted"),
+            within.said("a7").ends_with("so it is held at the model's start value 0.77394, 0.01 standard errors from the free fit (within the ±2 standard errors the data allow), and the rest refitted"),
             "{}",
             within.said("a7")
         );

@@ -369,9 +369,15 @@ pub(crate) fn standard_errors_away(stated: f64, fitted: f64, se: Option<f64>) ->
 /// said by the sentence around it).
 pub(crate) fn z_text(z: f64) -> String {
     let side = |v: f64| v.partial_cmp(&LEAN_STANDARD_ERRORS);
+    // On the same side of the ±2 as `z`, and not 0 unless it is (a value
+    // 0.003 standard errors away is not "0.0" away).
+    let keeps = |t: &String| {
+        let v = t.parse::<f64>().ok();
+        v.and_then(side) == side(z) && (z == 0.0 || v != Some(0.0))
+    };
     (1..=6)
         .map(|d| format!("{z:.d$}"))
-        .find(|t| t.parse::<f64>().ok().and_then(side) == side(z))
+        .find(keeps)
         .unwrap_or_else(|| format!("{z:.6}"))
 }
 

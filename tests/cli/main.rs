@@ -888,6 +888,7 @@ pub(crate) fn one_sample_longer(text: &str) -> String {
     format!("{}{next:.4}{rest}\n", text)
 }
 mod trips_s107_diagwords42;
+mod trips_s107_lead;
 mod trips_s107_mf42;
 mod trips_s107_runwords42;
 mod trips_s107_tyreeval42;

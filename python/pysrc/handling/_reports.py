@@ -429,8 +429,8 @@ class Verdict:
     ``noise_floor``, ``removed_percent``, ``acceptance_percent``,
     ``causes``; ``gap_remains`` with ``heldout_error_after``,
     ``noise_level``, ``threshold``, ``left_percent`` and ``carried_by``
-    (``channel``, ``share_percent``, ``causes_named``, or null where no
-    one channel carries what is left); ``tyres_far_from_load`` with ``front``, ``rear``; or
+    (``channel``, ``share_percent``, ``causes_named``, ``causes``,
+    ``noise_floor``, or null where no one channel carries what is left); ``tyres_far_from_load`` with ``front``, ``rear``; or
     ``on_search_bound`` with ``parameters``). ``causes`` lists
     what the report holds elsewhere about the channel, each with ``kind``:
     ``beta_against`` (``file``, ``correlation``), ``run_carries``

@@ -50,10 +50,27 @@ pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
     }
     for w in &mut e.warnings {
         if let VerdictWarning::GapRemains { carried_by, .. } = w {
-            *carried_by = carrying(&gap.channel_shares).map(|(channel, share_percent)| CarriedBy {
-                channel,
-                share_percent,
-                causes_named: named.contains(&channel),
+            *carried_by = carrying(&gap.channel_shares).map(|(channel, share_percent)| {
+                let causes_named = named.contains(&channel);
+                // A channel no warning names: what the report holds about
+                // it said here (round 39: one run's yaw offset carried the
+                // rest, "ay carries 75 %" pointed nowhere).
+                let causes = match causes_named {
+                    true => Vec::new(),
+                    false => causes_of(channel, notes, &gap.findings, &gap.parts),
+                };
+                let noise_floor = gap
+                    .parts
+                    .iter()
+                    .find(|p| p.channel == channel && p.part == Part::All)
+                    .map_or(f64::NAN, |p| p.noise_floor);
+                CarriedBy {
+                    channel,
+                    share_percent,
+                    causes_named,
+                    causes,
+                    noise_floor,
+                }
             });
         }
     }

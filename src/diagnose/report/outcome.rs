@@ -119,6 +119,11 @@ impl Verdict {
 /// of the gap, and the verdict says what share it leaves.
 pub const EXPLAINS_MOST: f64 = 50.0;
 
+/// A held-out error at or below this multiple of the noise level is no
+/// gap (the verdict's rules apply it, `verdict::rules::SIGNIFICANT`; set
+/// here, below them, where the words that say it read it too).
+pub const SIGNIFICANT_GAP: f64 = 1.3;
+
 /// Effects that explain the gap.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Explained {

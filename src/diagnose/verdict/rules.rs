@@ -24,7 +24,7 @@ pub const CONFOUNDED: f64 = 1.5;
 /// The noise allowance of the confounding test, in noise levels.
 pub const CONFOUNDED_NOISE: f64 = 0.25;
 /// A held-out error below this multiple of the noise level is no gap.
-pub const SIGNIFICANT: f64 = 1.3;
+pub const SIGNIFICANT: f64 = crate::diagnose::report::outcome::SIGNIFICANT_GAP;
 /// Share of the gap a best single effect must remove for the greedy search
 /// to start from it (a pair whose halves each remove less than [`ACCEPT`]).
 pub const PROMISING: f64 = 0.1;

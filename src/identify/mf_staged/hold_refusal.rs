@@ -20,8 +20,10 @@ use super::holds::HoldSource;
 use super::params::Need;
 use super::problem::StageProblem;
 use super::Stage;
+use crate::format::exact;
 use crate::identify::spare::{
-    held_at, standard_errors_away, Refusal, GUARD_STANDARD_ERRORS, SIGMA_RISE,
+    held_at, standard_errors_away, z_text, Refusal, GUARD_STANDARD_ERRORS, LEAN_STANDARD_ERRORS,
+    SIGMA_RISE,
 };
 use crate::optim::local::Residuals;
 use serde::Serialize;
@@ -175,20 +177,29 @@ impl RefusedHold {
     /// The refusal as coefficient `name`'s line says it, in `stage`.
     pub fn said(&self, name: &str, stage: Stage) -> String {
         let more: Vec<String> = self.more_data.iter().map(|m| m.words(stage)).collect();
-        format!(
-            "a hold was tried and refused: {}, the rest refitted, σ rose from {:.3} % to {:.3} %, past the {:.3} % a hold may reach ({}), so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know, or fit data with {}, which determine it",
-            held_at(
-                &format!("the {}", self.source),
-                self.stated,
-                self.tried_at,
-                self.standard_errors_away
-            ),
+        let rose = format!(
+            "the rest refitted, σ rose from {:.3} % to {:.3} %, past the {:.3} % a hold may reach ({})",
             self.sigma_free_percent,
             self.sigma_held_percent,
             self.sigma_limit_percent,
             self.limit.words(),
-            more.join(" and ")
-        )
+        );
+        let source = format!("the {}", self.source);
+        match self.standard_errors_away {
+            // Within the free fit's ±2 by its linearisation, and refused
+            // by the refit: the standard error, the cost's curvature at
+            // the free fit, understates how well the data fix it there.
+            Some(z) if self.tried_at == self.stated && z <= LEAN_STANDARD_ERRORS => format!(
+                "a hold was tried and refused: held at {source} {}, {} standard errors from the free fit by its linearisation, {rose}: the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values), so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know",
+                exact(self.stated),
+                z_text(z)
+            ),
+            _ => format!(
+                "a hold was tried and refused: {}, {rose}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know, or fit data with {}, which determine it",
+                held_at(&source, self.stated, self.tried_at, self.standard_errors_away),
+                more.join(" and ")
+            ),
+        }
     }
 }
 
@@ -217,7 +228,7 @@ mod tests {
         let w = refused(GuardLimit::SigmaRise, -8000.0).said("PKY1", Stage::PureFy);
         assert_eq!(
             w,
-            "a hold was tried and refused: held at the template's value -8000, 0.5 standard errors from the free fit (within the ±2 standard errors the data allow), the rest refitted, σ rose from 1.683 % to 1.912 %, past the 1.767 % a hold may reach (σ rising by 5 % of itself, the larger of the guard's two limits here), so it is left free where the fit put it; to hold it, give --hold PKY1=VALUE with a value you know, or fit data with more load levels and more camber levels, which determine it"
+            "a hold was tried and refused: held at the template's value -8000, 0.5 standard errors from the free fit by its linearisation, the rest refitted, σ rose from 1.683 % to 1.912 %, past the 1.767 % a hold may reach (σ rising by 5 % of itself, the larger of the guard's two limits here): the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values), so it is left free where the fit put it; to hold it, give --hold PKY1=VALUE with a value you know"
         );
         let w = refused(GuardLimit::StandardErrors, -7000.0).said("PKY1", Stage::PureFy);
         assert!(w.contains("held at -7000, the end of the free fit's ±2 standard errors nearest the template's value -8000"), "{w}");

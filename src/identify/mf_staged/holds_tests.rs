@@ -59,7 +59,7 @@ fn a_hold_reason_reads_as_a_sentence() {
         at_bound: None,
         sigma_held_free: None,
     };
-    assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 standard errors the data allow)");
+    assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.05 standard errors from the free fit (within the ±2 standard errors the data allow)");
     // PKY4 of the Hoosier fit at 0.10014 of its box 0.1..5: said at
     // its bound, without the standard error's effect (723 %).
     assert_eq!(near_bound(0.10014, (0.1, 5.0)), Some((0.1, (0.1, 5.0))));

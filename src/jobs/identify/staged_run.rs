@@ -78,6 +78,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let body = crate::io::tir::tir_text(&written, template.as_ref())?;
     let (tir, file_warnings) = super::written_checks::with_file_checks(&out, &head, &body);
     super::written_checks::refuse_paper_turn(o.start, &out, &tir, &fitted)?;
+    super::written_checks::refuse_held_turn(&o.hold, &written)?;
     let back = read_back_difference(&tir, &id.tyre, &prepared)?;
     let figures =
         super::staged_figure::stage_figures(&id.tyre, &fitted, &prepared.rows, named, &out);

@@ -78,6 +78,51 @@ pub(super) fn refuse_paper_turn(
     Err(FitError::PaperTurn { turn }.into())
 }
 
+/// The load coefficients of each slip stiffness (at `NOMPRES`, no camber):
+/// a held one of these can turn the stiffness over (`held_turn.rs`).
+const STIFFNESS_KEYS: [(&str, &[&str]); 2] = [
+    ("cornering", &["PKY1", "PKY2", "PKY4", "PPY1", "PPY2"]),
+    (
+        "longitudinal slip",
+        &["PKX1", "PKX2", "PKX3", "PPX1", "PPX2"],
+    ),
+];
+
+/// Refuses the fitted `tyre` where a slip stiffness changes sign inside
+/// the loads written (the data's) and a value given with `--hold` is one
+/// of its load coefficients ([`crate::error::HeldTurn`]). Found by
+/// behaviour, as `tyre-eval` finds it of any file. Without a held one the
+/// fit's boxes keep the stiffness of one sign, and a template's own
+/// coefficients are its file's warnings.
+pub(super) fn refuse_held_turn(hold: &[(String, f64)], tyre: &MagicFormula) -> Result<(), Error> {
+    let (Some(lo), Some(hi)) = (tyre.limits.fz_min, tyre.limits.fz_max) else {
+        return Ok(());
+    };
+    let whole = crate::tyre::Tyre::MagicFormula(Box::new(tyre.clone()));
+    for turn in crate::jobs::tyre_eval::sign_changes(&whole, &[lo.max(1.0), hi]) {
+        let keys = STIFFNESS_KEYS
+            .iter()
+            .find(|(s, _)| *s == turn.stiffness)
+            .map_or(&[][..], |(_, k)| *k);
+        let held: Vec<(String, f64, Option<(f64, f64)>)> = hold
+            .iter()
+            .filter(|(k, _)| keys.contains(&k.as_str()))
+            .map(|(k, v)| (k.clone(), *v, crate::identify::mf_staged::fixed_bounds(k)))
+            .collect();
+        if !held.is_empty() {
+            let e = crate::error::HeldTurn {
+                held,
+                stiffness: turn.stiffness,
+                between: turn.between,
+                changes: turn.changes,
+                loads: (lo, hi),
+            };
+            return Err(FitError::HeldTurn(Box::new(e)).into());
+        }
+    }
+    Ok(())
+}
+
 /// A template's `PKY1`, `PKY4` on the other branch of Kyα (`PKY4 < 0`),
 /// which the fit reads (and writes) with both signs turned: said.
 pub(super) fn stiffness_branch_note(t: &MagicFormula) -> Option<String> {

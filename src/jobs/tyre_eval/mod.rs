@@ -83,6 +83,7 @@ mod rolling;
 mod slip_ratio;
 mod standstill;
 mod stiffness;
+pub(crate) use stiffness::sign_changes;
 mod unfitted_lateral;
 mod unread;
 mod zero_slip;

@@ -25,8 +25,11 @@ const LOADS: usize = 65;
 pub struct SignChange {
     /// `longitudinal slip` or `cornering`.
     pub stiffness: &'static str,
-    /// The loads it changes sign between, N.
+    /// The loads it first changes sign between, N.
     pub between: (f64, f64),
+    /// How many times it changes sign over the loads probed (a held
+    /// `PKY4 = −50` turns `sin(PKY4·atan(…))` over four times in 2–6 kN).
+    pub changes: usize,
     /// The range of loads evaluated, N (after the limit checks).
     pub loads: (f64, f64),
     /// The largest load of the points, where the limit checks evaluate it
@@ -45,8 +48,12 @@ impl SignChange {
             ),
             None => String::new(),
         };
+        let times = match self.changes {
+            1 => String::new(),
+            n => format!(" {n} times, first"),
+        };
         format!(
-            "the {} stiffness (the force's slope at zero slip) changes sign between fz = {} N and {} N, inside the loads evaluated ({} to {} N{held}): on one side of it the tyre's force opposes its slip; check the file's load coefficients (a .tir's PKX1 + PKX2·dfz, PKY1…)",
+            "the {} stiffness (the force's slope at zero slip) changes sign{times} between fz = {} N and {} N, inside the loads evaluated ({} to {} N{held}): on one side of it the tyre's force opposes its slip; check the file's load coefficients (a .tir's PKX1 + PKX2·dfz, PKY1…)",
             self.stiffness,
             n(self.between.0),
             n(self.between.1),
@@ -219,12 +226,15 @@ pub(crate) fn sign_changes(tyre: &Tyre, fz: &[f64]) -> Vec<SignChange> {
             // Between the last load of one sign and the first of the
             // other (a load where it is 0 lies between them).
             let signed: Vec<usize> = (0..LOADS).filter(|&i| k[i].abs() > tiny).collect();
-            let w = signed
+            let flips: Vec<&[usize]> = signed
                 .windows(2)
-                .find(|w| k[w[0]].signum() != k[w[1]].signum())?;
+                .filter(|w| k[w[0]].signum() != k[w[1]].signum())
+                .collect();
+            let w = flips.first()?;
             Some(SignChange {
                 stiffness,
                 between: (loads[w[0]], loads[w[1]]),
+                changes: flips.len(),
                 loads: (lo, hi),
                 held_from,
             })
@@ -279,6 +289,8 @@ mod tests {
         assert_eq!(found.len(), 1, "{found:?}");
         let s = &found[0];
         assert_eq!(s.stiffness, "longitudinal slip");
+        assert_eq!(s.changes, 1);
+        assert!(!s.line().contains("times"), "{}", s.line());
         assert!(
             s.between.0 <= cross && cross <= s.between.1,
             "{s:?} against {cross}"

@@ -99,7 +99,7 @@ pub enum ChannelCause {
 /// The channel that carries most of what a verdict's effects leave: more
 /// than [`crate::diagnose::report::shares::CARRIES_SHARE`] of the held-out
 /// `J²` with them ([`super::VerdictWarning::GapRemains`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CarriedBy {
     /// The channel.
     pub channel: Channel,
@@ -108,4 +108,10 @@ pub struct CarriedBy {
     /// Whether a warning on the channel ([`ChannelLeft`],
     /// [`ChannelWorsened`]) names causes the report holds.
     pub causes_named: bool,
+    /// What the report holds about the channel where no warning on it
+    /// names it (a run carrying most of its gap left, its steady offset;
+    /// empty where `causes_named`, or nothing is held).
+    pub causes: Vec<ChannelCause>,
+    /// The channel's noise floor, its unit (the causes' RMS in floors).
+    pub noise_floor: f64,
 }

@@ -264,6 +264,8 @@ fn a_gap_left_names_the_channel_that_carries_it() {
             channel: Channel::Beta,
             share_percent: 82.0,
             causes_named,
+            causes: Vec::new(),
+            noise_floor: 0.002,
         })
     };
     assert_eq!(
@@ -277,5 +279,22 @@ fn a_gap_left_names_the_channel_that_carries_it() {
     assert_eq!(
         remains(None),
         format!("{head} (an effect outside the library, or the base model's own form), not noise")
+    );
+    // No warning on the channel, and one run carrying its gap left: the
+    // run named here (round 39: a yaw offset in one run).
+    let run = Some(CarriedBy {
+        channel: Channel::Beta,
+        share_percent: 82.0,
+        causes_named: false,
+        causes: vec![ChannelCause::RunCarries {
+            run: "step_060kph_2ms2.csv".into(),
+            share_percent: 91.0,
+            rms: 0.0132,
+        }],
+        noise_floor: 0.002,
+    });
+    assert_eq!(
+        remains(run),
+        format!("{head}, not noise: beta carries 82 % of what it leaves: step_060kph_2ms2.csv carries 91 % of this channel's gap above noise left (RMS 0.0132 rad, 6.6 noise floors)")
     );
 }

@@ -149,3 +149,18 @@ fn a_stated_uncertainty_far_above_the_channels_scatter_is_said_where_it_is_trust
         "yaw_rate 0.0400 rad/s (stated; 16× the channel's own scatter, 0.0025 rad/s: a gap below it is called insignificant only because of the statement)"
     );
 }
+
+/// A partial verdict whose rest lies above 1.3 × the noise level leaves
+/// a share no candidate explains (below it, `tests.rs`: not shown to be a
+/// gap).
+#[test]
+fn a_partial_verdicts_significant_rest_is_what_no_candidate_explains() {
+    let mut v = super::tests::explained(42.0);
+    if let Verdict::Explained(e) = &mut v {
+        e.heldout_error_after = 2.006;
+    }
+    assert_eq!(
+        statement(&v),
+        "sensor_delay+relaxation_length explains part of the gap: held-out error 3.628 → 2.006 (noise level 0.941), 42.0 % of the gap above noise removed; the other 58.0 % no candidate explains"
+    );
+}

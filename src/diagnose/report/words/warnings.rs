@@ -94,6 +94,8 @@ fn carried(c: &CarriedBy) -> String {
     let share = format!("{name} carries {:.0} % of what it leaves", c.share_percent);
     if c.causes_named {
         format!("{share}, and the warning on {name} above says what the report holds about it")
+    } else if let Some(p) = super::causes::pointed(&c.causes, c.channel, c.noise_floor) {
+        format!("{share}: {p}")
     } else {
         format!("{share} (an effect outside the library, the base model's own form, or {name}'s sensor)")
     }

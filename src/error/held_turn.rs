@@ -11,13 +11,23 @@
 use crate::error::Num;
 use crate::format::{plural, readable};
 
+/// A coefficient held with `--hold`, in the tyre file's units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeldValue {
+    /// Its name (`PKY4`).
+    pub name: String,
+    /// The value given.
+    pub value: f64,
+    /// The box the fit searches for it, where it has one.
+    pub search_box: Option<(f64, f64)>,
+}
+
 /// A held value's tyre whose slip stiffness turns over inside its loads.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{}", self.said())]
 pub struct HeldTurn {
-    /// The held coefficients of that stiffness, with their values and the
-    /// fit's own box for each where it has one.
-    pub held: Vec<(String, f64, Option<(f64, f64)>)>,
+    /// The held coefficients of that stiffness.
+    pub held: Vec<HeldValue>,
     /// `cornering` or `longitudinal slip`.
     pub stiffness: &'static str,
     /// The loads it first changes sign between.
@@ -34,13 +44,14 @@ impl HeldTurn {
         let given: Vec<String> = self
             .held
             .iter()
-            .map(|(k, v, _)| format!("--hold {k}={}", Num(*v)))
+            .map(|h| format!("--hold {}={}", h.name, Num(h.value)))
             .collect();
         let boxes: Vec<String> = self
             .held
             .iter()
-            .filter_map(|(k, _, b)| {
-                b.map(|(lo, hi)| format!("{k} within {} to {}", Num(lo), Num(hi)))
+            .filter_map(|h| {
+                let (lo, hi) = h.search_box?;
+                Some(format!("{} within {} to {}", h.name, Num(lo), Num(hi)))
             })
             .collect();
         let advice = match boxes.is_empty() {
@@ -70,7 +81,11 @@ mod tests {
     #[test]
     fn a_held_turn_names_the_value_the_count_and_the_box() {
         let e = HeldTurn {
-            held: vec![("PKY4".into(), -50.0, Some((0.1, 5.0)))],
+            held: vec![HeldValue {
+                name: "PKY4".into(),
+                value: -50.0,
+                search_box: Some((0.1, 5.0)),
+            }],
             stiffness: "cornering",
             between: (2063.0, 2125.0),
             changes: 4,

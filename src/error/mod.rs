@@ -81,7 +81,7 @@ pub use fit::{
 };
 pub use foreign_format::ForeignFormat;
 pub use header_unit::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice};
-pub use held_turn::HeldTurn;
+pub use held_turn::{HeldTurn, HeldValue};
 pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};

@@ -104,10 +104,14 @@ pub(super) fn refuse_held_turn(hold: &[(String, f64)], tyre: &MagicFormula) -> R
             .iter()
             .find(|(s, _)| *s == turn.stiffness)
             .map_or(&[][..], |(_, k)| *k);
-        let held: Vec<(String, f64, Option<(f64, f64)>)> = hold
+        let held: Vec<crate::error::HeldValue> = hold
             .iter()
             .filter(|(k, _)| keys.contains(&k.as_str()))
-            .map(|(k, v)| (k.clone(), *v, crate::identify::mf_staged::fixed_bounds(k)))
+            .map(|(k, v)| crate::error::HeldValue {
+                name: k.clone(),
+                value: *v,
+                search_box: crate::identify::mf_staged::fixed_bounds(k),
+            })
             .collect();
         if !held.is_empty() {
             let e = crate::error::HeldTurn {

@@ -164,6 +164,38 @@ pub(crate) fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// The noise-free forces and moments `tyre-eval` gives of `tir` over the
+/// book's grid (`docs/examples/mf_grid.csv`), written to `dir/rig205.csv`:
+/// a rig file `identify` reads.
+pub(crate) fn rig205(tir: &Path, dir: &Path) -> PathBuf {
+    let rig = dir.join("rig205.csv");
+    let grid = root().join("docs/examples/mf_grid.csv");
+    succeeds(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        grid.to_str().unwrap(),
+        "--out",
+        rig.to_str().unwrap(),
+    ]);
+    rig
+}
+
+/// Maps every value of column `name` (its header names it) of the CSV
+/// file at `path` by `f`: a sensor's offset, sign or gain slipped in.
+pub(crate) fn map_column(path: &Path, name: &str, f: impl Fn(f64) -> f64) {
+    let text = fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let k = header.split(',').position(|c| c == name).unwrap();
+    let mut out = format!("{header}\n");
+    for l in lines {
+        let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+        cells[k] = format!("{}", f(cells[k].parse::<f64>().unwrap()));
+        out += &(cells.join(",") + "\n");
+    }
+    fs::write(path, out).unwrap();
+}
+
 /// Writes the log `csv` to `dir/run.csv` and a scenario replaying it on
 /// [`VEHICLE`] with `dir/tyre.toml` on both axles, `dir/replay.toml`.
 pub(crate) fn replay_of(dir: &Path, csv: &str) -> PathBuf {

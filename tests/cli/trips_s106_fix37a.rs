@@ -99,24 +99,8 @@ fn a_toml_tyre_saved_as_tir_is_named_a_toml_tyre_with_the_rename_that_reads_it()
     assert!(!said.contains("is not a key"), "{said}");
 }
 
-/// The noise-free forces and moments `tyre-eval` gives of `tir` over the
-/// book's grid (`docs/examples/mf_grid.csv`), written to `dir/rig205.csv`:
-/// a rig file `identify` reads.
-fn rig205(tir: &Path, dir: &Path) -> PathBuf {
-    let rig = dir.join("rig205.csv");
-    let grid = root().join("docs/examples/mf_grid.csv");
-    succeeds(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        grid.to_str().unwrap(),
-        "--out",
-        rig.to_str().unwrap(),
-    ]);
-    rig
-}
-
 /// Before: `identify --model mf62 --start paper --max-iterations 20` on
-/// those forces wrote a `.tir` whose pure Fx was σ 88 % and whose Kxκ
+/// the forces of `car205_60R19.tir` over the book's grid ([`rig205`]) wrote a `.tir` whose pure Fx was σ 88 % and whose Kxκ
 /// turned negative from 5597 N inside its own FZMAX of 6000 N, every
 /// message disowning it. Now the paper's unbounded scheme's tyre whose
 /// force opposes its slip inside the loads fitted is refused, nothing

@@ -18,21 +18,6 @@ fn escaped(text: &str) -> String {
         .replace('\'', "&#39;")
 }
 
-/// Negates column `name` of the CSV file at `path` (its header names it).
-fn negate_column(path: &Path, name: &str) {
-    let text = fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap();
-    let k = header.split(',').position(|c| c == name).unwrap();
-    let mut out = format!("{header}\n");
-    for l in lines {
-        let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-        cells[k] = format!("{}", -cells[k].parse::<f64>().unwrap());
-        out += &(cells.join(",") + "\n");
-    }
-    fs::write(path, out).unwrap();
-}
-
 /// The verdict's warnings in `diagnosis.json`.
 fn warnings(d: &serde_json::Value) -> Vec<String> {
     d["verdict"]["warnings"]
@@ -60,7 +45,7 @@ fn the_warning_on_a_gap_left_names_the_file_whose_beta_moves_against_the_model()
         &["--effects", "sensor_delay", "--seed", "1"],
     );
     let sweep = c.join("runs/sweep_080kph.csv");
-    negate_column(&sweep, "beta");
+    map_column(&sweep, "beta", |v| -v);
     let out = dir.path().join("out");
     let (said, d) = diagnose_to(&c, &out);
     let note = d["note_details"]

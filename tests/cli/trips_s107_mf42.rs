@@ -7,21 +7,6 @@
 
 use super::*;
 
-/// The noise-free forces and moments `tyre-eval` gives of `tir` over the
-/// book's grid (`docs/examples/mf_grid.csv`), written to `dir/rig205.csv`.
-fn rig205(tir: &Path, dir: &Path) -> PathBuf {
-    let rig = dir.join("rig205.csv");
-    let grid = root().join("docs/examples/mf_grid.csv");
-    succeeds(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        grid.to_str().unwrap(),
-        "--out",
-        rig.to_str().unwrap(),
-    ]);
-    rig
-}
-
 /// The stage `name` of a staged fit's report.
 fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
     report["stages"]

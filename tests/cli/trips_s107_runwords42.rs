@@ -7,21 +7,6 @@
 
 use super::*;
 
-/// Negates column `name` of the CSV file at `path` (its header names it).
-fn negate_column(path: &Path, name: &str) {
-    let text = fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap();
-    let k = header.split(',').position(|c| c == name).unwrap();
-    let mut out = format!("{header}\n");
-    for l in lines {
-        let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-        cells[k] = format!("{}", -cells[k].parse::<f64>().unwrap());
-        out += &(cells.join(",") + "\n");
-    }
-    fs::write(path, out).unwrap();
-}
-
 /// A synthetic handling campaign (`sensor_delay` on, seed 1) with
 /// `extra` appended under its `[diagnose]` table.
 fn handling(dir: &Path, extra: &str) -> PathBuf {
@@ -50,7 +35,7 @@ fn two_files_whose_sideslip_moves_against_the_model_are_named_in_one_refusal() {
     let dir = tempfile::tempdir().unwrap();
     let c = handling(dir.path(), "effects = [\"sensor_delay\"]\n");
     for f in ["step_100kph_6ms2.csv", "step_120kph_4ms2.csv"] {
-        negate_column(&c.join("runs").join(f), "beta");
+        map_column(&c.join("runs").join(f), "beta", |v| -v);
     }
     let e = refused_diagnosis(dir.path(), &c);
     assert!(
@@ -67,7 +52,7 @@ fn two_files_whose_sideslip_moves_against_the_model_are_named_in_one_refusal() {
     );
     // Negating both back, as the refusal asks, passes the check.
     for f in ["step_100kph_6ms2.csv", "step_120kph_4ms2.csv"] {
-        negate_column(&c.join("runs").join(f), "beta");
+        map_column(&c.join("runs").join(f), "beta", |v| -v);
     }
     let o = run(&[
         "diagnose",

@@ -186,14 +186,22 @@ impl RefusedHold {
         );
         let source = format!("the {}", self.source);
         match self.standard_errors_away {
-            // Within the free fit's ±2 by its linearisation, and refused
-            // by the refit: the standard error, the cost's curvature at
-            // the free fit, understates how well the data fix it there.
-            Some(z) if self.tried_at == self.stated && z <= LEAN_STANDARD_ERRORS => format!(
-                "a hold was tried and refused: held at {source} {}, {} standard errors from the free fit by its linearisation, {rose}: the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values), so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know",
-                exact(self.stated),
-                z_text(z)
-            ),
+            // Tried at the stated value and refused by the refit. Within
+            // the free fit's ±2 by its linearisation, the standard error
+            // (the cost's curvature at the free fit) understates how well
+            // the data fix it; past it, the data reject it. Either way no
+            // more data are asked for, and nothing is "allowed".
+            Some(z) if self.tried_at == self.stated => {
+                let (side, tail) = match z <= LEAN_STANDARD_ERRORS {
+                    true => (" by its linearisation", ": the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values)"),
+                    false => (", outside its linearised ±2", ""),
+                };
+                format!(
+                    "a hold was tried and refused: held at {source} {}, {} standard errors from the free fit{side}, {rose}{tail}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know",
+                    exact(self.stated),
+                    z_text(z)
+                )
+            }
             _ => format!(
                 "a hold was tried and refused: {}, {rose}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know, or fit data with {}, which determine it",
                 held_at(&source, self.stated, self.tried_at, self.standard_errors_away),
@@ -229,6 +237,15 @@ mod tests {
         assert_eq!(
             w,
             "a hold was tried and refused: held at the template's value -8000, 0.5 standard errors from the free fit by its linearisation, the rest refitted, σ rose from 1.683 % to 1.912 %, past the 1.767 % a hold may reach (σ rising by 5 % of itself, the larger of the guard's two limits here): the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values), so it is left free where the fit put it; to hold it, give --hold PKY1=VALUE with a value you know"
+        );
+        // Past the ±2 and tried there: rejected, nothing "allowed".
+        let mut far = refused(GuardLimit::SigmaRise, -8000.0);
+        far.standard_errors_away = Some(3.5);
+        let w = far.said("PKY1", Stage::PureFy);
+        assert!(w.contains("held at the template's value -8000, 3.5 standard errors from the free fit, outside its linearised ±2, the rest refitted"), "{w}");
+        assert!(
+            !w.contains("allow") && !w.contains("fix it more tightly"),
+            "{w}"
         );
         let w = refused(GuardLimit::StandardErrors, -7000.0).said("PKY1", Stage::PureFy);
         assert!(w.contains("held at -7000, the end of the free fit's ±2 standard errors nearest the template's value -8000"), "{w}");

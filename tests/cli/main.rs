@@ -165,10 +165,10 @@ pub(crate) fn stderr(o: &Output) -> String {
 }
 
 /// The noise-free forces and moments `tyre-eval` gives of `tir` over the
-/// book's grid (`docs/examples/mf_grid.csv`), written to `dir/rig205.csv`:
+/// book's grid (`docs/examples/mf_grid.csv`), written to `dir/grid_rig.csv`:
 /// a rig file `identify` reads.
-pub(crate) fn rig205(tir: &Path, dir: &Path) -> PathBuf {
-    let rig = dir.join("rig205.csv");
+pub(crate) fn grid_rig(tir: &Path, dir: &Path) -> PathBuf {
+    let rig = dir.join("grid_rig.csv");
     let grid = root().join("docs/examples/mf_grid.csv");
     succeeds(&[
         "tyre-eval",

@@ -12,15 +12,7 @@ use super::*;
 /// where the shared data are absent.
 fn mfeval_grid_fit(test: &str, dir: &Path) -> Option<serde_json::Value> {
     let tir = shared_data(test, "tir_public/MagicFormula61_Paramerters.tir")?;
-    let rig = dir.join("rig.csv");
-    let grid = root().join("docs/examples/mf_grid.csv");
-    succeeds(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        grid.to_str().unwrap(),
-        "--out",
-        rig.to_str().unwrap(),
-    ]);
+    let rig = grid_rig(&tir, dir);
     let out = dir.join("fit.tir");
     succeeds(&[
         "identify",

@@ -100,7 +100,7 @@ fn a_toml_tyre_saved_as_tir_is_named_a_toml_tyre_with_the_rename_that_reads_it()
 }
 
 /// Before: `identify --model mf62 --start paper --max-iterations 20` on
-/// the forces of `car205_60R19.tir` over the book's grid ([`rig205`]) wrote a `.tir` whose pure Fx was σ 88 % and whose Kxκ
+/// the forces of `car205_60R19.tir` over the book's grid ([`grid_rig`]) wrote a `.tir` whose pure Fx was σ 88 % and whose Kxκ
 /// turned negative from 5597 N inside its own FZMAX of 6000 N, every
 /// message disowning it. Now the paper's unbounded scheme's tyre whose
 /// force opposes its slip inside the loads fitted is refused, nothing
@@ -113,7 +113,7 @@ fn a_papers_start_tyre_whose_slip_stiffness_turns_negative_in_its_loads_is_not_w
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let rig = rig205(&tir, dir.path());
+    let rig = grid_rig(&tir, dir.path());
     let out = dir.path().join("fit62.tir");
     let o = run(&[
         "identify",
@@ -156,7 +156,7 @@ fn a_stage_stopped_near_singular_is_fitted_again_from_the_templates_values() {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let rig = rig205(&tir, dir.path());
+    let rig = grid_rig(&tir, dir.path());
     let out = dir.path().join("fit.tir");
     let said = succeeds(&[
         "identify",

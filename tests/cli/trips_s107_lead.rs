@@ -18,7 +18,7 @@ fn a_held_value_that_turns_the_cornering_stiffness_over_inside_the_loads_is_refu
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let rig = rig205(&tir, dir.path());
+    let rig = grid_rig(&tir, dir.path());
     let out = dir.path().join("held.tir");
     let fit = |hold: &str| {
         run(&[

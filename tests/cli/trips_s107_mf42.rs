@@ -44,7 +44,7 @@ fn a_template_start_that_fits_better_than_the_datas_is_kept_and_said() {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let rig = rig205(&tir, dir.path());
+    let rig = grid_rig(&tir, dir.path());
     let out = dir.path().join("fit.tir");
     let said = succeeds(&[
         "identify",
@@ -123,7 +123,7 @@ fn a_curvature_held_by_its_clip_at_one_is_said_so_not_undetermined() {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let rig = lateral(&rig205(&tir, dir.path()), dir.path());
+    let rig = lateral(&grid_rig(&tir, dir.path()), dir.path());
     let out = dir.path().join("paper.tir");
     let said = succeeds(&[
         "identify",

@@ -558,4 +558,4 @@ fn speed_schedule(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
 
 #[cfg(test)]
 #[path = "applicability_tests.rs"]
-mod tests;
+pub(crate) mod tests;

@@ -3,7 +3,7 @@
 use super::*;
 
 /// Metrics of a well-behaved step: 0.5° sideslip, 12 % overshoot.
-fn moderate() -> StepMetrics {
+pub(crate) fn moderate() -> StepMetrics {
     StepMetrics {
         steer_step: 0.02,
         time_zero: 1.0,
@@ -31,6 +31,9 @@ fn moderate() -> StepMetrics {
         yaw_rate_peak_found_share: None,
         yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
+        yaw_rate_response_time_spread: None,
+        ay_response_time_spread: None,
+        yaw_rate_gain_spread: None,
         yaw_rate_peak_unmeasured: false,
     }
 }

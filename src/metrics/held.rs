@@ -13,8 +13,8 @@ use super::noise::{held_noise_scale, noise_deviation, noise_gain, HeldEvery};
 use super::settling::{sideslip_scale, verdict, ChannelSettling};
 use super::variance::total_variance;
 use super::{
-    divergence, filter_ringing, first_crossing, initial, normalise, peak, pulse, MetricSettings,
-    Normalised, StepMetrics, MIN_STEP, PEAK_DIP_NOISE, PEAK_NOISE,
+    crossing_spread, divergence, filter_ringing, first_crossing, initial, normalise, peak, pulse,
+    MetricSettings, Normalised, StepMetrics, MIN_STEP, PEAK_DIP_NOISE, PEAK_NOISE,
 };
 use crate::error::MetricsError;
 
@@ -321,6 +321,7 @@ fn metrics_of(
     let e_ay =
         c.a.as_ref()
             .map(|a| total_variance(t, &d.values, &a.values, window.0, window.1));
+    let spreads = response_spreads(t, c, times, low_pass);
     StepMetrics {
         steer_step: d.steady,
         time_zero: t0,
@@ -348,6 +349,27 @@ fn metrics_of(
         yaw_rate_peak_found_share: peak.spread.map(|s| s.found),
         yaw_rate_peak_stray_share: peak.spread.map(|s| s.stray),
         yaw_rate_overshoot_spread: peak.spread.map(|s| 100.0 * s.overshoot_sd),
+        yaw_rate_response_time_spread: spreads[0],
+        ay_response_time_spread: spreads[1],
+        yaw_rate_gain_spread: crossing_spread::gain_spread(r, d),
         yaw_rate_peak_unmeasured: false,
     }
+}
+
+/// How far the run's noise moves the yaw rate's and the lateral
+/// acceleration's 90 % crossings (`crossing_spread.rs`), s.
+fn response_spreads(
+    t: &[f64],
+    c: &Channels,
+    times: &Crossings,
+    low_pass: &LowPass,
+) -> [Option<f64>; 2] {
+    let filtered = |x: &[f64]| low_pass.apply(x);
+    let from = (times.onset, 0.9);
+    [
+        crossing_spread::crossing_spread(t, &c.r.values, from, (c.r.noise, c.r.samples), &filtered),
+        c.a.as_ref().and_then(|a| {
+            crossing_spread::crossing_spread(t, &a.values, from, (a.noise, a.samples), &filtered)
+        }),
+    ]
 }

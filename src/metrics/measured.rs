@@ -361,6 +361,7 @@ mod ay_check;
 mod coarse_grid;
 mod hole_bound;
 mod no_step;
+mod noise_spread;
 mod peak_speed;
 mod piece;
 mod steady_advice;
@@ -524,6 +525,7 @@ pub fn measured_step_metrics(
     ));
     warnings.extend(measured_speed_varies(&piece, &metrics, settings));
     warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
+    warnings.extend(noise_spread::said(&metrics));
     warnings.extend(metrics.settling_warning());
     warnings.extend(metrics.settling.not_judged_warnings());
     warnings.extend(filled_steady(&piece, settings.steady_window));

@@ -52,6 +52,7 @@ pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
 
 pub mod applicability;
 pub(crate) mod continuous;
+mod crossing_spread;
 mod divergence;
 mod filter;
 mod held;
@@ -304,6 +305,19 @@ pub struct StepMetrics {
     /// deviation over the same copies, percentage points of the step.
     #[serde(default)]
     pub yaw_rate_overshoot_spread: Option<f64>,
+    /// How far the run's own noise moves the yaw-rate response time: its
+    /// standard deviation over the peak's noisy copies (`crossing_spread.rs`),
+    /// s; `None` without noise (a simulation) or where most copies do not
+    /// cross.
+    #[serde(default)]
+    pub yaw_rate_response_time_spread: Option<f64>,
+    /// The same for the lateral acceleration's response time, s.
+    #[serde(default)]
+    pub ay_response_time_spread: Option<f64>,
+    /// How far the noise of the initial and steady means moves the
+    /// yaw-rate gain: its relative standard deviation (share of the gain).
+    #[serde(default)]
+    pub yaw_rate_gain_spread: Option<f64>,
     /// The yaw rate's largest value lies where the log does not measure it
     /// (samples masked and filled, a clipped flat top): peak time,
     /// overshoot and TB withheld, not below the threshold.

@@ -198,16 +198,26 @@ impl ChannelSettling {
         };
         // The yaw rate's spread or trend, a share of its step, is how far
         // the gain read from the window's mean may be off its steady state.
+        // A drift that does not slow has no steady state to be off from:
+        // its trend over one window bounds nothing (a yaw rate rising
+        // linearly after the step read "off by up to about 4.9 %" with the
+        // gain 28 % above the car's).
         let off = match self.yaw_rate {
-            Settling::NotSettled { beyond } => Some(beyond),
-            Settling::Drifting { heads, .. } => Some(heads),
+            Settling::NotSettled { beyond } => Some(Some(beyond)),
+            Settling::Drifting { heads, converging } => Some(converging.then_some(heads)),
             _ => None,
         };
         let gain = off.map_or(String::new(), |off| {
+            let bound = match off {
+                Some(off) => format!(
+                    "it may be off by up to about {} %",
+                    crate::format::significant(100.0 * off, 2)
+                ),
+                None => "and it drifts without slowing, so this record bounds neither where it settles nor whether it does".to_string(),
+            };
             format!(
-                "; the yaw-rate gain, {} 1/s, is no steady-state gain: read over a window its yaw rate still moves in, it may be off by up to about {} % (a longer record, held until the response settles, reads it)",
+                "; the yaw-rate gain, {} 1/s, is no steady-state gain: read over a window its yaw rate still moves in, {bound} (a longer record, held until the response settles, reads it)",
                 crate::format::fixed(gain, 4),
-                crate::format::significant(100.0 * off, 2)
             )
         });
         Some(format!(

@@ -86,6 +86,34 @@ impl BetaAgainstModel {
     }
 }
 
+/// Runs taken by the input checks beside runs they refused: their
+/// `beta`'s sign is judged against the base model's sideslip
+/// (`diagnose/base/beta_sign.rs`), fitted only once every run is taken, so
+/// it has not been judged yet. Said in the refusal of the others
+/// (fresh-eyes round 39: a yaw rate refused in one file, the user mended
+/// it and only then heard of the other file's negated `beta`). The
+/// sideslip has no kinematic sign test without the model (its sign
+/// against the yaw rate changes with speed and tyres).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BetaUnchecked {
+    /// The other runs with a `beta` (their files), after the first, which
+    /// the refusal is at.
+    pub others: Vec<String>,
+}
+
+impl std::fmt::Display for BetaUnchecked {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (whose, is) = match self.others.len() {
+            0 => (String::new(), "its sign is"),
+            _ => (
+                format!(" (and of {})", self.others.join(", ")),
+                "their signs are",
+            ),
+        };
+        write!(f, "taken, but its `beta`{whose} is not checked yet: {is} judged against the base model's sideslip, which is fitted only once every run is taken; mend the runs refused and rerun to have it checked (a `beta` in the other sign convention is refused then)")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

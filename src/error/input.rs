@@ -229,7 +229,7 @@ pub enum InputError {
     /// Several places of one file refused at once, in file order (built by
     /// [`InputError::all_of`]): a user mends them in one pass rather than
     /// one per run.
-    #[error("{path}: {} places refused, in file order:{}", errors.iter().map(|e| e.1).sum::<usize>() + more, listed(errors, *more, "places"))]
+    #[error("{path}: {} {}:{}", errors.iter().map(|e| e.1).sum::<usize>() + more, counted.refused(), listed(errors, *more, counted.noun()))]
     Several {
         /// The file.
         path: PathBuf,
@@ -241,6 +241,9 @@ pub enum InputError {
         errors: Vec<(InputError, usize)>,
         /// How many places the rules not shown refused.
         more: usize,
+        /// What each refusal is of: a place in the file, or a channel
+        /// (two dead sensors of a run said "2 places refused").
+        counted: Counted,
     },
     /// Runs of a campaign refused, every run checked before any was
     /// refused (built by [`InputError::runs_refused`]): a campaign of eight
@@ -261,6 +264,33 @@ pub enum InputError {
         /// How many runs the rules not shown refused.
         more: usize,
     },
+}
+
+/// What the refusals of an [`InputError::Several`] are each of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Counted {
+    /// A place in the file (a cell, a row, a header column).
+    Places,
+    /// A channel of a run, as a whole.
+    Channels,
+}
+
+impl Counted {
+    /// Its noun, plural.
+    fn noun(self) -> &'static str {
+        match self {
+            Counted::Places => "places",
+            Counted::Channels => "channels",
+        }
+    }
+
+    /// The heading's words after the count.
+    fn refused(self) -> &'static str {
+        match self {
+            Counted::Places => "places refused, in file order",
+            Counted::Channels => "channels refused",
+        }
+    }
 }
 
 /// The places an [`InputError::Several`] lists before it counts the rest.
@@ -316,6 +346,26 @@ impl InputError {
         })
     }
 
+    /// The runs a campaign so refused kept (passed its checks) and the run
+    /// files it read, where the refusal counts them: runs refused, too few
+    /// runs, a `min_speed` that removed them (a fleet row says them).
+    pub fn runs_counted(&self) -> Option<(usize, usize)> {
+        match self {
+            InputError::RunsRefused { refused, of, .. } => Some((of.saturating_sub(*refused), *of)),
+            InputError::Invalid { problem, .. } => match &**problem {
+                InputProblem::TooFewRuns { few } => Some((few.runs, few.files)),
+                InputProblem::Campaign(c) => match &**c {
+                    super::CampaignFileProblem::MinSpeedRemoved(p) => {
+                        Some((p.runs.len() - p.removed, p.runs.len()))
+                    }
+                    _ => None,
+                },
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
     /// The errors of `path` (in file order) as one: none, the one, or
     /// [`InputError::Several`] listing the first [`SEVERAL_SHOWN`].
     pub(crate) fn all_of(path: &std::path::Path, mut errors: Vec<InputError>) -> Option<Self> {
@@ -327,7 +377,24 @@ impl InputError {
             path: path.to_path_buf(),
             errors,
             more,
+            counted: Counted::Places,
         })
+    }
+
+    /// [`Self::all_of`] for refusals each of a whole channel of `path` (a
+    /// run's dead sensors): counted as channels.
+    pub(crate) fn all_channels_of(path: &std::path::Path, errors: Vec<InputError>) -> Option<Self> {
+        match Self::all_of(path, errors)? {
+            InputError::Several {
+                path, errors, more, ..
+            } => Some(InputError::Several {
+                path,
+                errors,
+                more,
+                counted: Counted::Channels,
+            }),
+            one => Some(one),
+        }
     }
 
     /// [`Self::all_of`] for errors gathered by several checks, put in file

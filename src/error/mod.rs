@@ -66,7 +66,7 @@ mod vehicle_limit;
 
 pub use bank_degrees::BankInDegrees;
 pub use bank_reversed::BankReversed;
-pub use beta_sign::{BetaAgainstModel, FilesAgainst};
+pub use beta_sign::{BetaAgainstModel, BetaUnchecked, FilesAgainst};
 pub use bottoming::{Bottoming, RimFrom};
 pub use camber::{MOST_CAMBER, STEEP_CAMBER};
 pub(crate) use campaign_file::folder_of;
@@ -84,12 +84,12 @@ pub use header_unit::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice
 pub use held_turn::{HeldTurn, HeldValue};
 pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
-pub use input::{CellProblem, InputError, Location};
+pub use input::{CellProblem, Counted, InputError, Location};
 pub use lateral_slope::{BetaInPercent, LateralSlope, SlopeUnit};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use long_replay::LongReplay;
 pub use metrics::{MetricsError, SteadyAdvice, HELD_STEP, MIN_STRAIGHT};
-pub use min_speed::MinSpeedRemoved;
+pub use min_speed::{MinSpeedRemoved, TooFewRuns};
 pub use missing_table::MissingTable;
 pub use none_with::NoneWithEffects;
 pub(crate) use number::hundredths_down;
@@ -103,9 +103,9 @@ pub use piece::{GapAt, PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
-    BeyondSignal, CampaignReason, CgTooLow, CurveFault, DeclaredHow, Limit, MassDigit,
-    NoLateralForce, NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn, SlowSteer,
-    Waveform, Wheelbase, DYNAMIC_INDEX, MAX_MIN_SPEED,
+    min_speed_checked, BeyondSignal, CampaignReason, CgTooLow, CurveFault, DeclaredHow, Limit,
+    MassDigit, NoLateralForce, NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn,
+    SlowSteer, Waveform, Wheelbase, DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use replay_run::ReplayRunProblem;
 pub use rig::{Variable, INFLATION_PRESSURES, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};

@@ -532,18 +532,15 @@ pub enum InputProblem {
         /// The fewest samples accepted.
         min_samples: usize,
     },
-    /// Fewer than two runs left for held-out scoring.
-    #[error("{} after checking ({kept} of {read} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)", if *runs == 1 { "1 run".to_string() } else { format!("{runs} runs") }, Num(*min_speed))]
+    /// Fewer than two runs left for held-out scoring (`min_speed.rs`).
+    #[error("{few}")]
     TooFewRuns {
-        /// Runs left.
-        runs: usize,
-        /// Samples kept.
-        kept: usize,
-        /// Samples read.
-        read: usize,
-        /// The speed threshold, m/s.
-        min_speed: f64,
+        /// The runs left and what the campaign can do about it.
+        few: Box<super::TooFewRuns>,
     },
+    /// A run taken beside runs refused, its `beta` not judged yet.
+    #[error("{0}")]
+    BetaUnchecked(super::BetaUnchecked),
     /// A campaign file that is no campaign, or lists its runs by a glob.
     #[error(transparent)]
     Campaign(Box<super::CampaignFileProblem>),

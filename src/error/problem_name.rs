@@ -73,6 +73,7 @@ impl InputProblem {
             InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
+            InputProblem::BetaUnchecked(_) => "BetaUnchecked",
             InputProblem::Kind(_) => "Kind",
             InputProblem::Scenario(_) => "Scenario",
         }

@@ -7,7 +7,7 @@ use super::options::{ModeError, OptionsError};
 pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
-pub use campaign::{CampaignReason, MAX_MIN_SPEED};
+pub use campaign::{min_speed_checked, CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, Wheelbase, DYNAMIC_INDEX};
 use no_grip::no_lateral_force;

@@ -7,8 +7,9 @@
 use super::number::Num;
 use thiserror::Error;
 
-/// The `fz` column changing sign on a good share of its samples beside an
-/// `fy` column positive throughout.
+/// The `fz` column shaped as a lateral force swept both ways (both signs,
+/// about symmetric, filling its range) beside an `fy` column shaped as
+/// loads (positive throughout, at levels).
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error("columns `fz` and `fy` look exchanged: `fz` changes sign ({negative} of its {samples} samples negative, from {} to {} N), as a lateral force does over a slip-angle sweep, while `fy` is positive throughout (from {} to {} N), as loads are: swap the two names in the header (loads are positive, FORMATS.md)", Num(fz.0), Num(fz.1), Num(fy.0), Num(fy.1))]
 pub struct LoadAndForceExchanged {
@@ -22,6 +23,8 @@ pub struct LoadAndForceExchanged {
     pub fy: (f64, f64),
 }
 
-/// The least share of negative loads read as an exchange: a few negative
-/// samples among positive ones are glitches, said each.
+/// The least share of the samples of each sign of an `fz` column read as
+/// a lateral force swept both ways (with the rest of the shape,
+/// `io/rig_exchanged.rs`): a few negative samples among positive ones are
+/// bad rows, said each at its cell.
 pub const EXCHANGED_SHARE: f64 = 0.1;

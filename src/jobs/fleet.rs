@@ -21,8 +21,8 @@ mod page;
 mod rows;
 pub use rows::FleetRow;
 use rows::{
-    confounded_with, distinct_diagnosed, first_of_its_runs, runs_digest, runs_folder_of,
-    shared_runs_notes,
+    confounded_with, distinct_diagnosed, failed_runs, first_of_its_runs, runs_digest,
+    runs_folder_of, shared_runs_notes,
 };
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -255,7 +255,7 @@ pub fn run_batch(
                 });
                 reports.push(r);
             }
-            Err(e) => rows.push(failed_row(name, &e)),
+            Err(e) => rows.push(failed_row(name, &all[i], &e)),
         }
     }
     if whole {
@@ -268,12 +268,15 @@ pub fn run_batch(
     Ok((reports, outcome))
 }
 
-/// The fleet row of a campaign `name` whose diagnosis failed with `e`.
-fn failed_row(name: String, e: &Error) -> FleetRow {
+/// The fleet row of a campaign `name` (at `path`) whose diagnosis failed
+/// with `e`, with the runs it kept and the run files it read where known.
+fn failed_row(name: String, path: &Path, e: &Error) -> FleetRow {
+    let (runs, runs_read) = failed_runs(path, e);
     FleetRow {
         campaign: name,
         name: None,
-        runs: 0,
+        runs,
+        runs_read,
         verdict: Vec::new(),
         kind: None,
         heldout_error_before: None,
@@ -375,6 +378,7 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         campaign: name.to_string(),
         name: (d.campaign != name).then(|| d.campaign.clone()),
         runs: d.runs.len(),
+        runs_read: Some(r.run_files),
         verdict: d.verdict.effects().to_vec(),
         kind: Some(d.verdict.kind()),
         heldout_error_before: Some(d.gap.heldout_error),
@@ -456,6 +460,7 @@ impl FleetReport {
             &[
                 "campaign",
                 "runs",
+                "runs_read",
                 "verdict",
                 "confounded_with",
                 "heldout_error_before",
@@ -472,6 +477,7 @@ impl FleetReport {
                 vec![
                     r.campaign.clone(),
                     r.runs.to_string(),
+                    r.runs_read.map_or_else(String::new, |n| n.to_string()),
                     joined(&r.verdict, "+"),
                     joined(&r.confounded_with, "+"),
                     number(r.heldout_error_before),

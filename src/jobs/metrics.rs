@@ -2,7 +2,7 @@
 //! first ([`crate::metrics::measured`]); and the metric table that
 //! `simulate` prints too.
 
-use crate::error::{Error, ParamError};
+use crate::error::Error;
 use crate::io::{read_run_reading, AngleColumn, DeclaredBy, Slip};
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
@@ -89,7 +89,8 @@ pub fn run_with_degrees(
     degrees: &[AngleColumn],
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
-    ParamError::finite("min_speed", min_speed)?;
+    // One range and one set of words with a campaign's `min_speed`.
+    crate::error::min_speed_checked(min_speed, crate::measured::clean::DEFAULT_MIN_SPEED, true)?;
     let (mut run, header) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
     let ay_column = body_ay::body_frame_ay(path, &mut run)?;

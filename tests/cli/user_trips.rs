@@ -298,9 +298,15 @@ fn metrics_windows_are_refused_with_their_values() {
         let e = metrics("--filter-hz", value);
         let expected = format!("invalid value '{value}' for '--filter-hz <FILTER_HZ>': a cut-off is a positive, finite frequency in Hz (0: unfiltered)");
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        // The lowest speed in the words of `--min-overshoot` and of a
+        // campaign's `min_speed` (round 39: a form of its own).
         let e = metrics("--min-speed", value);
-        let expected = format!("invalid value '{value}' for '--min-speed <MIN_SPEED>': the lowest speed kept is a speed of 0 to 150 m/s (no car runs faster)");
-        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        let expected =
+            "must lie in [0, 100]: it is the speed in m/s below which samples are left out as slow";
+        assert!(
+            e.contains("--min-speed: `min_speed` = ") && e.contains(expected),
+            "{e}"
+        );
     }
     let e = metrics("--filter-hz", "ten");
     assert!(e.contains("not a number (a cut-off is in Hz)"), "{e}");

@@ -24,30 +24,64 @@ pub enum CampaignReason {
     /// A `min_speed` outside `[0, MAX_MIN_SPEED]` (negative, not a
     /// number, or above: a speed in km/h, or a slip), m/s: said as the
     /// campaign file's other keys' ranges are, with a value to write.
-    #[error("{}", min_speed_range(*min_speed, *default))]
+    #[error("{}", min_speed_range(*min_speed, *default, *option))]
     MinSpeedRange {
         /// The value given, m/s.
         min_speed: f64,
         /// The default, advised where the value reads as no speed, m/s.
         default: f64,
+        /// Given as `metrics --min-speed` (else a campaign's key): the
+        /// value to write is said in that form.
+        option: bool,
     },
+}
+
+/// `min_speed` (m/s) refused outside `[0, MAX_MIN_SPEED]` as
+/// [`CampaignReason::MinSpeedRange`]: one range and one set of words for
+/// a campaign's `[diagnose] min_speed` and `metrics --min-speed` (which
+/// its parser refused in a form of its own, "the lowest speed kept is a
+/// speed of 0 to 150 m/s", fresh-eyes round 39), `option` saying which.
+pub fn min_speed_checked(
+    min_speed: f64,
+    default: f64,
+    option: bool,
+) -> Result<(), crate::error::ParamError> {
+    if (0.0..=MAX_MIN_SPEED).contains(&min_speed) {
+        return Ok(());
+    }
+    let reason = CampaignReason::MinSpeedRange {
+        min_speed,
+        default,
+        option,
+    };
+    let reason = super::ParamReason::Campaign(Box::new(reason));
+    Err(crate::error::ParamError::new(
+        "min_speed",
+        min_speed,
+        reason,
+    ))
 }
 
 /// The words of [`CampaignReason::MinSpeedRange`] for the value `v`, m/s:
 /// the range, why it ends where it does, and what to write (the value in
 /// km/h converted where it reads as one, else the `default`).
-fn min_speed_range(v: f64, default: f64) -> String {
+fn min_speed_range(v: f64, default: f64, option: bool) -> String {
     use crate::format::rounded;
+    let written = |v: &str| match option {
+        true => format!("`--min-speed {v}`"),
+        false => format!("`min_speed = {v}`"),
+    };
     let write = match v > MAX_MIN_SPEED && v / 3.6 <= MAX_MIN_SPEED {
         true => format!(
-            "the key is in m/s: is it in km/h? {} km/h is {} m/s: write `min_speed = {}`",
+            "the {} is in m/s: is it in km/h? {} km/h is {} m/s: write {}",
+            if option { "option" } else { "key" },
             rounded(v, 6),
             rounded(v / 3.6, 3),
-            rounded(v / 3.6, 3)
+            written(&rounded(v / 3.6, 3))
         ),
         false => format!(
-            "write a speed in m/s, such as `min_speed = {}` (the default)",
-            rounded(default, 3)
+            "write a speed in m/s, such as {} (the default)",
+            written(&rounded(default, 3))
         ),
     };
     format!(
@@ -71,6 +105,7 @@ mod tests {
             let e = CampaignReason::MinSpeedRange {
                 min_speed: v,
                 default: 5.0,
+                option: false,
             }
             .to_string();
             assert!(e.starts_with("must lie in [0, 100]: it is the speed in m/s below which samples are left out as slow"), "{e}");
@@ -78,6 +113,7 @@ mod tests {
         let km = CampaignReason::MinSpeedRange {
             min_speed: 200.0,
             default: 5.0,
+            option: false,
         }
         .to_string();
         assert!(
@@ -87,11 +123,20 @@ mod tests {
         let far = CampaignReason::MinSpeedRange {
             min_speed: 1000.0,
             default: 5.0,
+            option: false,
         }
         .to_string();
         assert!(
             far.ends_with("write a speed in m/s, such as `min_speed = 5` (the default)"),
             "{far}"
         );
+        // `metrics --min-speed` reads the same, with the option's form.
+        let e = min_speed_checked(200.0, 5.0, true).unwrap_err().to_string();
+        assert!(
+            e.starts_with("`min_speed` = 200: must lie in [0, 100]")
+                && e.ends_with("the option is in m/s: is it in km/h? 200 km/h is 55.6 m/s: write `--min-speed 55.6`"),
+            "{e}"
+        );
+        assert!(min_speed_checked(100.0, 5.0, true).is_ok());
     }
 }

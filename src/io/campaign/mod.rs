@@ -32,6 +32,7 @@
 mod ax_check;
 mod copies;
 mod degrees;
+mod few_runs;
 mod glob;
 mod kind;
 mod levelled;
@@ -165,9 +166,10 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));
     notes.extend(f.sensors.note());
     if runs.len() < 2 {
-        let min_speed = f.diagnose.min_speed;
-        let too_few = (runs.len(), &cleaning, &top_speeds[..]);
-        return Err(runs::too_few_runs(&src, &file, min_speed, too_few));
+        let read = (&runs[..], files.len(), &cleaning, &top_speeds[..]);
+        let folder = runs_folder(f.runs.as_ref(), &base, path, folder);
+        let at = (file.as_path(), folder);
+        return Err(few_runs::too_few_runs(&src, at, f.diagnose.min_speed, read));
     }
     let name = campaign_name(f.name.clone(), path);
     Ok(Campaign {
@@ -269,19 +271,10 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
             )
         })
         // One range for a negative, NaN and too high value alike.
-        .and_then(
-            |_| match (0.0..=crate::error::MAX_MIN_SPEED).contains(&s.min_speed) {
-                false => Err(ParamError::new(
-                    "min_speed",
-                    s.min_speed,
-                    ParamReason::Campaign(Box::new(CampaignReason::MinSpeedRange {
-                        min_speed: s.min_speed,
-                        default: crate::measured::clean::DEFAULT_MIN_SPEED,
-                    })),
-                )),
-                true => Ok(()),
-            },
-        )
+        .and_then(|_| {
+            let default = crate::measured::clean::DEFAULT_MIN_SPEED;
+            crate::error::min_speed_checked(s.min_speed, default, false)
+        })
         .and_then(|_| {
             ParamError::in_range(
                 "max_effects",

@@ -226,7 +226,7 @@ fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
         .iter()
         .map(|d| file_error(&run.path, d.problem()))
         .collect();
-    match InputError::all_of(&run.path, each) {
+    match InputError::all_channels_of(&run.path, each) {
         Some(e) => Err(e),
         None => Ok(()),
     }

@@ -286,32 +286,6 @@ fn file_lacking(
     }
 }
 
-/// The refusal of a campaign left with fewer than two runs, `(runs,
-/// cleaning, top speeds)`: at the stated `min_speed` (m/s) where it
-/// removed them, else in `file` with the counts. Apart from
-/// [`super::load_campaign`] so that it reads on a screen.
-pub(super) fn too_few_runs(
-    src: &TomlSource,
-    file: &Path,
-    min_speed: f64,
-    (runs, cleaning, top_speeds): (usize, &CleaningReport, &[(String, f64)]),
-) -> InputError {
-    let stated = src.key_span("diagnose.min_speed");
-    if let Some(p) = min_speed_removed(min_speed, stated.is_some(), top_speeds) {
-        let p = CampaignFileProblem::MinSpeedRemoved(p);
-        return src.located(stated, InputProblem::Campaign(Box::new(p)));
-    }
-    file_error(
-        file,
-        InputProblem::TooFewRuns {
-            runs,
-            kept: cleaning.samples_kept,
-            read: cleaning.samples_read,
-            min_speed,
-        },
-    )
-}
-
 /// Reads, checks, calibrates and cleans every run, cut into segments if
 /// asked; a run whose samples an earlier one holds is refused by
 /// `copied(earlier, run)` ([`refuse_copy`]).
@@ -380,7 +354,7 @@ pub(super) fn read_runs(
             }
         }
     }
-    let (refused, count) = in_degrees_refusal(refused, in_degrees, judged, files.len());
+    let (refused, count) = all_refused(refused, (in_degrees, judged), files.len(), &raw);
     if let Some(e) = InputError::runs_refused(refused, count, files.len()) {
         return Err(e);
     }
@@ -393,6 +367,52 @@ pub(super) fn read_runs(
     notes.extend(roll_note);
     notes.extend(absent_notes(absent, files.len())?);
     Ok((runs, notes, cleaning, calibrate(&raw), top_speeds(&raw)))
+}
+
+/// The refusals of the runs (`refused`, with the runs in degrees and how
+/// the others were `judged`, [`in_degrees_refusal`]) of the `of` run
+/// files, and how many runs they stand for; with them, where one is of a
+/// sign, the note that the `beta` of the runs taken (`raw`) is not checked
+/// yet: that check needs the base model fitted to every run, and a second
+/// sign slip was heard only once the first was mended (round 39).
+fn all_refused(
+    refused: Vec<(usize, InputError)>,
+    (in_degrees, judged): (Vec<(usize, Box<SteerInDegrees>)>, Judged),
+    of: usize,
+    raw: &[MeasuredRun],
+) -> (Vec<InputError>, usize) {
+    let (mut refused, count) = in_degrees_refusal(refused, in_degrees, judged, of);
+    if refused.iter().any(sign_refused) {
+        refused.extend(beta_unchecked(raw));
+    }
+    (refused, count)
+}
+
+/// Whether refusal `e` (or one it lists) is of a channel in another sign
+/// convention: a yaw rate against the steer, an `ay` reversed.
+fn sign_refused(e: &InputError) -> bool {
+    match e {
+        InputError::Invalid { problem, .. } => matches!(
+            **problem,
+            InputProblem::YawAgainstSteer { .. }
+                | InputProblem::UnitSlip(crate::error::UnitSlip::AyReversed(_))
+        ),
+        InputError::Several { errors, .. } | InputError::RunsRefused { errors, .. } => {
+            errors.iter().any(|(e, _)| sign_refused(e))
+        }
+        _ => false,
+    }
+}
+
+/// The note, among the refusals, that the `beta` of the runs taken
+/// (`raw`) is not checked yet ([`crate::error::BetaUnchecked`]), at the
+/// first of them; None where none logs `beta`.
+fn beta_unchecked(raw: &[MeasuredRun]) -> Option<InputError> {
+    let mut with = raw.iter().filter(|r| r.beta.is_some());
+    let first = with.next()?;
+    let others = with.map(|r| r.path.display().to_string()).collect();
+    let problem = InputProblem::BetaUnchecked(crate::error::BetaUnchecked { others });
+    Some(file_error(&first.path, problem))
 }
 
 /// The pieces cut into segments so far: the longest (s, said when none
@@ -492,29 +512,6 @@ fn top_speeds(raw: &[MeasuredRun]) -> Vec<(String, f64)> {
             (r.path.display().to_string(), top)
         })
         .collect()
-}
-
-/// The refusal of a `min_speed` (m/s, `stated` or the default) above the
-/// `top` speed of all runs but at most one, with a threshold that keeps
-/// every run: half the slowest run's top speed, at most the default.
-pub(super) fn min_speed_removed(
-    min_speed: f64,
-    stated: bool,
-    top: &[(String, f64)],
-) -> Option<crate::error::MinSpeedRemoved> {
-    let removed = top.iter().filter(|(_, v)| *v < min_speed).count();
-    if removed == 0 || top.len() - removed >= 2 {
-        return None;
-    }
-    let slowest = top.iter().map(|(_, v)| *v).fold(f64::INFINITY, f64::min);
-    let half = (5.0 * slowest).floor() / 10.0;
-    Some(crate::error::MinSpeedRemoved {
-        min_speed,
-        stated,
-        runs: top.to_vec(),
-        removed,
-        suggested: half.min(crate::measured::clean::DEFAULT_MIN_SPEED),
-    })
 }
 
 /// The note of a `segment` (s) that cut no piece, the `longest` lasting

@@ -21,7 +21,7 @@ fn row_cells(r: &FleetRow) -> Vec<Cell> {
     };
     vec![
         report,
-        Cell::Number(r.runs.to_string()),
+        Cell::Number(runs_words(r)),
         Cell::Text(r.verdict_words(" + ")),
         Cell::Text(if r.confounded_with.is_empty() {
             "—".into()
@@ -37,6 +37,20 @@ fn row_cells(r: &FleetRow) -> Vec<Cell> {
         ),
         Cell::Text(if r.failed { "FAILED: " } else { "" }.to_string() + &r.statement),
     ]
+}
+
+/// The runs cell: the runs replayed (kept, for a failed campaign), with
+/// the run files read where they differ ("1 of 2 files", "12 from 3
+/// files": segments), "—" where neither is known.
+fn runs_words(r: &FleetRow) -> String {
+    match r.runs_read {
+        None if r.failed && r.runs == 0 => "—".to_string(),
+        Some(read) if read != r.runs => {
+            let of = if r.runs < read { "of" } else { "from" };
+            format!("{} {of} {read} files", r.runs)
+        }
+        _ => r.runs.to_string(),
+    }
 }
 
 impl FleetReport {

@@ -21,8 +21,14 @@ pub struct FleetRow {
     /// the table says both.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
-    /// Runs replayed (pieces after cleaning), 0 when it failed.
+    /// Runs replayed (pieces after cleaning); for a failed campaign the
+    /// runs its checks kept where its failure says them (0 unknown: round
+    /// 39's fleet said 0 for a campaign of 8 runs refused on a sign).
     pub runs: usize,
+    /// The run files read (None: a campaign that failed before reading
+    /// them, or not known).
+    #[serde(default)]
+    pub runs_read: Option<usize>,
     /// Effects of the verdict (empty: no gap, or none explains it).
     pub verdict: Vec<EffectKind>,
     /// The verdict's case (None: failed).
@@ -136,6 +142,22 @@ pub(super) fn runs_digest(folder: &Path) -> Option<String> {
     digests.sort_unstable();
     let all: Vec<u8> = digests.iter().flat_map(|d| d.to_le_bytes()).collect();
     Some(format!("{:016x}", digest(&all)))
+}
+
+/// The runs a failed campaign (at `campaign`, failing with `e`) kept and
+/// the run files it read: as its refusal counts them (runs refused, too
+/// few runs), else as the campaign loads (a failure after loading, such
+/// as a `beta` against the base model), else unknown (0, None).
+pub(super) fn failed_runs(campaign: &Path, e: &crate::error::Error) -> (usize, Option<usize>) {
+    if let crate::error::Error::Input(i) = e {
+        if let Some((kept, read)) = i.runs_counted() {
+            return (kept, Some(read));
+        }
+    }
+    match crate::io::campaign::load_campaign(campaign) {
+        Ok(c) => (c.runs.len(), Some(c.run_files)),
+        Err(_) => (0, None),
+    }
 }
 
 /// Whether rows `a` and `b` read the same runs: one folder, or run files

@@ -117,6 +117,16 @@ class StepMetrics:
     yaw_rate_overshoot_spread: Optional[float]
     """How far the run's own noise moves the overshoot: its standard
     deviation over the same copies, percentage points (an upper estimate)."""
+    yaw_rate_response_time_spread: Optional[float]
+    """How far the run's own noise moves the yaw-rate response time: its
+    standard deviation over the peak's noisy copies, the initial and steady
+    means' noise in their 90 % level, s (None without noise, or where most
+    copies do not cross)."""
+    ay_response_time_spread: Optional[float]
+    """The same for the ``ay`` response time, s."""
+    yaw_rate_gain_spread: Optional[float]
+    """How far the noise of the initial and steady means moves the yaw-rate
+    gain: its relative standard deviation (share of the gain)."""
     yaw_rate_peak_unmeasured: bool
     """Whether the yaw-rate maximum lies on samples the log does not measure
     (masked and filled by the cleaning, a clipped flat top, a hole in

@@ -39,6 +39,8 @@ use super::MeasuredRun;
 use crate::constants::G;
 use serde::Serialize;
 
+pub use super::road_apart::{BankApart, BySpeed};
+
 /// An angle in rad as degrees to one decimal, never "-0.0".
 fn deg(a: f64) -> String {
     crate::format::fixed(a.to_degrees(), 1)
@@ -173,49 +175,6 @@ pub const SPEED_SPREAD: f64 = 1.25;
 /// they do not show: the 0.086 m/s² of `ay` it takes is above an
 /// accelerometer's scatter over the 1 s average (0.05 m/s² a sample).
 pub const APART_BANK: f64 = 0.5 * std::f64::consts::PI / 180.0;
-
-/// The estimated bank over a run's slower and faster halves (split at its
-/// median speed), their median speeds (m/s) and banks (rad).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct BySpeed {
-    /// Median speed of the slower half, m/s.
-    pub slow_speed: f64,
-    /// Median estimated bank there, rad.
-    pub slow_bank: f64,
-    /// Median speed of the faster half, m/s.
-    pub fast_speed: f64,
-    /// Median estimated bank there, rad.
-    pub fast_bank: f64,
-}
-
-impl BySpeed {
-    /// Which the halves read as: a bank that scales with the speed (a
-    /// yaw-rate offset's `−u·b_r/g`) or one that does not (a bank, an
-    /// `ay` offset), by the nearer of the two in the log of the ratio.
-    pub fn scales_with_speed(&self) -> bool {
-        let banks = (self.fast_bank / self.slow_bank).abs().ln();
-        let speeds = (self.fast_speed / self.slow_speed).ln();
-        self.fast_bank * self.slow_bank > 0.0 && (banks - speeds).abs() < banks.abs()
-    }
-}
-
-/// A run's estimated bank that the campaign's other runs do not show: on
-/// one run's kinematics a steady bank θ, an `ay` offset `g·sin θ` and a
-/// yaw-rate offset `−g·sin θ/u` read alike (`a_y − u·r = g·sin θ`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct BankApart {
-    /// The run's median estimated bank, rad.
-    pub bank: f64,
-    /// The median of the other runs' medians, rad.
-    pub others: f64,
-    /// The other runs.
-    pub other_runs: usize,
-    /// The `ay` offset that reads as it, m/s²: `g·sin(bank − others)`.
-    pub ay_offset: f64,
-    /// The yaw-rate offset that reads as it at the run's median speed,
-    /// rad/s: `−ay_offset/u`.
-    pub yaw_rate_offset: f64,
-}
 
 impl RoadGeometry {
     /// The road under `run`, named `name`, a bank estimated with the
@@ -352,7 +311,7 @@ impl RoadGeometry {
             _ => "",
         };
         let apart = match self.apart {
-            Some(a) if lateral => super::road_words::apart(&a, self.speed, self.by_speed),
+            Some(a) if lateral => super::road_apart::apart(&a, self.speed, self.by_speed),
             _ => String::new(),
         };
         format!(

@@ -40,11 +40,7 @@ pub(super) fn channel(f: &GapFinding) -> String {
     else {
         return String::new();
     };
-    let before_part = Part::Window(Window::BeforeInput);
-    // Right before the input for every run, not pooled only: a run off
-    // there is a zero offset of its own.
-    let before =
-        right.contains(&before_part) && !off_in_right.iter().any(|o| o.part == before_part);
+    let before = right_before_input(right, off_in_right);
     let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel, before));
     let which = if *significant_runs == significant_in.len() {
         runs_named(*channel, *noise_floor, (significant_in, within_in), *runs)
@@ -69,14 +65,12 @@ pub(super) fn channel(f: &GapFinding) -> String {
         } else {
             parts(wrong)
         };
+        let right = right
+            .iter()
+            .map(|p| right_but(*p, off_in_right, *noise_floor));
         format!(
             "{head}; wrong in: {wrong}; right in: {}",
-            listed(
-                right
-                    .iter()
-                    .map(|p| right_but(*p, off_in_right, *noise_floor))
-                    .collect()
-            ),
+            listed(right.collect())
         )
     } else if let Some(c) = combined {
         within_combined(
@@ -105,6 +99,14 @@ pub(super) fn channel(f: &GapFinding) -> String {
         )
     };
     place + &said
+}
+
+/// Whether the channel is right before the input for every run, not
+/// pooled only (`right`, and no run of `off` off there): a run off there
+/// has a zero offset of its own.
+fn right_before_input(right: &[Part], off: &[OffInRight]) -> bool {
+    let before = Part::Window(Window::BeforeInput);
+    right.contains(&before) && !off.iter().any(|o| o.part == before)
 }
 
 /// A part the pooled RMS calls right, with the runs above three noise

@@ -378,14 +378,11 @@ fn notes_of(
 /// Each replayed piece's road: bank and grade as logged or derived, with
 /// the sensor offsets the standstills and straights measured removed.
 fn roads(c: &Campaign, ctx: &Context) -> Vec<RoadGeometry> {
-    c.runs
-        .iter()
-        .zip(&ctx.runs)
-        .map(|(m, r)| {
-            let ahead = c.sensors.beta_ahead_of_accelerometer();
-            RoadGeometry::of(&r.name, m, offsets(&ctx.calibrated), ahead)
-        })
-        .collect()
+    let each = c.runs.iter().zip(&ctx.runs).map(|(m, r)| {
+        let ahead = c.sensors.beta_ahead_of_accelerometer();
+        RoadGeometry::of(&r.name, m, offsets(&ctx.calibrated), ahead)
+    });
+    RoadGeometry::set_apart(each.collect())
 }
 
 /// The candidates the runs can see and the notes on those they cannot; a

@@ -13,6 +13,7 @@ pub mod calibration;
 pub mod clean;
 pub(crate) mod derivative;
 pub(crate) mod road;
+mod road_apart;
 mod road_words;
 
 use std::path::PathBuf;

@@ -39,6 +39,8 @@ use super::MeasuredRun;
 use crate::constants::G;
 use serde::Serialize;
 
+pub use super::road_apart::{BankApart, BySpeed};
+
 /// An angle in rad as degrees to one decimal, never "-0.0".
 fn deg(a: f64) -> String {
     crate::format::fixed(a.to_degrees(), 1)
@@ -149,7 +151,30 @@ pub struct RoadGeometry {
     pub bank: Option<AngleProfile>,
     /// Grade (positive: uphill); None without `ax`.
     pub grade: Option<AngleProfile>,
+    /// The run's median speed, m/s (kept samples; NaN without any).
+    pub speed: f64,
+    /// The estimated bank over the run's slower and faster halves (None:
+    /// its speed varies by less than [`SPEED_SPREAD`], a bank measured,
+    /// or too few samples): a yaw-rate offset reads as a bank that grows
+    /// with speed, a bank and an `ay` offset do not.
+    pub by_speed: Option<BySpeed>,
+    /// An estimated bank that is a steady value the campaign's other runs
+    /// do not show (set over the campaign, [`RoadGeometry::set_apart`]):
+    /// what it would be as a bank, an `ay` offset or a yaw-rate offset.
+    pub apart: Option<BankApart>,
 }
+
+/// A run's speed varies enough to split at the median when its 95th
+/// percentile over its 5th exceeds this ratio: a yaw-rate offset's bank
+/// then differs between the halves by about this much, beyond the
+/// sensors' noise over a 1 s average.
+pub const SPEED_SPREAD: f64 = 1.25;
+
+/// An estimated bank whose 5–95 % range lies this far (rad, 0.5°) or more
+/// from the campaign's other runs' median on one side is a steady value
+/// they do not show: the 0.086 m/s² of `ay` it takes is above an
+/// accelerometer's scatter over the 1 s average (0.05 m/s² a sample).
+pub const APART_BANK: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 impl RoadGeometry {
     /// The road under `run`, named `name`, a bank estimated with the
@@ -190,9 +215,59 @@ impl RoadGeometry {
                     beta: beta_offset(run, offsets),
                     ..offsets
                 }),
+            by_speed: match (&run.bank, &run.ay) {
+                (None, Some(ay)) => by_speed(run, &bank_estimate(run, ay, offsets)),
+                _ => None,
+            },
+            speed: median_speed(run),
             bank,
             grade,
+            apart: None,
         }
+    }
+
+    /// Marks the runs of a campaign (`roads`) whose estimated bank is a
+    /// steady value the others do not show ([`BankApart`]): its 5–95 %
+    /// range [`APART_BANK`] or more to one side of the median of the
+    /// other runs' medians, of two other runs or more.
+    pub fn set_apart(mut roads: Vec<RoadGeometry>) -> Vec<RoadGeometry> {
+        let medians: Vec<Option<f64>> = roads
+            .iter()
+            .map(|g| g.estimated_bank().map(|b| b.median))
+            .collect();
+        for (i, g) in roads.iter_mut().enumerate() {
+            let mut others: Vec<f64> = medians
+                .iter()
+                .enumerate()
+                .filter_map(|(j, m)| (j != i).then_some(*m).flatten())
+                .collect();
+            let Some(b) = g.estimated_bank().copied() else {
+                continue;
+            };
+            if others.len() < 2 || g.speed.is_nan() || g.speed <= 0.0 {
+                continue;
+            }
+            others.sort_by(f64::total_cmp);
+            let o = quantile(&others, 0.5).expect("two runs or more");
+            if b.p05 - o >= APART_BANK || o - b.p95 >= APART_BANK {
+                let ay_offset = G * (b.median - o).sin();
+                g.apart = Some(BankApart {
+                    bank: b.median,
+                    others: o,
+                    other_runs: others.len(),
+                    ay_offset,
+                    yaw_rate_offset: -ay_offset / g.speed,
+                });
+            }
+        }
+        roads
+    }
+
+    /// The bank, where estimated (not measured).
+    fn estimated_bank(&self) -> Option<&AngleProfile> {
+        self.bank
+            .as_ref()
+            .filter(|b| b.source != AngleSource::Measured)
     }
 
     /// One angle in words. An estimate's extremes are its worst samples (a
@@ -235,8 +310,12 @@ impl RoadGeometry {
             }
             _ => "",
         };
+        let apart = match self.apart {
+            Some(a) if lateral => super::road_apart::apart(&a, self.speed, self.by_speed),
+            _ => String::new(),
+        };
         format!(
-            "{what} {}{offsets} {}° to {}° (5–95 %; median {}°){caveat}",
+            "{what} {}{offsets} {}° to {}° (5–95 %; median {}°){caveat}{apart}",
             p.source.words(),
             deg(p.p05),
             deg(p.p95),
@@ -363,6 +442,61 @@ fn smooth(t: &[f64], v: &[f64], masked: &[usize]) -> Vec<f64> {
             }
         })
         .collect()
+}
+
+/// The median speed of `run`'s kept samples, m/s (NaN without any).
+fn median_speed(run: &MeasuredRun) -> f64 {
+    let mut u: Vec<f64> = kept(&run.speed, &run.masked);
+    u.sort_by(f64::total_cmp);
+    quantile(&u, 0.5).unwrap_or(f64::NAN)
+}
+
+/// The finite values of `v` not at a `masked` index.
+fn kept(v: &[f64], masked: &[usize]) -> Vec<f64> {
+    v.iter()
+        .enumerate()
+        .filter(|(k, x)| x.is_finite() && masked.binary_search(k).is_err())
+        .map(|(_, x)| *x)
+        .collect()
+}
+
+/// The estimated `bank` (rad per sample) of `run` over its slower and
+/// faster halves, split at its median speed, where its speed varies by
+/// [`SPEED_SPREAD`] or more (at least ten kept samples a half).
+fn by_speed(run: &MeasuredRun, bank: &[f64]) -> Option<BySpeed> {
+    let pairs: Vec<(f64, f64)> = (0..run.t.len())
+        .filter(|k| run.masked.binary_search(k).is_err())
+        .map(|k| (run.speed[k], bank[k]))
+        .filter(|(u, b)| u.is_finite() && b.is_finite())
+        .collect();
+    let mut u: Vec<f64> = pairs.iter().map(|p| p.0).collect();
+    u.sort_by(f64::total_cmp);
+    let (lo, mid, hi) = (quantile(&u, 0.05)?, quantile(&u, 0.5)?, quantile(&u, 0.95)?);
+    if lo.is_nan() || lo <= 0.0 || hi / lo < SPEED_SPREAD {
+        return None;
+    }
+    let half = |slow: bool| -> Option<(f64, f64)> {
+        let mut side: Vec<(f64, f64)> = pairs
+            .iter()
+            .copied()
+            .filter(|p| (p.0 < mid) == slow)
+            .collect();
+        if side.len() < 10 {
+            return None;
+        }
+        let mut us: Vec<f64> = side.iter().map(|p| p.0).collect();
+        us.sort_by(f64::total_cmp);
+        side.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let bs: Vec<f64> = side.iter().map(|p| p.1).collect();
+        Some((quantile(&us, 0.5)?, quantile(&bs, 0.5)?))
+    };
+    let ((slow_speed, slow_bank), (fast_speed, fast_bank)) = (half(true)?, half(false)?);
+    Some(BySpeed {
+        slow_speed,
+        slow_bank,
+        fast_speed,
+        fast_bank,
+    })
 }
 
 /// The summary of an angle series over its kept, finite samples.

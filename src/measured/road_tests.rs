@@ -241,3 +241,90 @@ fn with_beta(run: &MeasuredRun) -> Option<Vec<f64>> {
     };
     Some(run.t.iter().map(|&t| -0.02 * lag(t)).collect())
 }
+
+/// A straight on flat ground at `speed(t)` m/s for 20 s (100 Hz), its
+/// yaw rate reading `yaw_offset` rad/s and its ay `ay_offset` m/s²
+/// besides, no sideslip column.
+fn straight(
+    name: &str,
+    speed: impl Fn(f64) -> f64,
+    yaw_offset: f64,
+    ay_offset: f64,
+) -> RoadGeometry {
+    let n = 2001;
+    let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+    let u: Vec<f64> = t.iter().map(|&t| speed(t)).collect();
+    let run =
+        MeasuredRun::new(name, t, u, vec![0.0; n], vec![yaw_offset; n]).with_ay(vec![ay_offset; n]);
+    RoadGeometry::of(name, &run, SensorOffsets::default(), 0.0)
+}
+
+/// Round 39: one run's yaw rate +0.02 rad/s on flat ground read as a bank
+/// of −2.0°. Of three runs at 16.67 m/s, the one with the offset is set
+/// apart, its bank `asin(−u·0.02/g)`, its ay offset `−u·0.02` and its
+/// yaw-rate offset 0.02 given back exactly; the two others are not, nor
+/// any of two runs alone (no "others" to differ from).
+#[test]
+fn a_bank_no_other_run_shows_is_set_apart_with_the_offsets_it_reads_as() {
+    let u = 60.0 / 3.6;
+    let roads = RoadGeometry::set_apart(vec![
+        straight("a", |_| u, 0.0, 0.0),
+        straight("b", |_| u, 0.02, 0.0),
+        straight("c", |_| u, 0.0, 0.0),
+    ]);
+    assert_eq!((roads[0].apart, roads[2].apart), (None, None));
+    let a = roads[1].apart.unwrap();
+    assert!((a.bank - (-u * 0.02 / G).asin()).abs() < 1e-12, "{a:?}");
+    assert!((a.ay_offset + u * 0.02).abs() < 1e-12, "{a:?}");
+    assert!((a.yaw_rate_offset - 0.02).abs() < 1e-12, "{a:?}");
+    assert_eq!((a.others, a.other_runs), (0.0, 2));
+    // At one speed: no halves to tell a yaw-rate offset by.
+    assert_eq!(roads[1].by_speed, None);
+    let line = roads[1].line().unwrap();
+    assert!(line.contains("a steady -1.9° that the other 2 runs do not show (their median 0.0°): a bank of -1.9°, an ay offset of -0.333 m/s² or a yaw-rate offset of +0.0200 rad/s at its 16.7 m/s read alike in one run's ay − u·r; at one speed the run cannot tell them apart"), "{line}");
+    // 0.4° off (an ay offset of 0.068 m/s²): within APART_BANK, not apart.
+    let small = 9.81 * 0.4f64.to_radians().sin();
+    let roads = RoadGeometry::set_apart(vec![
+        straight("a", |_| u, 0.0, 0.0),
+        straight("b", |_| u, 0.0, small),
+        straight("c", |_| u, 0.0, 0.0),
+    ]);
+    assert_eq!(roads[1].apart, None);
+    let two = RoadGeometry::set_apart(vec![
+        straight("a", |_| u, 0.0, 0.0),
+        straight("b", |_| u, 0.02, 0.0),
+    ]);
+    assert_eq!((two[0].apart, two[1].apart), (None, None));
+}
+
+/// Over a run whose speed rises from 10 to 30 m/s a yaw-rate offset's
+/// apparent bank grows with the speed (`−u·b_r/g`), an ay offset's does
+/// not: the halves tell them apart, and the line says which.
+#[test]
+fn a_run_over_speeds_tells_a_yaw_rate_offset_from_an_ay_offset() {
+    let rising = |t: f64| 10.0 + t;
+    let flat = |_| 20.0;
+    let yaw = RoadGeometry::set_apart(vec![
+        straight("a", flat, 0.0, 0.0),
+        straight("b", rising, 0.02, 0.0),
+        straight("c", flat, 0.0, 0.0),
+    ]);
+    let b = yaw[1].by_speed.unwrap();
+    assert!(b.fast_speed > 1.5 * b.slow_speed, "{b:?}");
+    assert!(b.scales_with_speed(), "{b:?}");
+    assert!(yaw[1]
+        .line()
+        .unwrap()
+        .contains("growing with the speed as a yaw-rate offset's does"));
+    let ay = RoadGeometry::set_apart(vec![
+        straight("a", flat, 0.0, 0.0),
+        straight("b", rising, 0.0, 0.3),
+        straight("c", flat, 0.0, 0.0),
+    ]);
+    let b = ay[1].by_speed.unwrap();
+    assert!(!b.scales_with_speed(), "{b:?}");
+    assert!((ay[1].apart.unwrap().ay_offset - 0.3).abs() < 1e-9);
+    assert!(ay[1].line().unwrap().contains(
+        "not growing with the speed as a yaw-rate offset's would: a bank or an ay offset"
+    ));
+}

@@ -440,7 +440,11 @@ class Verdict:
     ``causes``; ``gap_remains`` with ``heldout_error_after``,
     ``noise_level``, ``threshold``, ``left_percent`` and ``carried_by``
     (``channel``, ``share_percent``, ``causes_named``, ``causes``,
-    ``noise_floor``, or null where no one channel carries what is left); ``tyres_far_from_load`` with ``front``, ``rear``; or
+    ``noise_floor``, or null where no one channel carries what is left)
+    and ``runs_carrying`` (``carried_by``: the run, or two, holding more
+    than two thirds of ``J² − J_n²``, each ``run``, ``share_percent``,
+    ``heldout_error``, empty where it is spread over the runs;
+    ``above_noise``, ``runs``, ``largest``; or null); ``tyres_far_from_load`` with ``front``, ``rear``; or
     ``on_search_bound`` with ``parameters``). ``causes`` lists
     what the report holds elsewhere about the channel, each with ``kind``:
     ``beta_against`` (``file``, ``correlation``), ``run_carries``

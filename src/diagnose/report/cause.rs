@@ -7,7 +7,8 @@
 //! most of the gap the effects leave (the held-out table's runs), the base
 //! model's steady offset in the channel (the gap's finding); and where a
 //! gap the effects leave is carried by one channel (the gap's shares),
-//! which. Without them
+//! which, and the run (or two) holding most of that gap over all
+//! channels ([`super::runs_left`]). Without them
 //! "another cause (a model-form error …, or this channel's sensor)" points
 //! nowhere while the report's top names the run (round 38: one run's
 //! `beta` negated, its note at −0.88, the warning silent on it).
@@ -28,6 +29,13 @@ use crate::diagnose::report::{GapReport, Part, Shrinkage};
 /// table), and the channel that carries what a gap it leaves holds (the
 /// gap's shares).
 pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
+    if let Verdict::OutsideLibrary(o) = verdict {
+        // The verdict's gap is the base model's: its parts' `after` are
+        // its `before` (no effects).
+        o.bearing = beta_against(notes);
+        o.runs_carrying = super::runs_left::runs_carrying(&gap.parts, &gap.noise, o.noise_level);
+        return;
+    }
     let Verdict::Explained(e) = verdict else {
         return;
     };
@@ -49,7 +57,14 @@ pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
         }
     }
     for w in &mut e.warnings {
-        if let VerdictWarning::GapRemains { carried_by, .. } = w {
+        if let VerdictWarning::GapRemains {
+            carried_by,
+            runs_carrying,
+            noise_level,
+            ..
+        } = w
+        {
+            *runs_carrying = super::runs_left::runs_carrying(&gap.parts, &gap.noise, *noise_level);
             *carried_by = carrying(&gap.channel_shares).map(|(channel, share_percent)| {
                 let causes_named = named.contains(&channel);
                 // A channel no warning names: what the report holds about
@@ -100,15 +115,7 @@ pub(crate) fn causes_of(
 ) -> Vec<ChannelCause> {
     let mut out: Vec<ChannelCause> = Vec::new();
     if channel == Channel::Beta {
-        out.extend(notes.iter().filter_map(|n| match n {
-            Note::BetaAgainstInFile {
-                file, correlation, ..
-            } => Some(ChannelCause::BetaAgainst {
-                file: file.clone(),
-                correlation: *correlation,
-            }),
-            _ => None,
-        }));
+        out.extend(beta_against(notes));
     }
     let all = parts
         .iter()
@@ -123,6 +130,22 @@ pub(crate) fn causes_of(
         _ => None,
     }));
     out
+}
+
+/// The files whose β moves against the model's, from the `notes`.
+fn beta_against(notes: &[Note]) -> Vec<ChannelCause> {
+    notes
+        .iter()
+        .filter_map(|n| match n {
+            Note::BetaAgainstInFile {
+                file, correlation, ..
+            } => Some(ChannelCause::BetaAgainst {
+                file: file.clone(),
+                correlation: *correlation,
+            }),
+            _ => None,
+        })
+        .collect()
 }
 
 /// The run of a channel's all-samples row `row` that carries more than
@@ -241,6 +264,7 @@ mod tests {
             runs: 8,
             wrong: Vec::new(),
             right: Vec::new(),
+            off_in_right: Vec::new(),
             offset: Some(offset),
             combined: None,
         };

@@ -57,6 +57,8 @@ enum Details<'a> {
         threshold_percent: f64,
         tyre_class: Option<&'a ClassMismatch>,
         narrowed: Option<&'a Narrowed>,
+        bearing: &'a [crate::diagnose::report::outcome::ChannelCause],
+        runs_carrying: Option<&'a crate::diagnose::report::outcome::RunsCarrying>,
     },
 }
 
@@ -129,6 +131,8 @@ impl Serialize for Verdict {
                     threshold_percent: o.threshold_percent,
                     tyre_class: o.tyre_class.as_ref(),
                     narrowed: o.narrowed.as_ref(),
+                    bearing: &o.bearing,
+                    runs_carrying: o.runs_carrying.as_ref(),
                 },
             ),
         };

@@ -14,6 +14,7 @@ mod narrowed;
 pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
+pub(crate) mod runs_left;
 pub mod separating;
 pub mod shares;
 pub(crate) mod summary;

@@ -309,6 +309,14 @@ pub struct OutsideLibrary {
     /// The campaign's `[diagnose] effects` where it left effects of the
     /// library untried (None: the whole library was tried).
     pub narrowed: Option<Narrowed>,
+    /// The notes on the inputs that bear on the gap (a file whose
+    /// sideslip moves against the base model's; filled once the notes are
+    /// made, `report::cause::point`): an effect outside the library, or
+    /// that file.
+    pub bearing: Vec<ChannelCause>,
+    /// The run (or two) holding most of the base model's gap above noise,
+    /// or that it is spread over the runs (None: fewer than two runs).
+    pub runs_carrying: Option<RunsCarrying>,
 }
 
 /// A candidate that is not the verdict, and why.
@@ -406,6 +414,10 @@ pub enum VerdictWarning {
         /// once they are made, `report::cause::point`): where the further
         /// cause lies.
         carried_by: Option<CarriedBy>,
+        /// The run (or two) holding most of what the effects leave, or
+        /// that it is spread over the runs (filled with `carried_by`; None
+        /// without two runs or the parts to split).
+        runs_carrying: Option<RunsCarrying>,
     },
 }
 
@@ -414,7 +426,7 @@ mod channel;
 mod note;
 pub use crate::error::Unseen;
 pub use change::{above_noise, ChannelChange, SIGNIFICANT_NOISE_FLOORS, WORSENED};
-pub use channel::{CarriedBy, ChannelCause, ChannelLeft, ChannelWorsened};
+pub use channel::{CarriedBy, ChannelCause, ChannelLeft, ChannelWorsened, RunShare, RunsCarrying};
 pub use note::{Note, VehicleLimit};
 
 /// A finding on where the base model's gap lies.
@@ -454,6 +466,11 @@ pub enum GapFinding {
         wrong: Vec<(Part, f64)>,
         /// Parts within three noise floors.
         right: Vec<Part>,
+        /// The runs above three noise floors in a part of `right` (pooled,
+        /// the others drown them): such a part is said right but for them
+        /// (round 39: one run's yaw rate +0.02 rad/s, 6.5 floors before
+        /// its input, under "right in: before the input").
+        off_in_right: Vec<OffInRight>,
         /// A residual mean of one sign over the runs, at least a noise
         /// floor ([`SteadyOffset::of`]): a sensor offset or a bias of the
         /// model that an RMS against three noise floors does not single out.
@@ -507,6 +524,19 @@ pub enum GapFinding {
         /// All runs.
         of: usize,
     },
+}
+
+/// A run whose held-out RMS with the base model lies above three noise
+/// floors ([`SIGNIFICANT_NOISE_FLOORS`]) in a part that is within them
+/// pooled over the runs ([`GapFinding::Channel`]'s `right`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OffInRight {
+    /// The part.
+    pub part: Part,
+    /// The run.
+    pub run: String,
+    /// Its held-out RMS in the part, the channel's unit.
+    pub rms: f64,
 }
 
 /// The combined held-out gap of all channels where it is significant, as

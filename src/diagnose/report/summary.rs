@@ -10,7 +10,7 @@ use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
-use crate::diagnose::report::outcome::{above_noise, CombinedGap, GapFinding};
+use crate::diagnose::report::outcome::{above_noise, CombinedGap, GapFinding, OffInRight};
 use crate::diagnose::report::shares::ChannelShare;
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::{Part, RunGap, RunPart, Shrinkage};
@@ -219,10 +219,9 @@ fn channel_finding(
         .filter(|p| above_noise(p.before, nf))
         .map(|p| (p.part, p.before))
         .collect();
-    let right: Vec<Part> = split
-        .filter(|p| !above_noise(p.before, nf))
-        .map(|p| p.part)
-        .collect();
+    let right: Vec<&&Shrinkage> = split.filter(|p| !above_noise(p.before, nf)).collect();
+    let off_in_right = right.iter().flat_map(|p| off_in(p)).collect();
+    let right: Vec<Part> = right.iter().map(|p| p.part).collect();
     let of = |significant: bool| -> Vec<(String, f64)> {
         runs.iter()
             .filter_map(|r| {
@@ -245,6 +244,7 @@ fn channel_finding(
         runs: runs.len(),
         wrong,
         right,
+        off_in_right,
         offset: SteadyOffset::of(
             &runs
                 .iter()
@@ -256,6 +256,24 @@ fn channel_finding(
         ),
         combined: combined.cloned(),
     })
+}
+
+/// The runs of a part `p` above three of its noise floors in it (at least
+/// ten samples, the parts' own rule), largest first: a part the pooled RMS
+/// calls right is not right for them.
+fn off_in(p: &Shrinkage) -> Vec<OffInRight> {
+    let mut off: Vec<OffInRight> = p
+        .runs
+        .iter()
+        .filter(|r| r.samples >= 10 && above_noise(r.before, p.noise_floor))
+        .map(|r| OffInRight {
+            part: p.part,
+            run: r.run.clone(),
+            rms: r.before,
+        })
+        .collect();
+    off.sort_by(|a, b| b.rms.total_cmp(&a.rms));
+    off
 }
 
 /// The gap's findings (the report words them): overall, per channel where
@@ -373,3 +391,49 @@ pub(crate) fn dominant(shares: &[ChannelShare]) -> Option<GapFinding> {
 /// A channel carrying more than this share of the base's combined error
 /// (its steady offset set aside) decides every fit: the report names it.
 pub const DOMINANT_SHARE: f64 = 2.0 / 3.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::report::parts::Window;
+
+    fn run(name: &str, samples: usize, before: f64) -> RunPart {
+        RunPart {
+            run: name.into(),
+            samples,
+            mean_level: None,
+            before,
+            after: before,
+        }
+    }
+
+    /// Round 39: one run's yaw rate +0.02 rad/s sat 6.5 floors off before
+    /// its input while the part, pooled, was within three. The runs above
+    /// three floors of a part (ten samples or more) are found, largest
+    /// first; at three floors exactly, or on nine samples, not.
+    #[test]
+    fn the_runs_off_in_a_part_are_found_largest_first() {
+        let part = Part::Window(Window::BeforeInput);
+        let p = Shrinkage {
+            channel: Channel::YawRate,
+            part,
+            samples: 500,
+            before: 0.005,
+            after: 0.005,
+            noise_floor: 0.003,
+            reduction_percent: 0.0,
+            mean_level: None,
+            runs: vec![
+                run("a.csv", 100, 0.0100),
+                run("b.csv", 100, 0.0195),
+                run("c.csv", 100, 0.0090),
+                run("d.csv", 9, 0.0500),
+                run("e.csv", 191, 0.0020),
+            ],
+        };
+        let off = off_in(&p);
+        let named: Vec<(&str, f64)> = off.iter().map(|o| (o.run.as_str(), o.rms)).collect();
+        assert_eq!(named, [("b.csv", 0.0195), ("a.csv", 0.0100)]);
+        assert!(off.iter().all(|o| o.part == part));
+    }
+}

@@ -17,6 +17,7 @@ mod gap;
 mod lookalikes;
 mod parameters;
 mod rank;
+mod runs_left;
 mod table;
 mod trust;
 mod warnings;
@@ -188,10 +189,11 @@ fn removal(percent: f64) -> String {
 /// the sentence says which, and never that nothing explains the gap.
 fn outside(o: &OutsideLibrary) -> String {
     let s = class::with_class(outside_alone(o), o.tyre_class.as_ref());
-    match &o.narrowed {
+    let s = match &o.narrowed {
         Some(n) => class::narrowed(s, n),
         None => s,
-    }
+    };
+    s + &runs_left::outside_bearing(o)
 }
 
 fn outside_alone(o: &OutsideLibrary) -> String {

@@ -90,6 +90,8 @@ pub(crate) fn verdict(
             threshold_percent: 100.0 * ACCEPT,
             tyre_class: None,
             narrowed: None,
+            bearing: Vec::new(),
+            runs_carrying: None,
         }),
     }
 }
@@ -336,6 +338,7 @@ fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
             threshold: rules::SIGNIFICANT,
             left_percent: 100.0 - ranked.reduction_percent,
             carried_by: None,
+            runs_carrying: None,
         },
     )
 }

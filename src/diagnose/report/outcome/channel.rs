@@ -115,3 +115,37 @@ pub struct CarriedBy {
     /// The channel's noise floor, its unit (the causes' RMS in floors).
     pub noise_floor: f64,
 }
+
+/// How the runs hold what a verdict leaves
+/// ([`super::VerdictWarning::GapRemains`]): its held-out gap above noise
+/// `G² = J² − J_n²` (the measure the share it leaves is of) split over the
+/// runs, each run's part `Σ_c n_rc·(rms_rc²/s_c² − J_n²)` (its samples of
+/// every channel over the channel's scale, less the noise level's), the
+/// parts summing to `N·G²`; a run below the noise level holds none.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunsCarrying {
+    /// The one run that holds more than two thirds of it, or the two that
+    /// hold that much together (of four runs or more); empty: no one or two
+    /// runs do, it is spread over the runs.
+    pub carried_by: Vec<RunShare>,
+    /// The runs with a part above the noise level.
+    pub above_noise: usize,
+    /// The runs measured.
+    pub runs: usize,
+    /// The run with the largest part, where it is not in `carried_by`
+    /// (None: it is, or no run holds any).
+    pub largest: Option<RunShare>,
+}
+
+/// One run's part of what a verdict leaves ([`RunsCarrying`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunShare {
+    /// The run.
+    pub run: String,
+    /// Its part of the held-out gap above noise left, %.
+    pub share_percent: f64,
+    /// Its own held-out error `J` with the verdict's effects (residuals
+    /// over the channels' scales, dimensionless; the noise level is the
+    /// campaign's).
+    pub heldout_error: f64,
+}

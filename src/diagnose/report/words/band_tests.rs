@@ -24,6 +24,7 @@ fn a_channel_within_noise_alone_under_a_significant_combined_gap_is_no_gap_of_it
         runs: 8,
         wrong: vec![],
         right: vec![Part::All],
+        off_in_right: Vec::new(),
         offset: None,
         combined: Some(CombinedGap {
             heldout_error: 1.52,
@@ -86,6 +87,7 @@ fn a_gap_in_a_few_runs_names_them() {
         runs: 8,
         wrong: vec![],
         right: vec![Part::All],
+        off_in_right: Vec::new(),
         offset: None,
         combined: None,
     };

@@ -5,7 +5,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
-    above_noise, CombinedGap, GapFinding, SIGNIFICANT_NOISE_FLOORS,
+    above_noise, CombinedGap, GapFinding, OffInRight, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::parts::Window;
 use crate::diagnose::report::values::SteadyOffset;
@@ -33,13 +33,14 @@ pub(super) fn channel(f: &GapFinding) -> String {
         runs,
         wrong,
         right,
+        off_in_right,
         offset,
         combined,
     } = f
     else {
         return String::new();
     };
-    let before = right.contains(&Part::Window(Window::BeforeInput));
+    let before = right_before_input(right, off_in_right);
     let said = offset.map_or(String::new(), |o| steady_offset(&o, *channel, before));
     let which = if *significant_runs == significant_in.len() {
         runs_named(*channel, *noise_floor, (significant_in, within_in), *runs)
@@ -64,9 +65,12 @@ pub(super) fn channel(f: &GapFinding) -> String {
         } else {
             parts(wrong)
         };
+        let right = right
+            .iter()
+            .map(|p| right_but(*p, off_in_right, *noise_floor));
         format!(
             "{head}; wrong in: {wrong}; right in: {}",
-            listed(right.iter().map(|p| p.label()).collect()),
+            listed(right.collect())
         )
     } else if let Some(c) = combined {
         within_combined(
@@ -95,6 +99,45 @@ pub(super) fn channel(f: &GapFinding) -> String {
         )
     };
     place + &said
+}
+
+/// Whether the channel is right before the input for every run, not
+/// pooled only (`right`, and no run of `off` off there): a run off there
+/// has a zero offset of its own.
+fn right_before_input(right: &[Part], off: &[OffInRight]) -> bool {
+    let before = Part::Window(Window::BeforeInput);
+    right.contains(&before) && !off.iter().any(|o| o.part == before)
+}
+
+/// A part the pooled RMS calls right, with the runs above three noise
+/// floors in it (`off`, largest first) said beside it: "before the input
+/// (but a.csv is 6.5 noise floors off there)". At most [`NAMED_RUNS`]
+/// are named, the rest counted.
+fn right_but(part: Part, off: &[OffInRight], noise_floor: f64) -> String {
+    let runs: Vec<&OffInRight> = off.iter().filter(|o| o.part == part).collect();
+    if runs.is_empty() {
+        return part.label();
+    }
+    let floors = |o: &OffInRight| crate::format::fixed(o.rms / noise_floor, 1);
+    let mut each: Vec<String> = runs
+        .iter()
+        .take(NAMED_RUNS)
+        .enumerate()
+        .map(|(i, o)| match i {
+            0 => format!("{} is {}", o.run, floors(o)),
+            _ => format!("{} {}", o.run, floors(o)),
+        })
+        .collect();
+    if runs.len() > NAMED_RUNS {
+        let rest = crate::format::plural(runs.len() - NAMED_RUNS, "other run", "other runs");
+        each.push(format!("{rest} more than {SIGNIFICANT_NOISE_FLOORS}"));
+    }
+    let last = each.pop().unwrap_or_default();
+    let named = match each.is_empty() {
+        true => last,
+        false => format!("{} and {last}", each.join(", ")),
+    };
+    format!("{} (but {named} noise floors off there)", part.label())
 }
 
 /// A channel within noise alone, over the runs and in every run, under a

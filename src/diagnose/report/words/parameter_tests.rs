@@ -228,6 +228,7 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
         runs: 8,
         wrong: vec![],
         right: vec![Part::All],
+        off_in_right: Vec::new(),
         offset: SteadyOffset::of(&biases, 0.0019, 0.0046),
         combined: None,
     };
@@ -257,6 +258,7 @@ fn an_offset_beyond_the_floors_right_before_the_input_is_the_model_s() {
         runs: 4,
         wrong: vec![(Part::Window(Window::Later), 0.014)],
         right: vec![Part::Window(Window::BeforeInput)],
+        off_in_right: Vec::new(),
         offset: SteadyOffset::of(biases, 0.0017, rms),
         combined: None,
     };

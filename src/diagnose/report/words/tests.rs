@@ -138,6 +138,8 @@ fn outside(reduction_percent: f64, why: Vec<Refusal>) -> Verdict {
         threshold_percent: 30.0,
         tyre_class: None,
         narrowed: None,
+        bearing: Vec::new(),
+        runs_carrying: None,
     })
 }
 
@@ -499,6 +501,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         runs: 8,
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
+        off_in_right: Vec::new(),
         offset: None,
         combined: None,
     }
@@ -568,33 +571,4 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
     let w = verdict_warning(&two);
     assert!(w.contains("on their search bound"), "{w}");
     assert!(w.contains("their values are a bound"), "{w}");
-}
-
-#[test]
-fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
-    let w = VerdictWarning::GapRemains {
-        heldout_error_after: 1.366,
-        noise_level: 1.0,
-        threshold: 1.3,
-        left_percent: 16.0,
-        carried_by: None,
-    };
-    assert_eq!(
-        verdict_warning(&w),
-        "what it leaves is still a gap: held-out error 1.366, above 1.3 × the noise level 1.000, so the other 16.0 % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
-    );
-    // The sentence it goes with says "most of the gap", not "the gap"
-    // (Putnam's 53.1 % read "explains the gap" above "the other 46.9 %
-    // of the gap is a further cause").
-    let mut v = explained(84.0);
-    if let Verdict::Explained(e) = &mut v {
-        e.warnings = vec![w];
-    }
-    assert!(
-        statement(&v).starts_with(
-            "sensor_delay+relaxation_length explains most of the gap: held-out error 3.628 → 1.073"
-        ),
-        "{}",
-        statement(&v)
-    );
 }

@@ -76,11 +76,17 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             threshold,
             left_percent,
             carried_by,
+            runs_carrying,
         } => {
             let head = format!("what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause");
-            match carried_by {
-                None => format!("{head} (an effect outside the library, or the base model's own form), not noise"),
-                Some(c) => format!("{head}, not noise: {}", carried(c)),
+            let runs = runs_carrying.as_ref();
+            let named = runs.filter(|r| !r.carried_by.is_empty());
+            match (carried_by, named, runs) {
+                (Some(c), Some(r), _) => format!("{head}, not noise: {}; over all channels {}", carried(c), super::runs_left::held_by(r)),
+                (Some(c), None, _) => format!("{head}, not noise: {}", carried(c)),
+                (None, Some(r), _) => format!("{head}, not noise: {}; {}", super::runs_left::held_by(r), super::runs_left::look_first(r)),
+                (None, None, Some(r)) => format!("{head} (an effect outside the library, or the base model's own form), not noise: {}", super::runs_left::spread(r)),
+                (None, None, None) => format!("{head} (an effect outside the library, or the base model's own form), not noise"),
             }
         }
     }

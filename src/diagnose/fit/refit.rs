@@ -150,6 +150,20 @@ const REFIT_MODEL_STEPS: usize = 60;
 /// where damping on reaches a step that lowers the cost.
 const REFIT_MODEL_REJECTIONS: usize = 8;
 
+/// Accepted model steps in a row whose decrease the model mispredicted
+/// (outside half to twice its prediction) after which a fold refit near
+/// where its Jacobian was taken hands over to Levenberg–Marquardt: its
+/// all-run second derivatives, not its Jacobian, are what no longer hold
+/// there, and the fresh Gauss–Newton models of Levenberg–Marquardt stop by
+/// the same test ([`settled`]). On the slow oval (`synth --programme
+/// slow-oval --effects bank_profile --seed 1`) ten of its 48 fold refits
+/// went on for all [`REFIT_MODEL_STEPS`] replays without settling, six of
+/// them within 0.14 all-run standard errors of their start, and
+/// Levenberg–Marquardt then settled them in 11–33 replays; with this
+/// hand-over its fold refits took 599 replays where they took 987, its
+/// verdict and held-out errors unchanged (session 108, benchmarks chapter).
+const REFIT_MODEL_MISPREDICTIONS: usize = 3;
+
 /// Times a fold refit that has moved differences its Jacobian afresh (`n`
 /// replays, the all-run second derivatives kept): when its steps stall, or
 /// when a model that mispredicted its last step sees a minimum. On the
@@ -176,7 +190,9 @@ const REFIT_RELINEARISATIONS: usize = 4;
 /// factor of 2, and within [`REFIT_FAR`] standard errors of where its
 /// Jacobian was taken. A refit that has moved takes a fresh Jacobian (at most
 /// [`REFIT_RELINEARISATIONS`] times) when [`REFIT_MODEL_REJECTIONS`] steps
-/// in a row fail, or when a model it does not believe sees a minimum.
+/// in a row fail, when a model it does not believe sees a minimum, or when
+/// [`REFIT_MODEL_MISPREDICTIONS`] accepted steps in a row were mispredicted
+/// beyond [`REFIT_FAR`]; nearer than that, such a run hands over.
 /// Where the model has not converged within [`REFIT_MODEL_STEPS`] replays,
 /// or cannot go on, Levenberg–Marquardt (fresh Jacobians) goes on from
 /// there within its budget. Without a linearisation (`full` not polished)
@@ -279,18 +295,26 @@ fn on_model<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut trusted = true;
     // A minimum seen by a model that is not believed.
     let mut doubted = false;
+    // Accepted steps in a row the model mispredicted.
+    let mut mispredicted = 0;
     for _ in 0..4 * REFIT_MODEL_STEPS {
         let can_relinearise = relinearised < REFIT_RELINEARISATIONS
             && at.p != model.p0
             && at.evaluations + n < REFIT_MODEL_STEPS;
-        // Stalled or doubted after moving: the Jacobian no longer holds here.
-        if (rejected == REFIT_MODEL_REJECTIONS || doubted) && can_relinearise {
+        // Stalled or doubted after moving, or mispredicting far from where
+        // the Jacobian was taken: the Jacobian no longer holds here.
+        let astray = mispredicted == REFIT_MODEL_MISPREDICTIONS && model.stale_at(&at.p);
+        if (rejected == REFIT_MODEL_REJECTIONS || doubted || astray) && can_relinearise {
             model.relinearise(problem, &at.p, &at.r);
             at.evaluations += problem.jacobian_evaluations(n);
             relinearised += 1;
-            (rejected, lambda, trusted, doubted) = (0, 0.0, true, false);
+            (rejected, lambda, trusted, doubted, mispredicted) = (0, 0.0, true, false, 0);
         }
-        if doubted || at.evaluations >= REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
+        if doubted
+            || at.evaluations >= REFIT_MODEL_STEPS
+            || rejected == REFIT_MODEL_REJECTIONS
+            || mispredicted == REFIT_MODEL_MISPREDICTIONS
+        {
             return false;
         }
         let Some((d, predicted)) = model.at(&at.p, &at.r, &problem.bounds).step(lambda) else {
@@ -307,6 +331,7 @@ fn on_model<F: Fn(&[f64]) -> Augmented + Sync>(
         match trial_step(problem, at, &d, &mut trial) {
             Some((q, c)) => {
                 trusted = (0.5..=2.0).contains(&((at.cost - c) / predicted));
+                mispredicted = if trusted { 0 } else { mispredicted + 1 };
                 (at.p, at.cost) = (q, c);
                 std::mem::swap(&mut at.r, &mut trial);
                 lambda *= 0.1;

@@ -924,3 +924,4 @@ mod trips_s107_lead;
 mod trips_s107_mf42;
 mod trips_s107_runwords42;
 mod trips_s107_tyreeval42;
+mod trips_s108_mf43;

@@ -48,6 +48,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // NOMPRES) is replaced by theirs (`nompres.rs`), held as by `--hold`.
     let (rows, version) = (&prepared.rows, fit.version);
     let recentred = super::nompres::recentred(version, template_tyre.as_ref(), rows, &o.hold);
+    let kept = super::template_size::kept(template_tyre.as_ref(), rows, &o.hold);
     let settings = settings_of(o, fit, template_tyre, template.as_ref(), &recentred)?;
     let id = mf_staged::identify(&prepared.rows, &settings)
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
@@ -56,7 +57,12 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw, &fitted);
     crate::tyre::ModelParameters::check_sizes(&id.tyre)
         .map_err(|source| FitError::BeyondAnyTyre { source })?;
-    let held = held_values(o, recentred, &id.tyre, &data);
+    let held = held_values(
+        o,
+        recentred.into_iter().chain(kept).collect(),
+        &id.tyre,
+        &data,
+    );
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
     let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();

@@ -1,4 +1,4 @@
-//! A fresh-eyes tester's findings (round 39, issue 41) in what
+//! A fresh-eyes tester's findings (round 39) in what
 //! `identify` says it held and kept: a stage's σ beside its held lines'
 //! σ with nothing to join them, a template of another size of tyre kept
 //! without a word, PAC89's coefficients named two ways.

@@ -41,7 +41,7 @@ impl std::fmt::Display for ParamValue {
 /// another way (a name, a missing table).
 #[derive(Debug, Clone, PartialEq, Error)]
 pub struct ParamError {
-    /// Dotted key path, e.g. `vehicle.mass` or `a[4]`.
+    /// Dotted key path, e.g. `vehicle.mass` or `a4` (PAC89's, as `--hold` names it).
     pub key: String,
     /// The offending value.
     pub value: ParamValue,

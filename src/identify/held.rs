@@ -111,6 +111,16 @@ pub enum ConstantFrom {
     /// template has no `NOMPRES` (0, its pressure terms off) and the data
     /// have a `pressure` column (`NOMPRES`).
     TemplateWithoutPressure,
+    /// A template's size (`UNLOADED_RADIUS`, `WIDTH`, `VERTICAL_STIFFNESS`)
+    /// kept: rig data do not measure it (`template_size.rs`).
+    TemplateSize {
+        /// Which size, and what it enters.
+        field: super::template_size::SizeField,
+        /// The template's `FNOMIN` before any recentring, N.
+        template_fnomin: f64,
+        /// The data's median load, N.
+        data_load: f64,
+    },
     /// The median pressure of the data, rounded to 100 Pa, in place of a
     /// template's `INFLPRES` outside the data's pressures (`INFLPRES`).
     InflationOutsideData {
@@ -176,6 +186,7 @@ impl fmt::Display for HeldFor {
                     from @ (ConstantFrom::OutsideData { .. }
                     | ConstantFrom::LoadOutsideData { .. }
                     | ConstantFrom::TemplateWithoutPressure
+                    | ConstantFrom::TemplateSize { .. }
                     | ConstantFrom::InflationOutsideData { .. }),
             } => write!(f, "{from}"),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
@@ -245,6 +256,14 @@ impl fmt::Display for ConstantFrom {
                  NOMPRES (0 turns the pressure terms off, as MF 5.2 has none), and the data \
                  have a `pressure` column, which the pressure terms (PPX*, PPY*, PPZ*) are \
                  fitted to about it; to keep them off, give --hold NOMPRES=0"
+            }
+            ConstantFrom::TemplateSize {
+                field,
+                template_fnomin,
+                data_load,
+            } => {
+                let said = super::template_size::kept_said(*field, *template_fnomin, *data_load);
+                return f.write_str(&said);
             }
             ConstantFrom::InflationOutsideData { template, lo, hi } => {
                 let (t, lo, hi) = (exact(*template), exact(*lo), exact(*hi));

@@ -35,6 +35,7 @@ mod problem;
 pub mod pure;
 mod reach;
 mod spare;
+pub mod template_size;
 mod undetermined;
 pub(crate) use undetermined::hold_undetermined;
 use undetermined::Spread;

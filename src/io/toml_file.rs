@@ -465,6 +465,12 @@ impl TomlSource {
             })
             .collect();
         for (i, &(part, index)) in parts.iter().enumerate() {
+            // A coefficient named as `--hold` names it (PAC89's `a3`) is
+            // element 3 of the file's array `a`.
+            let (part, index) = match table.get_key_value(part) {
+                None => element_named(part).unwrap_or((part, index)),
+                Some(_) => (part, index),
+            };
             let (key, item) = table.get_key_value(part)?;
             if i + 1 == parts.len() {
                 let value = item.as_value();
@@ -559,4 +565,15 @@ pub fn param_error(src: &TomlSource, table: Option<&str>, e: ParamError) -> Inpu
         None => e,
     };
     src.value_error(&e)
+}
+
+/// An array's element named as `--hold` names it, `a3` for `a[3]`: the
+/// array's name and the index, or `None` for a name not of that form.
+fn element_named(part: &str) -> Option<(&str, Option<usize>)> {
+    let at = part.find(|c: char| c.is_ascii_digit())?;
+    let (name, index) = part.split_at(at);
+    let alphabetic = !name.is_empty() && name.chars().all(|c| c.is_ascii_alphabetic());
+    alphabetic
+        .then(|| (name, index.parse().ok()))
+        .filter(|(_, k)| k.is_some())
 }

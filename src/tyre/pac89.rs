@@ -265,17 +265,17 @@ impl Pac89 {
             ));
         }
         for (i, v) in self.a.iter().enumerate() {
-            ParamError::finite(&format!("a[{i}]"), *v)?;
+            ParamError::finite(&format!("a{i}"), *v)?;
         }
-        ParamError::positive("a[0]", self.a[0])?;
+        ParamError::positive("a0", self.a[0])?;
         if self.a[4] == 0.0 {
-            return Err(ParamError::new("a[4]", 0.0, ParamReason::ZeroA4));
+            return Err(ParamError::new("a4", 0.0, ParamReason::ZeroA4));
         }
         for (i, v) in self.b.iter().flatten().enumerate() {
-            ParamError::finite(&format!("b[{i}]"), *v)?;
+            ParamError::finite(&format!("b{i}"), *v)?;
         }
         for (i, v) in self.c.iter().flatten().enumerate() {
-            ParamError::finite(&format!("c[{i}]"), *v)?;
+            ParamError::finite(&format!("c{i}"), *v)?;
         }
         Ok(())
     }
@@ -455,7 +455,7 @@ impl ModelParameters for Pac89 {
     /// `a3·sin(2·atan(Fz/a4))` passes any tyre's at a load from 0.1 to
     /// 100 kN.
     fn check_sizes(&self) -> Result<(), ParamError> {
-        super::sizes::pac89_cornering_stiffness("a[3]", self.a[3])?;
+        super::sizes::pac89_cornering_stiffness("a3", self.a[3])?;
         super::sizes::pac89_peak_stiffness(self.a[3], self.a[4])
     }
     /// BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|) is proportional to a3 (the

@@ -186,7 +186,7 @@ pub(crate) fn pac89_peak_stiffness(a3: f64, a4: f64) -> Result<(), ParamError> {
         return Ok(());
     }
     Err(ParamError::new(
-        "a[3]",
+        "a3",
         a3,
         ParamReason::Pac89PeakStiffness { a4, peak, fz },
     ))
@@ -359,15 +359,13 @@ mod tests {
     #[test]
     fn a_pac89_a3_is_refused_by_its_magnitude_and_said_so() {
         for v in [-5.0, 5.0, 15.0] {
-            let e = pac89_cornering_stiffness("a[3]", v)
-                .unwrap_err()
-                .to_string();
+            let e = pac89_cornering_stiffness("a3", v).unwrap_err().to_string();
             assert!(
                 e.contains("larger than 15 in magnitude (either sign)"),
                 "{e}"
             );
         }
-        assert!(pac89_cornering_stiffness("a[3]", -20.0).is_ok());
-        assert!(pac89_cornering_stiffness("a[3]", 20.0).is_ok());
+        assert!(pac89_cornering_stiffness("a3", -20.0).is_ok());
+        assert!(pac89_cornering_stiffness("a3", 20.0).is_ok());
     }
 }

@@ -926,4 +926,5 @@ mod trips_s107_runwords42;
 mod trips_s107_tyreeval42;
 mod trips_s108_diagwords43;
 mod trips_s108_lead;
+mod trips_s108_mf43;
 mod trips_s108_runwords43;

@@ -128,11 +128,17 @@ fn the_papers_start_says_why_its_cap_is_500_and_that_it_holds_nothing() {
     }
     let unheld = said
         .lines()
-        .find(|l| l.contains("warning: the paper's scheme (--start paper) holds nothing: "))
+        .find(|l| {
+            l.contains(
+                "warning: the paper's scheme (--start paper) holds no parameter for want of data: ",
+            )
+        })
         .unwrap_or_else(|| panic!("{said}"));
     assert!(unheld.contains("not at a stated value"), "{unheld}");
     let tir = fs::read_to_string(dir.path().join("paper.tir")).unwrap();
-    assert!(tir.contains("$ warning: the paper's scheme (--start paper) holds nothing: "));
+    assert!(tir.contains(
+        "$ warning: the paper's scheme (--start paper) holds no parameter for want of data: "
+    ));
     // Every stage whose σ lies between 20 % and 50 % (pure Fy's 25.5 %
     // here) is warned of as the swarm fits warn.
     let mut between = 0;

@@ -142,7 +142,7 @@ fn the_paper_start_says_each_coefficient_with_the_sign_the_file_writes() {
     let mut named = 0;
     for line in said
         .lines()
-        .filter(|l| l.contains("(--start paper) holds nothing: "))
+        .filter(|l| l.contains("(--start paper) holds no parameter for want of data: "))
     {
         let list = line.split("do not determine (").nth(1).unwrap();
         let list = list.split("), are written").next().unwrap();

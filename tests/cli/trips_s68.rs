@@ -107,7 +107,7 @@ fn a_pac89_a3_is_refused_by_its_magnitude_and_its_peak_with_the_load_it_peaks_at
         assert!(!o.status.success() && written.is_empty(), "{e}");
         assert!(
             e.contains(&format!(
-                "`a[3]` = {a3}: must be larger than 15 in magnitude (either sign)"
+                "`a3` = {a3}: must be larger than 15 in magnitude (either sign)"
             )),
             "{e}"
         );
@@ -126,7 +126,7 @@ fn a_pac89_a3_is_refused_by_its_magnitude_and_its_peak_with_the_load_it_peaks_at
         &[],
     );
     assert!(
-        stderr(&o).contains("`a[3]` = 1000000: with a4 = 12.8 kN, BCD = a3·sin(2·atan(Fz/a4)) reaches 1e6 N/deg at Fz = 12.8 kN, above any tyre's 34907 N/deg"),
+        stderr(&o).contains("`a3` = 1000000: with a4 = 12.8 kN, BCD = a3·sin(2·atan(Fz/a4)) reaches 1e6 N/deg at Fz = 12.8 kN, above any tyre's 34907 N/deg"),
         "{}",
         stderr(&o)
     );

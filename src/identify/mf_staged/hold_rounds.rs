@@ -6,6 +6,7 @@
 //! parameter is flagged. Costs are `½Σe²` of the stage's residuals (N² or
 //! (N·m)²); σ is % of the channel's RMS.
 
+use super::curvature_clip::{at_clip, AtClip};
 use super::hold_guard::{guarded_refit, Fitted, Refit};
 use super::hold_refusal::{refused_hold, RefusedHold};
 use super::holds::{near_bound, HoldReason, HoldSource};
@@ -70,6 +71,17 @@ pub(super) fn hold_undetermined(
     };
     while fit.p.len() > 1 {
         let u = uncertainty(&fit.problem, &fit.p);
+        // A curvature coefficient the data do not move because its factor
+        // sits at the clip E ≤ 1 over every row it shapes is held where the
+        // fit left it, as `--start paper` holds it (`curvature_clip.rs`),
+        // not at a stated value for want of data.
+        if let Some((k, clip)) = clipped(fit, &u) {
+            let (name, fitted) = (fit.problem.names[k], fit.p[k]);
+            fit.hold_out(k, fitted);
+            let why = HoldReason::AtCurvatureClip { fitted, clip };
+            out.held.push((name, fitted, why));
+            continue;
+        }
         let Spared {
             kept,
             refusals,
@@ -103,7 +115,31 @@ pub(super) fn hold_undetermined(
         }
         out.held.push((name, value, why));
     }
+    number_holds(&mut out.held);
     out
+}
+
+/// Each hold for want of data in `held` numbered in the order it was
+/// made, of how many: a held line's σ is its round's, and the stage's
+/// σ at the end of its own fit is the last one's σ held.
+fn number_holds(held: &mut [(&'static str, f64, HoldReason)]) {
+    let counted = |why: &HoldReason| matches!(why, HoldReason::NotIdentifiable { .. });
+    let n = held.iter().filter(|h| counted(&h.2)).count();
+    let mut i = 0;
+    for (.., why) in held.iter_mut() {
+        if let HoldReason::NotIdentifiable { hold_order, .. } = why {
+            i += 1;
+            *hold_order = Some([i, n]);
+        }
+    }
+}
+
+/// The first free parameter of `fit` without a standard error (at its
+/// uncertainty `u`) that its curvature factor's clip holds, with where.
+fn clipped(fit: &StageFit, u: &Uncertainty) -> Option<(usize, AtClip)> {
+    (0..fit.p.len())
+        .filter(|&k| u.std_error[k].is_none())
+        .find_map(|k| at_clip(&fit.problem, &fit.p, k).map(|c| (k, c)))
 }
 
 /// One round of holds on `fit` at its uncertainty `u`: the flagged
@@ -221,6 +257,7 @@ fn not_identifiable(
         standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
         at_bound,
         sigma_held_free: None,
+        hold_order: None,
     }
 }
 

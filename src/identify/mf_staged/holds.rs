@@ -126,6 +126,11 @@ pub enum HoldReason {
         /// The stage's σ (%) with it held and the rest refitted, and
         /// fitted free just before (`None`: not measured).
         sigma_held_free: Option<[f64; 2]>,
+        /// Which of the stage's holds for want of data it was, in the
+        /// order they were made, and how many there were: the last one's
+        /// σ held is the σ the stage's own fit ended at (`None`: not
+        /// counted, the paper's scheme).
+        hold_order: Option<[usize; 2]>,
     },
     /// Its curvature factor reaches the Magic Formula's clip at 1 over
     /// every row it shapes, where the force does not depend on it: held
@@ -138,13 +143,30 @@ pub enum HoldReason {
     },
 }
 
-/// `sigma` (%) to the digits that tell it from `other`: three decimals,
-/// more where the two agree to them (up to six).
-fn sigma_digits(sigma: f64, other: f64) -> String {
-    let decimals = (3..6)
-        .find(|&d| format!("{sigma:.d$}") != format!("{other:.d$}"))
-        .unwrap_or(6);
-    format!("{sigma:.decimals$}")
+/// The σ of a hold's round, held against free, with the digits that tell
+/// them apart (`fixed_apart`; two that agree to a millionth of
+/// themselves print alike, as the hold then costs nothing), and which of
+/// the stage's holds it was (`order`): the round's σ is not the stage's
+/// (a later hold, or a later stage, moves that; the stage's line says
+/// how), and "σ 1.245514 % held against 1.245514 % free" beside the
+/// stage's "σ 1.689 %" read as two measures of one fit.
+fn held_free([held, free]: [f64; 2], order: Option<[usize; 2]>) -> String {
+    let shown = if (held - free).abs() <= 1e-6 * free.abs() {
+        let same = format!("{held:.3}");
+        [same.clone(), same]
+    } else {
+        let v = crate::format::fixed_apart(&[held, free], 3);
+        [v[0].clone(), v[1].clone()]
+    };
+    let round = order.map_or(String::new(), |[k, n]| {
+        format!(" (in the round of the stage's hold {k} of {n}, in the order they were made)")
+    });
+    format!(
+        "; σ {} % held against {} % free{round}{}",
+        shown[0],
+        shown[1],
+        held_below_free(held, free)
+    )
 }
 
 /// What a hold that lowered the stage's σ says of the fit before it: a
@@ -153,7 +175,7 @@ fn sigma_digits(sigma: f64, other: f64) -> String {
 /// its iteration cap). Measured on MFeval's grid: QSX6 held, σ 0.355 %
 /// against 0.404 % free, unsaid.
 fn held_below_free(held: f64, free: f64) -> &'static str {
-    if held < free && sigma_digits(held, free) != sigma_digits(free, held) {
+    if held < free - 1e-6 * free.abs() {
         ": lower held than free, so the fit with it free had stopped short of its optimum (a local minimum, or its iteration cap); the held fit, the better, is kept"
     } else {
         ""
@@ -182,16 +204,12 @@ impl HoldReason {
                 held_at,
                 standard_errors_away,
                 sigma_held_free,
+                hold_order,
                 ..
             } => format!(
                 "{self}{}{}",
                 lean_clause(name, *stated, *held_at, *standard_errors_away),
-                sigma_held_free.map_or(String::new(), |[held, free]| format!(
-                    "; σ {} % held against {} % free{}",
-                    sigma_digits(held, free),
-                    sigma_digits(free, held),
-                    held_below_free(held, free)
-                ))
+                sigma_held_free.map_or(String::new(), |s| held_free(s, *hold_order))
             ),
             _ => self.to_string(),
         }

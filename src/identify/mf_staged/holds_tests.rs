@@ -58,6 +58,7 @@ fn a_hold_reason_reads_as_a_sentence() {
         standard_errors_away: Some(0.049),
         at_bound: None,
         sigma_held_free: None,
+        hold_order: None,
     };
     assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.05 standard errors from the free fit (within the ±2 standard errors the data allow)");
     // PKY4 of the Hoosier fit at 0.10014 of its box 0.1..5: said at
@@ -74,6 +75,7 @@ fn a_hold_reason_reads_as_a_sentence() {
         standard_errors_away: Some(0.9),
         at_bound: near_bound(0.10014, (0.1, 5.0)),
         sigma_held_free: None,
+        hold_order: None,
     };
     assert_eq!(at.to_string(), "stopped at its lower bound 0.1 when fitted (0.10014; its physical box 0.1 to 5): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing: held at the Pacejka 2012 book default 2");
 }
@@ -98,6 +100,7 @@ fn a_held_line_says_the_value_held_and_the_stated_one() {
             standard_errors_away: standard_errors_away(stated, fitted, se),
             at_bound: None,
             sigma_held_free: None,
+            hold_order: None,
         }
     };
     let far = rule(0.084).said("QDZ1");
@@ -117,4 +120,30 @@ fn a_hold_that_lowers_sigma_says_the_free_fit_stopped_short() {
     assert!(held_below_free(0.355, 0.404).contains("had stopped short of its optimum"));
     assert_eq!(held_below_free(0.404, 0.355), "");
     assert_eq!(held_below_free(0.3550000001, 0.3550000002), "");
+}
+
+/// A round's σ held and free print with the digits that tell them apart,
+/// alike where they agree to a millionth (the car205 grid's QBZ2 read
+/// "σ 1.245514 % held against 1.245514 % free", six decimals for two
+/// numbers it could not tell apart), and say which of the stage's holds
+/// the round was.
+#[test]
+fn a_rounds_sigma_is_told_apart_or_alike_and_numbered() {
+    let same = held_free([1.245514429528859, 1.2455142525422576], Some([1, 1]));
+    assert_eq!(
+        same,
+        "; σ 1.246 % held against 1.246 % free (in the round of the stage's hold 1 of 1, in the order they were made)"
+    );
+    let apart = held_free([1.24561, 1.24589], Some([2, 3]));
+    assert!(
+        apart.starts_with(
+            "; σ 1.2456 % held against 1.2459 % free (in the round of the stage's hold 2 of 3"
+        ),
+        "{apart}"
+    );
+    let lower = held_free([0.355, 0.404], None);
+    assert!(
+        lower.starts_with("; σ 0.355 % held against 0.404 % free: lower held"),
+        "{lower}"
+    );
 }

@@ -116,6 +116,7 @@ mod params;
 mod problem;
 mod release;
 mod sigma;
+mod sigma_moves;
 mod spread;
 mod stage_fit;
 mod stages;
@@ -135,6 +136,7 @@ pub use sigma::{
     channel_unit, pooled_sigma, raw_rows, rms_text, round_trip_difference, ChannelSigma,
     PooledSigma,
 };
+pub use sigma_moves::{sigma_said, SigmaMove};
 pub use spread::{sweeps_slip_angle, ErrorSpread, LoadSigma};
 pub use template_start::{SecondStart, SecondStartWhy, REPRODUCED_SIGMA_PERCENT};
 
@@ -385,6 +387,10 @@ pub struct StageReport {
     pub sigma_start_percent: f64,
     /// σ of the identified tyre over the stage's rows, %.
     pub sigma_percent: f64,
+    /// σ at the end of its own fit and holds, % (`None`: skipped).
+    pub sigma_own_percent: Option<f64>,
+    /// The later stages that moved its σ from there (`sigma_moves.rs`).
+    pub sigma_moved_by: Vec<SigmaMove>,
     /// Wei et al. (2010)'s residual for this case, %.
     pub paper_sigma_percent: f64,
     /// RMS error (N or N·m).
@@ -420,6 +426,8 @@ impl StageReport {
             levels: [0; 3],
             sigma_start_percent: f64::NAN,
             sigma_percent: f64::NAN,
+            sigma_own_percent: None,
+            sigma_moved_by: Vec::new(),
             paper_sigma_percent: stage.paper_sigma_percent(),
             rms: f64::NAN,
             condition_number: f64::NAN,
@@ -536,6 +544,8 @@ fn run_stages(rows: &[MfRow], tyre: &mut MagicFormula, run: &StageRun) -> Vec<St
         }
         let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
         reports.push(run_stage(stage, tyre, &sel, run));
+        let n = reports.len() - 1;
+        sigma_moves::record_moves(&mut reports[..n], stage, tyre, rows);
     }
     reports
 }

@@ -135,6 +135,8 @@ pub(super) fn run_stage(
         levels: have,
         sigma_start_percent: sigma_start,
         sigma_percent: sigma_end,
+        sigma_own_percent: Some(sigma_end),
+        sigma_moved_by: Vec::new(),
         paper_sigma_percent: stage.paper_sigma_percent(),
         rms,
         condition_number: u.condition,
@@ -282,6 +284,7 @@ fn hold_insensitive(
                 standard_errors_away: None,
                 at_bound: None,
                 sigma_held_free: None,
+                hold_order: None,
             },
         ));
         fit.hold_out(k, value);
@@ -372,7 +375,7 @@ fn paper_unheld(start: StartScheme, parameters: &[StageParameter]) -> Option<Str
         .any(|p| matches!(p.held, Some(HoldReason::AtCurvatureClip { .. })));
     (start == StartScheme::Paper && !unheld.is_empty()).then(|| {
         format!(
-            "the paper's scheme (--start paper) holds nothing: {} of its parameters, which these data do not determine ({}), are written where its unbounded Levenberg–Marquardt left them, not at a stated value{}; do not rely on this stage's channel beyond the points; --start data (the default) holds such parameters at the template's or Pacejka's (2012) book values and says so",
+            "the paper's scheme (--start paper) holds no parameter for want of data: {} of its parameters, which these data do not determine ({}), are written where its unbounded Levenberg–Marquardt left them, not at a stated value{}; do not rely on this stage's channel beyond the points; --start data (the default) holds such parameters at the template's or Pacejka's (2012) book values and says so",
             unheld.len(),
             unheld.join(", "),
             match (inert, clipped) {

@@ -54,6 +54,7 @@ mod fit_key;
 mod staged_figure;
 mod staged_run;
 mod template;
+mod template_size;
 mod template_version;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};

@@ -165,14 +165,14 @@ pub(super) fn stage_lines(
 ) -> Vec<String> {
     let mut out = Vec::new();
     for s in &report.stages {
+        let (sigma, moved) = crate::identify::mf_staged::sigma_said(s);
         match &s.skipped {
             Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
             None => out.push(format!(
-                "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS error {}{}",
+                "  {:<12} {:>5} points, {} free: {sigma} (start {:.2} %{moved}{}), RMS error {}{}",
                 s.stage.label(),
                 s.points,
                 s.parameters.iter().filter(|p| p.free).count(),
-                s.sigma_percent,
                 s.sigma_start_percent,
                 Some(s.paper_sigma_percent)
                     .filter(|p| p.is_finite())

@@ -44,10 +44,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t
     });
-    // A template's FNOMIN, NOMPRES, INFLPRES outside the data's (or no
-    // NOMPRES) is replaced by theirs (`nompres.rs`), held as by `--hold`.
+    // Template constants off the data replaced (`nompres.rs`), sizes kept (`template_size.rs`).
     let (rows, version) = (&prepared.rows, fit.version);
     let recentred = super::nompres::recentred(version, template_tyre.as_ref(), rows, &o.hold);
+    let kept = super::template_size::kept(template_tyre.as_ref(), rows, &o.hold);
     let settings = settings_of(o, fit, template_tyre, template.as_ref(), &recentred)?;
     let id = mf_staged::identify(&prepared.rows, &settings)
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
@@ -56,7 +56,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw, &fitted);
     crate::tyre::ModelParameters::check_sizes(&id.tyre)
         .map_err(|source| FitError::BeyondAnyTyre { source })?;
-    let held = held_values(o, recentred, &id.tyre, &data);
+    let held = held_values(o, (recentred, kept), &id.tyre, &data);
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
     let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();
@@ -191,16 +191,18 @@ fn settings_of(
 }
 
 /// The values held (written at their value, not fitted): those given
-/// with `--hold`, the template's constants `recentred` to the data, and
-/// without a template the constants the data set for the fitted `tyre`.
+/// with `--hold`, the template's constants `recentred` to the data and
+/// its sizes `kept` (`template_size.rs`), and without a template the
+/// constants the data set for the fitted `tyre`.
 fn held_values(
     o: &Options,
-    recentred: Vec<super::holds::Held>,
+    (recentred, kept): (Vec<super::holds::Held>, Vec<super::holds::Held>),
     tyre: &MagicFormula,
     data: &crate::identify::data::RigData,
 ) -> Vec<super::holds::Held> {
     let mut held = super::holds::holds_of(o, &given_names(o));
     held.extend(recentred);
+    held.extend(kept);
     if o.template.is_none() {
         held.extend(super::nompres::constants_held(tyre, data, o));
     }

@@ -267,27 +267,37 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         };
         return Err(param_error(src, None, ParamError::new(&at, given[i], why)));
     }
-    for &x in &given {
-        // The steer keeps to the road-wheel limit every manoeuvre keeps to
-        // (`simulate`'s), with its words, said in the unit the file gives
-        // it in; friction and speed are positive.
-        // The speed keeps to a manoeuvre's range, in the unit given; the
-        // friction to a road's (`[road] friction`'s).
-        // A speed or friction at or below zero is said as such, not as
-        // a value beyond the top of its range.
-        let checked = match axis {
-            "speed" | "friction" if x <= 0.0 => ParamError::positive(&key, x),
-            "steer" if k != 1.0 => road_wheel_steer_degrees(&key, x),
-            "steer" => road_wheel_steer(&key, x),
-            "speed" => {
-                let (lo, hi) = (MIN_SPEED / k, MAX_SPEED / k);
-                ParamError::in_range(&key, x, lo, hi, Limit::ManoeuvreSpeed)
-            }
-            _ => ParamError::in_range(&key, x, 0.0, MAX_ROAD_FRICTION, Limit::RoadFriction),
-        };
-        checked.map_err(|e| param_error(src, None, e))?;
+    // A range is checked at the ends the file writes, each at its own
+    // key: its first value out of bounds named a value the file does not
+    // hold ("`sweep.steer` = 1" for `{ from = 0, to = 10, step = 1 }`).
+    let written: Vec<(String, f64)> = match v {
+        Values::Range(r) => vec![(format!("{key}.from"), r.from), (format!("{key}.to"), r.to)],
+        _ => given.iter().map(|&x| (key.clone(), x)).collect(),
+    };
+    for (at, x) in written {
+        axis_value(axis, &at, x, k).map_err(|e| param_error(src, None, e))?;
     }
     Ok(given.into_iter().map(|x| x * k).collect())
+}
+
+/// A swept value `x` of `axis` at the file's key `at`, in the unit whose
+/// factor to SI is `k`, checked. The steer keeps to the road-wheel limit
+/// every manoeuvre keeps to (`simulate`'s), with its words, said in the
+/// unit the file gives it in; the speed keeps to a manoeuvre's range, in
+/// the unit given; the friction to a road's (`[road] friction`'s). A
+/// speed or friction at or below zero is said as such, not as a value
+/// beyond the top of its range.
+fn axis_value(axis: &str, at: &str, x: f64, k: f64) -> Result<(), ParamError> {
+    match axis {
+        "speed" | "friction" if x <= 0.0 => ParamError::positive(at, x),
+        "steer" if k != 1.0 => road_wheel_steer_degrees(at, x),
+        "steer" => road_wheel_steer(at, x),
+        "speed" => {
+            let (lo, hi) = (MIN_SPEED / k, MAX_SPEED / k);
+            ParamError::in_range(at, x, lo, hi, Limit::ManoeuvreSpeed)
+        }
+        _ => ParamError::in_range(at, x, 0.0, MAX_ROAD_FRICTION, Limit::RoadFriction),
+    }
 }
 
 /// The conditions of the `[report] phase_portraits` entries, each value

@@ -205,3 +205,23 @@ fn a_drift_that_does_not_slow_bounds_no_gain() {
     assert!(w.contains("and it drifts without slowing, so this record bounds neither where it settles nor whether it does"), "{w}");
     assert!(!w.contains("may be off by up to"), "{w}");
 }
+
+/// A steer range written in degrees as radians, `{ from = 0.0, to = 10.0,
+/// step = 1.0 }`, was refused as "`sweep.steer` = 1: must lie within
+/// ±0.785398", naming a value the file does not hold (the range's second
+/// value, which reads like its `step`). Now the range's end is named at
+/// its own key with the value written.
+#[test]
+fn a_steer_range_past_the_road_wheel_limit_names_the_end_the_file_writes() {
+    let text = bundled_scenario("equilibria_steer.toml").replace(
+        "steer = { from = 0.0, to = 0.2, step = 0.02 }",
+        "steer = { from = 0.0, to = 10.0, step = 1.0 }",
+    );
+    let dir = scratch(&[("sweep.toml", &text)]);
+    let e = fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path());
+    assert!(
+        e.contains("`sweep.steer.to` = 10: must lie within ±0.785398"),
+        "{e}"
+    );
+    assert!(!e.contains("= 1:"), "{e}");
+}

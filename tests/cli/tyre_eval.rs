@@ -392,7 +392,7 @@ fn a_pac89_or_unitire_stiffness_in_another_unit_is_refused_at_its_key() {
         (
             "p.toml",
             pac89.replace("1250.0, 3036.0,", "1250.0, 3.036,"),
-            "p.toml:8:27: `a[3]` = 3.036: must be larger than 15 in magnitude (either sign): PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg",
+            "p.toml:8:27: `a3` = 3.036: must be larger than 15 in magnitude (either sign): PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg",
             "is the value in kN/deg? multiply it by 1000",
         ),
         (

@@ -92,7 +92,7 @@ mod tests {
         );
         // 0.01 s of 0.45 s is 2.2 %: not said; nor is a 1 % gain.
         assert!(
-            !w.contains("ay response time") && !w.contains("gain"),
+            !w.contains("the ay response time") && !w.contains("yaw-rate gain"),
             "{w}"
         );
     }

@@ -164,6 +164,26 @@ pub(crate) fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// The stage `name` of a staged Magic Formula fit's report.
+pub(crate) fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
+    report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["stage"] == name)
+        .unwrap_or_else(|| panic!("no stage {name}: {report}"))
+}
+
+/// The value of `key` in a `.tir` text (its comment after `$` dropped).
+pub(crate) fn tir_value(text: &str, key: &str) -> f64 {
+    text.lines()
+        .find_map(|l| {
+            let (k, v) = l.split_once('=')?;
+            (k.trim() == key).then(|| v.split('$').next().unwrap().trim().parse().unwrap())
+        })
+        .unwrap_or_else(|| panic!("{key}: {text}"))
+}
+
 /// The noise-free forces and moments `tyre-eval` gives of `tir` over the
 /// book's grid (`docs/examples/mf_grid.csv`), written to `dir/grid_rig.csv`:
 /// a rig file `identify` reads.

@@ -93,15 +93,6 @@ fn identify(dir: &Path, template: &Path, start: &str, out: &str) -> serde_json::
     read_json(&dir.join(out).with_extension("report.json"))
 }
 
-fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
-    report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["stage"] == name)
-        .unwrap()
-}
-
 const STAGES: [(&str, f64); 5] = [
     ("pure-fx", 1.03),
     ("pure-fy", 1.20),

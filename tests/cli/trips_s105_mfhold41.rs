@@ -25,16 +25,6 @@ fn mfeval_grid_fit(test: &str, dir: &Path) -> Option<serde_json::Value> {
     Some(read_json(&out.with_extension("report.json")))
 }
 
-/// The stage named `name` of a report.
-fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
-    report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["stage"] == name)
-        .unwrap_or_else(|| panic!("no stage {name}: {report}"))
-}
-
 /// On data the model made itself, without noise, no hold may cost the
 /// fit what the data reject: combined Fy keeps its 15 coefficients free
 /// and its σ near the free fit's 0.064 % (0.911 % with the two holds), and

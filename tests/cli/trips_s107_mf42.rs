@@ -7,26 +7,6 @@
 
 use super::*;
 
-/// The stage `name` of a staged fit's report.
-fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
-    report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["stage"] == name)
-        .unwrap_or_else(|| panic!("{name}: {report}"))
-}
-
-/// The value of `key` in a `.tir` text.
-fn tir_value(text: &str, key: &str) -> f64 {
-    text.lines()
-        .find_map(|l| {
-            let (k, v) = l.split_once('=')?;
-            (k.trim() == key).then(|| v.split('$').next().unwrap().trim().parse().unwrap())
-        })
-        .unwrap_or_else(|| panic!("{key}: {text}"))
-}
-
 /// Before: `identify rig.csv --model mf61 --template <tir>` on the
 /// noise-free forces `tyre-eval` gives of that `.tir` stopped a stage of
 /// the data start in a local minimum and said nothing, while `--start

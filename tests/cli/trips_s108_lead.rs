@@ -8,24 +8,7 @@
 
 use super::*;
 
-/// A deterministic Gaussian series (a 64-bit LCG, twelve uniforms less
-/// six: unit variance).
-struct Noise(u64);
-
-impl Noise {
-    fn gauss(&mut self) -> f64 {
-        (0..12)
-            .map(|_| {
-                self.0 = self
-                    .0
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (self.0 >> 11) as f64 / (1u64 << 53) as f64
-            })
-            .sum::<f64>()
-            - 6.0
-    }
-}
+use crate::calibration::Noise;
 
 /// The bundled sedan step simulated into `dir`: its history's rows
 /// (1 kHz) of t, steer, speed, beta, yaw_rate, ay.

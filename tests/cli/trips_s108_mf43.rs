@@ -5,26 +5,6 @@
 
 use super::*;
 
-/// The stage `name` of a staged fit's report.
-fn stage<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
-    report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["stage"] == name)
-        .unwrap_or_else(|| panic!("{name}: {report}"))
-}
-
-/// The value of `key` in a `.tir` text.
-fn tir_value(text: &str, key: &str) -> f64 {
-    text.lines()
-        .find_map(|l| {
-            let (k, v) = l.split_once('=')?;
-            (k.trim() == key).then(|| v.split('$').next().unwrap().trim().parse().unwrap())
-        })
-        .unwrap_or_else(|| panic!("{key}: {text}"))
-}
-
 /// The number in `line` just before `tail` (e.g. " % at the end").
 fn number_before(line: &str, tail: &str) -> f64 {
     let head = &line[..line.find(tail).unwrap_or_else(|| panic!("{tail}: {line}"))];

@@ -100,30 +100,6 @@ fn a_sideslip_whose_scatter_reads_near_the_sensor_estimate_line_says_so_either_w
     );
 }
 
-/// Negates column `name` of the CSV file at `path` (its header names it).
-fn negate_column(path: &std::path::Path, name: &str) {
-    let text = fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap();
-    let k = header.split(',').position(|c| c == name).unwrap();
-    let mut out = format!("{header}\n");
-    for l in lines {
-        let cells: Vec<String> = l
-            .split(',')
-            .enumerate()
-            .map(|(i, c)| {
-                if i == k {
-                    format!("{}", -c.parse::<f64>().unwrap())
-                } else {
-                    c.to_string()
-                }
-            })
-            .collect();
-        out += &(cells.join(",") + "\n");
-    }
-    fs::write(path, out).unwrap();
-}
-
 /// One file of a campaign logged with its sideslip in the other sign
 /// convention, the others right: the pooled check passed (it refused only
 /// a campaign against its model as a whole) and nothing said which file;
@@ -142,7 +118,7 @@ fn one_file_whose_sideslip_moves_against_the_model_is_refused_by_name() {
         "1",
         "effects = [\"sensor_delay\"]\n",
     );
-    negate_column(&c.join("runs/step_100kph_6ms2.csv"), "beta");
+    map_column(&c.join("runs/step_100kph_6ms2.csv"), "beta", |v| -v);
     let o = run(&[
         "diagnose",
         c.to_str().unwrap(),

@@ -38,8 +38,9 @@ use crate::tyre::mf::{MagicFormula, MfVersion};
 /// kept.
 const LOAD_REACH: f64 = 1.25;
 
-/// The median of `v` (sorted here), `None` when empty.
-fn median(mut v: Vec<f64>) -> Option<f64> {
+/// The median of the finite positive values of `v` (sorted here),
+/// `None` when none.
+pub(super) fn median(mut v: Vec<f64>) -> Option<f64> {
     v.retain(|x| x.is_finite() && *x > 0.0);
     v.sort_by(f64::total_cmp);
     v.get(v.len() / 2).copied()

@@ -20,9 +20,7 @@ pub(super) fn kept(
     let Some(t) = template else {
         return Vec::new();
     };
-    let mut loads: Vec<f64> = rows.iter().map(|r| r.fz).filter(|f| *f > 0.0).collect();
-    loads.sort_by(f64::total_cmp);
-    let Some(&data_load) = loads.get(loads.len() / 2) else {
+    let Some(data_load) = super::nompres::median(rows.iter().map(|r| r.fz).collect()) else {
         return Vec::new();
     };
     let c = &t.coefficients;

@@ -7,8 +7,12 @@
 //!
 //! A run that was killed leaves its lock behind; the next run finds the
 //! process gone (on Linux, `/proc/<pid>` absent or a zombie), takes the lock
-//! over with a note on stderr, and removes the temporary files the killed
-//! run left (`.<name>.partial-<pid>.<ext>`, see [`super::write_atomic`]).
+//! over with a note on stderr. Whenever a run takes a folder, it removes
+//! the hidden files that runs no longer running left there (temporary
+//! outputs `.<name>.partial-<pid>.<ext>`, see [`super::write_atomic`], and
+//! locks moved aside in a take-over), named by a lock or not: a run killed
+//! in the middle of a take-over leaves a dead run's files that no lock
+//! names any more.
 //! A lock naming a running process that started after the lock was
 //! written is taken over too: that process is not the run that wrote it,
 //! but another program given the dead run's id (ids are reused: after a
@@ -185,15 +189,47 @@ fn missing_folders(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
-/// Removes the temporary files a killed process `pid` left in `dir`.
-fn remove_partials(dir: &Path, pid: u32) {
-    let tag = format!(".partial-{pid}");
+/// The process that left `name` behind, for the hidden files a run makes
+/// in its folder and removes again: a temporary output
+/// (`.<name>.partial-<pid>.<ext>`) or a lock moved aside in a take-over
+/// (`.<lock>.stale-<pid>`). `None` for any other file.
+fn leftover_of(name: &str) -> Option<u32> {
+    if !name.starts_with('.') {
+        return None;
+    }
+    let digits = |tail: &str| -> Option<u32> {
+        let end = tail
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(tail.len());
+        tail[..end].parse().ok()
+    };
+    if let Some(at) = name.rfind(".partial-") {
+        return digits(&name[at + ".partial-".len()..]);
+    }
+    let at = name.rfind(".stale-")?;
+    let tail = &name[at + ".stale-".len()..];
+    tail.bytes()
+        .all(|b| b.is_ascii_digit())
+        .then(|| digits(tail))?
+}
+
+/// Removes the hidden files that runs no longer running left in `dir`
+/// (see [`leftover_of`]). Run once the lock is held, whoever held it
+/// before: a run killed while it took a dead run's lock over leaves that
+/// run's temporary files named by no lock, and they would stay for good
+/// if only the files of the process a lock names were removed. A file
+/// of a live process (another output's run in a shared folder) stays.
+fn remove_leftovers(dir: &Path) {
+    let me = std::process::id();
     let Ok(entries) = fs::read_dir(dir) else {
         return;
     };
     for e in entries.flatten() {
         let name = e.file_name().to_string_lossy().into_owned();
-        if name.starts_with('.') && name.contains(&tag) {
+        let Some(pid) = leftover_of(&name) else {
+            continue;
+        };
+        if pid != me && alive(pid) == Some(false) {
             let _ = fs::remove_file(e.path());
         }
     }
@@ -238,6 +274,7 @@ impl OutputLock {
                             step: WriteStep::Write,
                             source,
                         })?;
+                    remove_leftovers(dir);
                     return Ok(Self::held(file, created, true));
                 }
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
@@ -264,10 +301,7 @@ impl OutputLock {
             match holder {
                 Some(pid) if pid == me => return Ok(Self::held(file, created, false)),
                 Some(pid) => match stale_because(pid, &file) {
-                    Some(why) => {
-                        Self::take_over(dir, &file, &text, &why)?;
-                        remove_partials(dir, pid);
-                    }
+                    Some(why) => Self::take_over(dir, &file, &text, &why)?,
                     None => return Err(Self::busy(dir, &file, &format!("process {pid}"))),
                 },
                 None => {
@@ -391,6 +425,34 @@ mod tests {
         drop(lock);
         assert!(!file.exists());
         assert!(dir.path().exists(), "a folder that existed stays");
+    }
+
+    #[test]
+    fn leftovers_of_dead_runs_are_removed_even_when_no_lock_names_them() {
+        let dir = tempfile::tempdir().unwrap();
+        let dead = 4_194_401;
+        let me = std::process::id();
+        let files = [
+            (format!(".diagnosis.json.partial-{dead}.json"), false),
+            (format!(".handling.lock.stale-{dead}"), false),
+            // A live process's temporary file (PID 1 and this test).
+            (".gaps.csv.partial-1.csv".to_string(), true),
+            (format!(".x.png.partial-{me}.png"), true),
+            // Not a run's leftover: a user's hidden file.
+            (format!(".notes-{dead}"), true),
+            (format!(".a.stale-{dead}x"), true),
+        ];
+        for (name, _) in &files {
+            fs::write(dir.path().join(name), "x").unwrap();
+        }
+        assert_eq!(leftover_of(&files[0].0), Some(dead));
+        assert_eq!(leftover_of(&files[1].0), Some(dead));
+        assert_eq!(leftover_of("diagnosis.json"), None);
+        let lock = OutputLock::acquire(dir.path()).unwrap();
+        for (name, stays) in &files {
+            assert_eq!(dir.path().join(name).exists(), *stays, "{name}");
+        }
+        drop(lock);
     }
 
     /// Sets the modification time of `file` to `seconds` ago.

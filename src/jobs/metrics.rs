@@ -477,6 +477,43 @@ impl MeasuredMetricsReport {
     }
 }
 
+/// The mark of a metric read against a steady value its channel never
+/// reaches (explained by [`unsteady_note`]).
+const UNSTEADY_MARK: &str = "  (no steady state)";
+
+/// Whether the yaw rate and the lateral acceleration drift without
+/// slowing across the steady window: no steady state is in the record, and
+/// every metric defined against one (a 90 % crossing, an overshoot, a
+/// gain, a total variance) measures a level the response passes on its
+/// way, not the car's response. A drift that slows, or a spread about a
+/// steady value, bounds how far the steady value read may be off (the
+/// warning says how far); the metrics stand with that bound.
+fn unsteady_channels(m: &StepMetrics) -> (bool, bool) {
+    let drifting = |s: Option<crate::metrics::Settling>| {
+        matches!(
+            s,
+            Some(crate::metrics::Settling::Drifting {
+                converging: false,
+                ..
+            })
+        )
+    };
+    (drifting(Some(m.settling.yaw_rate)), drifting(m.settling.ay))
+}
+
+/// The line after the table saying what the marked metrics are.
+fn unsteady_note(yaw: bool, ay: bool) -> Option<String> {
+    let which = match (yaw, ay) {
+        (true, true) => "the yaw rate and the lateral acceleration drift",
+        (true, false) => "the yaw rate drifts",
+        (false, true) => "the lateral acceleration drifts",
+        (false, false) => return None,
+    };
+    Some(format!(
+        "  no steady state: {which} without slowing through the steady window (see the warning), so the metrics marked \"(no steady state)\" are read against a level the response passes on its way, not a steady state it reaches: a 90 % crossing of that level is no response time, and an overshoot above it is not defined (a record held until the response settles reads them)"
+    ))
+}
+
 /// The ay response time's cell: below one sample interval where the log
 /// cannot read it (a warning says why), `—` without `ay`.
 fn ay_response_cell(m: &StepMetrics) -> String {
@@ -495,14 +532,18 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt = |v: Option<f64>, scale: f64| {
         v.map_or("—".to_string(), |x| crate::format::fixed(x * scale, 4))
     };
+    let (yaw, ay) = unsteady_channels(m);
+    // A metric read against a steady value the channel never reaches.
+    let mark = |unsteady: bool| if unsteady { UNSTEADY_MARK } else { "" };
     let mut out = vec![
         format!(
             "  steer step               {:>10.4} deg",
             m.steer_step.to_degrees()
         ),
         format!(
-            "  yaw-rate response time   {:>10.4} s",
-            m.yaw_rate_response_time
+            "  yaw-rate response time   {:>10.4} s{}",
+            m.yaw_rate_response_time,
+            mark(yaw)
         ),
         format!(
             "  yaw-rate peak time       {:>10} s",
@@ -511,46 +552,72 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         // Without a peak the overshoot is below what the run resolves (the
         // line after the table says how far), not a measured 0.
         format!(
-            "  yaw-rate overshoot       {:>10} %",
+            "  yaw-rate overshoot       {:>10} %{}",
             match m.yaw_rate_overshoot {
                 Some(percent) => format!("{percent:.2}"),
-                // Withheld, or beyond a spin's: a warning says why.
-                None if m.yaw_rate_peak_unmeasured || m.overshoot_unresolved() => "—".into(),
+                // Withheld, beyond a spin's, or above a level the yaw rate
+                // drifts past: a warning or the note says why.
+                None if yaw || m.yaw_rate_peak_unmeasured || m.overshoot_unresolved() => {
+                    "—".into()
+                }
                 None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
-            }
-        ),
-        format!("  ay response time         {:>10} s", ay_response_cell(m)),
-        format!(
-            "  yaw-rate gain            {:>10} 1/s",
-            crate::format::fixed(m.yaw_rate_gain, 4)
+            },
+            mark(yaw && m.yaw_rate_overshoot.is_some())
         ),
         format!(
-            "  steady ay                {:>10} m/s²",
-            opt(m.ay_steady, 1.0)
+            "  ay response time         {:>10} s{}",
+            ay_response_cell(m),
+            mark(ay && m.ay_response_time.is_some())
+        ),
+        format!(
+            "  yaw-rate gain            {:>10} 1/s{}",
+            crate::format::fixed(m.yaw_rate_gain, 4),
+            mark(yaw)
+        ),
+        format!(
+            "  steady ay                {:>10} m/s²{}",
+            opt(m.ay_steady, 1.0),
+            mark(ay && m.ay_steady.is_some())
         ),
         format!(
             "  steady sideslip          {:>10} deg",
             opt(m.beta_steady, 180.0 / std::f64::consts::PI)
         ),
-        format!("  TB                       {:>10} s·deg", opt(m.tb, 1.0)),
         format!(
-            "  E_r (yaw rate)           {:>10} s",
-            crate::format::fixed(m.yaw_rate_total_variance, 4)
+            "  TB                       {:>10} s·deg{}",
+            opt(m.tb, 1.0),
+            mark(yaw && m.tb.is_some())
         ),
         format!(
-            "  E_ay                     {:>10} s",
-            opt(m.ay_total_variance, 1.0)
+            "  E_r (yaw rate)           {:>10} s{}",
+            crate::format::fixed(m.yaw_rate_total_variance, 4),
+            mark(yaw)
         ),
-        format!("  Er                       {:>10} s", opt(m.er, 1.0)),
+        format!(
+            "  E_ay                     {:>10} s{}",
+            opt(m.ay_total_variance, 1.0),
+            mark(ay && m.ay_total_variance.is_some())
+        ),
+        format!(
+            "  Er                       {:>10} s{}",
+            opt(m.er, 1.0),
+            mark((yaw || ay) && m.er.is_some())
+        ),
     ];
+    out.extend(unsteady_note(yaw, ay));
     if let Some(f) = m.filter_hz {
         out.push(format!(
             "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {}",
             m.yaw_rate_noise_text()
         ));
     }
-    // A withheld peak's warning says why; it is no overshoot below a bound.
-    if m.yaw_rate_peak_time.is_none() && !m.yaw_rate_peak_unmeasured && !m.overshoot_unresolved() {
+    // A withheld peak's warning says why; it is no overshoot below a bound
+    // (nor above a level the yaw rate drifts past: the note says so).
+    if m.yaw_rate_peak_time.is_none()
+        && !yaw
+        && !m.yaw_rate_peak_unmeasured
+        && !m.overshoot_unresolved()
+    {
         let why = match m.yaw_rate_filter_ringing {
             0.0 => "the larger of min_overshoot and what the noise and the steady scatter allow".to_string(),
             // The filter's own overshoot on the steer step: a maximum

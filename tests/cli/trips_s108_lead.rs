@@ -12,7 +12,7 @@ use crate::calibration::Noise;
 
 /// The bundled sedan step simulated into `dir`: its history's rows
 /// (1 kHz) of t, steer, speed, beta, yaw_rate, ay.
-fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
+pub(crate) fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
     let scenario = dir.join("sedan_step.toml");
     fs::write(&scenario, bundled_scenario("sedan_step.toml")).unwrap();
     let out = dir.join("sedan");
@@ -33,7 +33,7 @@ fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
 }
 
 /// `rows` logged at 100 Hz through `f` into `dir/name`.
-fn logged(
+pub(crate) fn logged(
     rows: &[[f64; 6]],
     dir: &Path,
     name: &str,

@@ -48,6 +48,7 @@ pub struct SimulationSettings {
     pub max_step: Option<f64>,
 }
 
+pub use kmh::KmhSpeed;
 pub use rows::MAX_ROWS;
 
 fn default_step() -> f64 {
@@ -185,6 +186,8 @@ pub struct Scenario {
     /// What reading the scenario found to say: a replayed run's bank
     /// applied, a table the manoeuvre does not read.
     pub remarks: Vec<crate::error::ScenarioRemark>,
+    /// A stated speed that reads as km/h written as m/s ([`kmh`]).
+    pub kmh_speed: Option<KmhSpeed>,
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end
@@ -293,11 +296,8 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
     check_windows(src, &f.metrics, &manoeuvre)?;
-    let kind = remarks::kind_name(&f.manoeuvre);
-    remarks.extend(remarks::metrics_unused(src, &manoeuvre, kind));
-    if measured.is_none() {
-        remarks.extend(remarks::bank_scale_unused(src, kind));
-    }
+    let said = remarks::of_manoeuvre(src, &f.manoeuvre, &manoeuvre, measured.is_some());
+    remarks.extend(said);
     rows::check(src, &f.simulation, &manoeuvre, measured.as_ref())?;
     stability::check(
         src,
@@ -308,6 +308,8 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         &manoeuvre,
     )?;
     Ok(Scenario {
+        // Read before the manoeuvre moves into the scenario.
+        kmh_speed: kmh::kmh_speed(src, &manoeuvre, measured.is_some()),
         name: scenario_name(f, src)?,
         model,
         manoeuvre,
@@ -564,6 +566,7 @@ fn is_folder_name(name: &str) -> bool {
     !(name.trim().is_empty() || name.contains(['/', '\\']) || name == "." || name == "..")
 }
 
+mod kmh;
 pub(crate) mod layout;
 mod no_grip;
 mod reach;

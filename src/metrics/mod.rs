@@ -48,7 +48,7 @@
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
 use settling::{sideslip_scale, SETTLED_SPREAD};
-pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
+pub use settling::{AyLimit, AyLimitSource, Ceiling, ChannelSettling, Settling, JUDGED_NOISES};
 
 pub mod applicability;
 pub(crate) mod continuous;

@@ -12,6 +12,9 @@
 //! near-critical car's slow mode, time constant about 1 s, still rising
 //! 6 s after its step: its gain 0.15 % short of the closed form) is said to
 //! be approaching its steady value, with where its trend heads.
+//! Where a rising lateral acceleration's trend heads is bounded by the
+//! run's grip where it is known (`simulate`), and said as the window's
+//! trend carried on where it is not (a measured record): [`limit`].
 //! A channel whose step is within a few of its noise deviations is not
 //! judged at all: its steady window's spread is its noise's, whatever the
 //! car does (a synthetic 60 km/h step's sideslip moves 0.0033 rad under a
@@ -19,6 +22,9 @@
 
 use super::Normalised;
 use serde::{Deserialize, Serialize};
+
+mod limit;
+pub use limit::{AyLimit, AyLimitSource, Ceiling};
 
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
@@ -65,6 +71,10 @@ pub enum Settling {
         /// to a steady value); false where it holds or grows (a car
         /// leaving its steady turn).
         converging: bool,
+        /// Whether it heads above the window's mean (on the step's scale);
+        /// absent from a `metrics.json` written before it was kept.
+        #[serde(default)]
+        rising: bool,
     },
     /// Settled, but its trend across the steady window still heads `heads`
     /// (a share of its step, at least [`APPROACH_SAID`]) beyond the
@@ -105,9 +115,15 @@ impl Settling {
             (
                 true,
                 Some(Trend {
-                    heads, converging, ..
+                    heads,
+                    converging,
+                    rising,
                 }),
-            ) if heads >= SETTLED_DRIFT => Settling::Drifting { heads, converging },
+            ) if heads >= SETTLED_DRIFT => Settling::Drifting {
+                heads,
+                converging,
+                rising,
+            },
             (true, trend) => approaching(trend, 1.0),
         }
     }
@@ -169,6 +185,18 @@ impl ChannelSettling {
     /// that has not settled makes the yaw-rate `gain` (1/s) no
     /// steady-state gain, said with how far it may be off.
     pub fn not_settled_warning(&self, gain: f64) -> Option<String> {
+        self.not_settled_warning_within(gain, None)
+    }
+
+    /// [`Self::not_settled_warning`] of a run whose lateral acceleration's
+    /// limit is known (`ceiling`, a simulation's) or not (`None`, a
+    /// measured record's): where its trend heads is said as
+    /// the `limit` module says it.
+    pub fn not_settled_warning_within(
+        &self,
+        gain: f64,
+        ceiling: Option<&Ceiling>,
+    ) -> Option<String> {
         let named = self.named();
         let failed: Vec<String> = named
             .iter()
@@ -177,10 +205,19 @@ impl ChannelSettling {
                     "the {name} spreads by {} % of its step beyond its noise",
                     crate::format::significant(100.0 * beyond, 2)
                 )),
-                Settling::Drifting { heads, converging } => Some(format!(
-                    "the {name} is still {}: the trend across its steady window heads {} % of its step beyond its steady value",
+                Settling::Drifting {
+                    heads,
+                    converging,
+                    rising,
+                } => Some(format!(
+                    "the {name} is still {}: the trend across its steady window {}",
                     if *converging { "settling" } else { "drifting" },
-                    crate::format::significant(100.0 * heads, 2)
+                    limit::trend_words(
+                        name,
+                        (*heads, *rising),
+                        ceiling,
+                        (limit::Verb::Finite, "its steady value")
+                    ),
                 )),
                 _ => None,
             })
@@ -204,7 +241,9 @@ impl ChannelSettling {
         // gain 28 % above the car's).
         let off = match self.yaw_rate {
             Settling::NotSettled { beyond } => Some(Some(beyond)),
-            Settling::Drifting { heads, converging } => Some(converging.then_some(heads)),
+            Settling::Drifting {
+                heads, converging, ..
+            } => Some(converging.then_some(heads)),
             _ => None,
         };
         let gain = off.map_or(String::new(), |off| {
@@ -232,6 +271,16 @@ impl ChannelSettling {
     /// heads; with the yaw-rate `gain` (1/s) it heads to where the yaw
     /// rate approaches.
     pub fn approaching_warning(&self, gain: f64) -> Option<String> {
+        self.approaching_warning_within(gain, None)
+    }
+
+    /// [`Self::approaching_warning`] with the lateral acceleration's limit
+    /// known or not, as [`Self::not_settled_warning_within`] takes it.
+    pub fn approaching_warning_within(
+        &self,
+        gain: f64,
+        ceiling: Option<&Ceiling>,
+    ) -> Option<String> {
         let mut yaw = None;
         let each: Vec<String> = self
             .named()
@@ -242,10 +291,14 @@ impl ChannelSettling {
                         yaw = Some(if rising { 1.0 + heads } else { 1.0 - heads });
                     }
                     Some(format!(
-                        "the {name} still {} across its steady window, its trend heading {} % of its step {} the window's mean",
+                        "the {name} still {} across its steady window, its trend {}",
                         if rising { "grows" } else { "falls back" },
-                        crate::format::significant(100.0 * heads, 2),
-                        if rising { "beyond" } else { "back below" },
+                        limit::trend_words(
+                            name,
+                            (heads, rising),
+                            ceiling,
+                            (limit::Verb::Participle, "the window's mean")
+                        ),
                     ))
                 }
                 _ => None,
@@ -338,10 +391,13 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
     }
     match n.trend {
         Some(Trend {
-            heads, converging, ..
+            heads,
+            converging,
+            rising,
         }) if heads * to_scale >= SETTLED_DRIFT => Settling::Drifting {
             heads: heads * to_scale,
             converging,
+            rising,
         },
         trend => approaching(trend, to_scale),
     }
@@ -462,120 +518,4 @@ pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Optio
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The means over [`TREND_PARTS`] parts of [0, 2] of `x(t)`, normalised
-    /// so that the last half's mean is 1 (as a steady window's is).
-    fn parts(x: impl Fn(f64) -> f64) -> [f64; TREND_PARTS] {
-        let n = 400;
-        let w = 2.0 / TREND_PARTS as f64;
-        let raw: [f64; TREND_PARTS] = std::array::from_fn(|k| {
-            (0..n)
-                .map(|i| x(w * (k as f64 + (i as f64 + 0.5) / n as f64)))
-                .sum::<f64>()
-                / n as f64
-        });
-        let steady = raw[TREND_PARTS / 2..].iter().sum::<f64>() / (TREND_PARTS / 2) as f64;
-        raw.map(|m| m / steady)
-    }
-
-    #[test]
-    fn a_geometric_approach_heads_to_its_limit() {
-        // x = L − c·e^(−t/τ): the limit relative to the last window's mean.
-        let (limit, c, tau) = (1.0, 0.3, 0.8);
-        let x = |t: f64| limit - c * (-(t + 2.0) / tau).exp();
-        let p = parts(x);
-        let steady = {
-            let n = 4000;
-            (0..n)
-                .map(|i| x(1.0 + (i as f64 + 0.5) / n as f64))
-                .sum::<f64>()
-                / n as f64
-        };
-        let trend = trend_of_parts(p, 0.0).unwrap();
-        assert!(trend.converging);
-        let expected = limit / steady - 1.0;
-        assert!(
-            (trend.heads - expected).abs() < 1e-3 * expected,
-            "{} vs {expected}",
-            trend.heads
-        );
-    }
-
-    #[test]
-    fn ringing_that_turns_back_is_no_trend() {
-        // A decaying oscillation of period 1.5 s: monotone over one window
-        // at times, never over two.
-        let x =
-            |t: f64| 1.0 + 0.05 * (-t / 3.0).exp() * (2.0 * std::f64::consts::PI * t / 1.5).cos();
-        for shift in [0.0, 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4] {
-            assert_eq!(
-                trend_of_parts(parts(|t| x(t + shift)), 0.0),
-                None,
-                "{shift}"
-            );
-        }
-    }
-
-    #[test]
-    fn a_change_within_the_noise_is_no_trend() {
-        let p = parts(|t| 1.0 + 0.01 * t);
-        // Each part moves by 0.01 · 2/12 of the step: within three deviations of 0.0006.
-        assert_eq!(trend_of_parts(p, 0.0006), None);
-        assert!(trend_of_parts(p, 0.0005).is_some());
-    }
-
-    #[test]
-    fn a_trend_that_does_not_slow_is_not_converging() {
-        let trend = trend_of_parts(parts(|t| 1.0 + 0.05 * t * t), 0.0).unwrap();
-        assert!(!trend.converging);
-        assert!(trend.heads > 0.05, "{}", trend.heads);
-    }
-
-    #[test]
-    fn a_settled_spread_with_a_trend_beyond_the_drift_is_drifting() {
-        let trend = Trend {
-            heads: 0.089,
-            converging: true,
-            rising: true,
-        };
-        assert_eq!(
-            Settling::of_spread(0.01, Some(trend)),
-            Settling::Drifting {
-                heads: 0.089,
-                converging: true
-            }
-        );
-        // Within the drift but beyond a tenth of a percent: approaching;
-        // within that, settled.
-        let small = Trend {
-            heads: 0.5 * SETTLED_DRIFT,
-            converging: true,
-            rising: true,
-        };
-        assert_eq!(
-            Settling::of_spread(0.01, Some(small)),
-            Settling::Approaching {
-                heads: 0.5 * SETTLED_DRIFT,
-                rising: true
-            }
-        );
-        let tiny = Trend {
-            heads: 0.5 * APPROACH_SAID,
-            ..small
-        };
-        assert_eq!(Settling::of_spread(0.01, Some(tiny)), Settling::Settled);
-        assert_eq!(
-            Settling::of_spread(0.03, Some(trend)),
-            Settling::NotSettled { beyond: 0.03 }
-        );
-        let channels = ChannelSettling {
-            yaw_rate: Settling::of_spread(0.01, Some(trend)),
-            ay: Some(Settling::Settled),
-            beta: None,
-        };
-        assert!(!channels.settled());
-        assert_eq!(channels.only_converging(), Some(0.089));
-    }
-}
+mod tests;

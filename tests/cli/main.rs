@@ -949,3 +949,4 @@ mod trips_s108_lead;
 mod trips_s108_mf43;
 mod trips_s108_runwords43;
 mod trips_s109_lead;
+mod trips_s109_simwords41;

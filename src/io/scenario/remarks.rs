@@ -88,3 +88,20 @@ pub(super) fn metrics_unused(
     let (line, _) = crate::io::toml_file::line_col(&src.text, span.start);
     Some(ScenarioRemark::MetricsUnused { line, kind })
 }
+
+/// What is said of manoeuvre `m` as the file writes it (`spec`): a
+/// `[metrics]` table it does not read, and a `bank_profile_scale` where it
+/// replays no run (`replayed` false).
+pub(super) fn of_manoeuvre(
+    src: &TomlSource,
+    spec: &super::ManoeuvreSpec,
+    m: &Manoeuvre,
+    replayed: bool,
+) -> Vec<ScenarioRemark> {
+    let kind = kind_name(spec);
+    let mut said: Vec<ScenarioRemark> = metrics_unused(src, m, kind).into_iter().collect();
+    if !replayed {
+        said.extend(bank_scale_unused(src, kind));
+    }
+    said
+}

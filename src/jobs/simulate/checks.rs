@@ -41,7 +41,7 @@ use crate::io::fitted_ranges::{past_by, FittedRanges, RangePoint, SLACK};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
-use crate::metrics::{Settling, StepMetrics};
+use crate::metrics::{Ceiling, Settling, StepMetrics};
 use crate::sim::TimeHistory;
 use crate::tyre::mf::{MagicFormula, TyreSide};
 use crate::tyre::Tyre;
@@ -59,6 +59,8 @@ pub(super) struct Said {
 pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     let mut said = Said::default();
     said.notes.extend(sc.unread.iter().map(|u| u.note()));
+    said.notes
+        .extend(sc.kmh_speed.as_ref().map(|k| k.to_string()));
     for r in &sc.remarks {
         match r.is_note() {
             true => said.notes.push(r.to_string()),
@@ -154,8 +156,12 @@ pub(super) const ASKED_AY_MISS: f64 = 0.02;
 /// the car settles on another branch, or slides on). A run whose steady
 /// window has not settled ([`StepMetrics::settled`]) settles nowhere yet:
 /// its window's mean is said as that, with where its trend heads where the
-/// metrics know it, never as where "the run settles".
-pub(super) fn asked_ay_missed(asked: f64, m: &StepMetrics) -> Option<String> {
+/// metrics know it ([`trend_heads`]), never as where "the run settles".
+pub(super) fn asked_ay_missed(
+    asked: f64,
+    m: &StepMetrics,
+    ceiling: Option<&Ceiling>,
+) -> Option<String> {
     let reached = m.ay_steady?;
     let miss = (reached - asked) / asked.abs().max(1e-12);
     if miss.abs() <= ASKED_AY_MISS {
@@ -172,24 +178,43 @@ pub(super) fn asked_ay_missed(asked: f64, m: &StepMetrics) -> Option<String> {
             "the step was sized for a steady lateral acceleration of {asked_text} m/s² (`lateral_acceleration`), but the run settles at {reached_text} m/s² ({miss_text} %): {why}; the metrics describe the run, not {asked_text} m/s²"
         ));
     }
-    // Still moving: where the ay's trend heads beyond the window's mean,
-    // where the metrics measured one.
-    let heads = match m.settling.ay {
-        Some(Settling::Drifting { heads, .. }) | Some(Settling::Approaching { heads, .. }) => {
-            Some(heads)
-        }
-        _ => None,
-    };
-    let moving = match heads {
-        Some(h) => format!(
-            "still moving: its trend heads {} m/s² beyond that mean",
-            crate::format::fixed(h * reached.abs(), 2)
-        ),
+    let moving = match trend_heads(m, reached, ceiling) {
+        Some(h) => format!("still moving: its trend {h}"),
         None => "still moving at the end of the run".into(),
     };
     Some(format!(
         "the step was sized for a steady lateral acceleration of {asked_text} m/s² (`lateral_acceleration`), but the run has not settled: its lateral acceleration averages {reached_text} m/s² ({miss_text} %) over the steady window and is {moving}, so it reaches no steady state within the run; {why}; the metrics describe a run still moving, not a steady turn at {asked_text} m/s² (a longer `end` shows where it goes)"
     ))
+}
+
+/// Where the lateral acceleration's trend heads from its steady window's
+/// mean `reached` (m/s²), where the metrics measured one, in words: a
+/// trend is a line through the window, and where carrying it on would
+/// pass the `ceiling` (the most |ay| this car reaches on this road) it is
+/// said to climb toward it, with the room left, not where the line goes.
+fn trend_heads(m: &StepMetrics, reached: f64, ceiling: Option<&Ceiling>) -> Option<String> {
+    let (heads, rising) = match m.settling.ay? {
+        Settling::Drifting { heads, rising, .. } | Settling::Approaching { heads, rising } => {
+            (heads, rising)
+        }
+        _ => return None,
+    };
+    let by = heads * reached.abs();
+    let by_text = crate::format::fixed(by, 2);
+    let passes = |c: &&Ceiling| rising && reached.abs() + by > c.limit.value;
+    let Some(c) = ceiling.filter(passes) else {
+        let toward = if rising { "beyond" } else { "back below" };
+        return Some(format!("heads {by_text} m/s² {toward} that mean"));
+    };
+    let room = c.limit.value - reached.abs();
+    Some(match room > 0.0 {
+        true => format!(
+            "climbs toward {}, {} m/s² above that mean (carried on, a line through the window would pass it, where no car on this road goes)",
+            c.limit,
+            crate::format::fixed(room, 2)
+        ),
+        false => format!("climbs on beyond {}, which the run already passes", c.limit),
+    })
 }
 
 /// Where `x` goes beyond `limit` in magnitude: its largest value, the

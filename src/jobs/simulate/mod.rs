@@ -4,6 +4,7 @@
 //! the run disagree (`gap.json`) out; beside them, what the run is that
 //! the scenario's words do not say ([`checks`]).
 
+mod ay_ceiling;
 pub(crate) mod checks;
 pub(crate) mod critical;
 mod grid_peak;
@@ -251,8 +252,10 @@ fn largest_slip(h: &TimeHistory) -> [f64; 2] {
 /// settling, a filter that measures itself, a step no steering drives, a
 /// steady ay asked and missed, a schedule no car on this road drives.
 fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
+    // Where the lateral acceleration heads, bounded by what this car can
+    // reach on this road.
     let mut warnings: Vec<String> = metrics
-        .and_then(StepMetrics::settling_warning)
+        .and_then(|m| ay_ceiling::settling_warning(sc, m))
         .into_iter()
         .collect();
     // A `[metrics] filter_hz` slow enough to measure itself, said as
@@ -277,7 +280,8 @@ fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
     // A step sized for a steady lateral acceleration that settles at
     // another, or settles nowhere within the run.
     if let (Some(asked), Some(m)) = (sc.asked_ay, metrics) {
-        warnings.extend(checks::asked_ay_missed(asked, m));
+        let ceiling = m.ay_steady.map(|ay| ay_ceiling::ceiling(sc, ay));
+        warnings.extend(checks::asked_ay_missed(asked, m, ceiling.as_ref()));
     }
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

@@ -86,6 +86,42 @@ pub struct PointResult {
     pub agree: bool,
     /// Fitness evaluations of the PSO search.
     pub pso_evaluations: usize,
+    /// Sum of the indices of the equilibria the swarm found in the box.
+    #[serde(default)]
+    pub index_sum: i32,
+    /// Winding number of the field around the box (None: not asked, or
+    /// the field vanishes on the box's edge).
+    #[serde(default)]
+    pub winding: Option<i32>,
+}
+
+/// The swarm's completeness certificate at one condition (Poincaré–Hopf:
+/// the indices of the equilibria found add up to the winding number).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Certificate {
+    /// The index sum equals the winding number.
+    Holds,
+    /// The index sum differs from the winding number: the swarm missed
+    /// an equilibrium (or found one that is none).
+    FallsShort,
+    /// No winding number: the field nearly vanishes on the box's edge.
+    Undefined,
+    /// `certify = false`: no winding number taken.
+    NotAsked,
+}
+
+impl PointResult {
+    /// The certificate at this condition; `certify`: whether the search
+    /// took the winding number.
+    pub fn certificate(&self, certify: bool) -> Certificate {
+        match (certify, self.winding) {
+            (false, _) => Certificate::NotAsked,
+            (true, None) => Certificate::Undefined,
+            (true, Some(w)) if w == self.index_sum => Certificate::Holds,
+            (true, Some(_)) => Certificate::FallsShort,
+        }
+    }
 }
 
 /// A whole sweep.
@@ -229,6 +265,8 @@ pub fn solve_lines(
                         found,
                         agree,
                         pso_evaluations: stats.evaluations,
+                        index_sum: stats.index_sum,
+                        winding: stats.winding,
                     }
                 })
                 .collect()

@@ -123,7 +123,7 @@ pub use stiffness_unit::{
     argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
     MOST_LOAD_STIFFNESS,
 };
-pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
+pub use sweep_limit::{SwarmCount, SweepLimit, MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
 use thiserror::Error;
 pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use units::{

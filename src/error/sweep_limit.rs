@@ -1,6 +1,8 @@
 //! The physical ranges of an equilibrium sweep's search box (`[box]`), as
 //! [`super::Limit::Sweep`] says them: `beta_max = 30` (degrees where radians
-//! are read) searched a box of ±30 rad without a word. Units: rad.
+//! are read) searched a box of ±30 rad without a word. Units: rad. Also the
+//! least counts of its swarm (`[pso]`): `particles = 0` ran a swarm of two
+//! and `iterations = 0` no flight at all, both without a word.
 
 use crate::format::rounded;
 use thiserror::Error;
@@ -27,6 +29,49 @@ pub enum SweepLimit {
         /// The largest steady yaw rate of the sweep, μ_peak·μ·g/u_min, rad/s.
         steady: f64,
     },
+    /// A `[pso]` count below what the swarm needs.
+    #[error("{}", swarm_count(*count))]
+    SwarmCount {
+        /// Which count.
+        count: SwarmCount,
+    },
+}
+
+/// A count of the PSO equilibrium search (`[pso]`), each with the least
+/// the search needs ([`SwarmCount::least`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SwarmCount {
+    /// `particles`: a ring swarm draws each particle to the best of itself
+    /// and its two neighbours, so it needs three.
+    Particles,
+    /// `iterations`: a swarm that never moves searches only its random
+    /// first positions.
+    Iterations,
+    /// `rounds`: no round, no search.
+    Rounds,
+}
+
+impl SwarmCount {
+    /// The least count the search needs.
+    pub fn least(self) -> usize {
+        match self {
+            SwarmCount::Particles => 3,
+            SwarmCount::Iterations | SwarmCount::Rounds => 1,
+        }
+    }
+}
+
+/// What a count below its least is refused with.
+fn swarm_count(count: SwarmCount) -> String {
+    let why = match count {
+        SwarmCount::Particles => "the swarm is a ring, each particle drawn to the best of itself and its two neighbours, and fewer particles make no ring (0 or 1 ran as a swarm of 2 without a word)",
+        SwarmCount::Iterations => "with none the swarm never moves, and its random first positions are all the search would see",
+        SwarmCount::Rounds => "with none the swarm never flies, and every equilibrium would be the exact solver's alone",
+    };
+    format!(
+        "must be at least {}: {why}; leave the key out for the default",
+        count.least()
+    )
 }
 
 /// How many times the largest steady yaw rate a search box may reach: no

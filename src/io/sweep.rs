@@ -12,8 +12,9 @@ use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
-use crate::error::{FileKind, SweepLimit, Wanted, MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
+use crate::error::{FileKind, SwarmCount, SweepLimit, Wanted};
 use crate::error::{InputError, Limit, Location, ParamError, ParamReason};
+use crate::error::{MAX_BOX_SIDESLIP, MAX_BOX_YAW_RATES};
 use crate::tyre::TyreModel;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, MIN_SPEED};
 use serde::Deserialize;
@@ -429,16 +430,9 @@ fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<
     }
 }
 
-/// The search box: each key as the file gives it (checked), else its
-/// default (|β| ≤ 0.6 rad, |r| ≤ 1.2·μ_peak·μ·g/u_min).
-fn search_box(
-    src: &TomlSource,
-    model: &VehicleModel,
-    grid: &Grid,
-    b: BoxSpec,
-) -> Result<SearchBox, InputError> {
-    // A key beyond its range, refused at its line.
-    let beyond = |key: &str, value: f64, why: SweepLimit| InputError::Sweep {
+/// A key of the sweep beyond its range, refused at its line.
+fn beyond(src: &TomlSource, key: &str, value: f64, why: SweepLimit) -> InputError {
+    InputError::Sweep {
         path: src.path.clone(),
         at: src.key_span(key).map(|s| {
             let (line, column) = line_col(&src.text, s.start);
@@ -447,7 +441,33 @@ fn search_box(
         key: key.into(),
         value,
         why,
-    };
+    }
+}
+
+/// Refuses a `[pso]` count below what the swarm needs, at its key: the
+/// optimiser itself would run 0 particles as 2 and 0 iterations as its
+/// random first positions, without a word.
+fn swarm_counts(src: &TomlSource, pso: &PsoSearch) -> Result<(), InputError> {
+    let counts = [
+        ("pso.particles", pso.particles, SwarmCount::Particles),
+        ("pso.iterations", pso.iterations, SwarmCount::Iterations),
+        ("pso.rounds", pso.rounds, SwarmCount::Rounds),
+    ];
+    match counts.into_iter().find(|(_, n, c)| *n < c.least()) {
+        Some((key, n, count)) => Err(beyond(src, key, n as f64, SweepLimit::SwarmCount { count })),
+        None => Ok(()),
+    }
+}
+
+/// The search box: each key as the file gives it (checked), else its
+/// default (|β| ≤ 0.6 rad, |r| ≤ 1.2·μ_peak·μ·g/u_min).
+fn search_box(
+    src: &TomlSource,
+    model: &VehicleModel,
+    grid: &Grid,
+    b: BoxSpec,
+) -> Result<SearchBox, InputError> {
+    let beyond = |key: &str, value: f64, why: SweepLimit| beyond(src, key, value, why);
     if let Some(beta) = b.beta_max {
         ParamError::positive("beta_max", beta).map_err(|e| param_error(src, Some("box"), e))?;
         if beta > MAX_BOX_SIDESLIP {
@@ -492,6 +512,7 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
         ..
     } = resolve_model(&src, &f.vehicle, &f.tyres, f.model)?;
     equilibrium_effects(&src, &f.model.effects)?;
+    swarm_counts(&src, &f.pso)?;
     let grid = Grid {
         steer: expand(&f.sweep.steer, "steer", &src)?,
         friction: expand(&f.sweep.friction, "friction", &src)?,

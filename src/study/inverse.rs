@@ -5,9 +5,12 @@
 //! combination under a preference (closest to the current tyres, distances
 //! relative to them) starts from the closest curve point and is refined with
 //! the simulator itself: k2 solved for the target by secant at each k1, and
-//! k1 chosen by golden-section search.
+//! k1 chosen by golden-section search. The refinement is held to the map
+//! (its range of k1 and k2): beyond it the map has no data, and a best
+//! point there was reported as if the map had found it.
 
 use super::{Metric, Sample, Study, Target};
+use serde::Serialize;
 
 /// A full map: every front value with every rear value.
 #[derive(Debug, Clone)]
@@ -20,7 +23,93 @@ pub struct Map {
     pub samples: Vec<Sample>,
 }
 
+/// The ranges a map spans, N/rad: (lowest, highest) of each axle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapBounds {
+    /// Front stiffness.
+    pub front: (f64, f64),
+    /// Rear stiffness.
+    pub rear: (f64, f64),
+}
+
+/// The edge of the map a best combination was held to: the curve may come
+/// closer to the reference beyond it, where the map has no data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MapEdge {
+    /// The lowest front stiffness of the map.
+    FrontLowest,
+    /// The highest front stiffness of the map.
+    FrontHighest,
+    /// The lowest rear stiffness of the map.
+    RearLowest,
+    /// The highest rear stiffness of the map.
+    RearHighest,
+}
+
+impl MapEdge {
+    /// The words for it: which axle, which end.
+    pub fn words(self) -> &'static str {
+        match self {
+            MapEdge::FrontLowest => "the lowest front stiffness",
+            MapEdge::FrontHighest => "the highest front stiffness",
+            MapEdge::RearLowest => "the lowest rear stiffness",
+            MapEdge::RearHighest => "the highest rear stiffness",
+        }
+    }
+}
+
+impl MapBounds {
+    /// How far `kr` lies outside the rear range, relative to its width
+    /// (0 inside).
+    fn rear_excess(&self, kr: f64) -> f64 {
+        let (lo, hi) = self.rear;
+        ((lo - kr).max(kr - hi).max(0.0)) / (hi - lo).max(f64::MIN_POSITIVE)
+    }
+
+    /// The edge (k1, k2) lies on, if any: within 1e-4 of the front range's
+    /// width of a front end (the golden section closes to far less), within
+    /// 1e-3 of the rear range's width of a rear end or beyond it.
+    pub fn edge(&self, (kf, kr): (f64, f64)) -> Option<MapEdge> {
+        let (f, r) = (self.front, self.rear);
+        let (wf, wr) = (f.1 - f.0, r.1 - r.0);
+        if kf <= f.0 + 1e-4 * wf {
+            Some(MapEdge::FrontLowest)
+        } else if kf >= f.1 - 1e-4 * wf {
+            Some(MapEdge::FrontHighest)
+        } else if kr <= r.0 + 1e-3 * wr {
+            Some(MapEdge::RearLowest)
+        } else if kr >= r.1 - 1e-3 * wr {
+            Some(MapEdge::RearHighest)
+        } else {
+            None
+        }
+    }
+}
+
+/// The best combination on a curve ([`best_on_curve`]), N/rad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Best {
+    /// Front stiffness.
+    pub k_front: f64,
+    /// Rear stiffness.
+    pub k_rear: f64,
+    /// The metric simulated there.
+    pub value: f64,
+    /// The map's edge it was held to, if any.
+    pub edge: Option<MapEdge>,
+}
+
 impl Map {
+    /// The ranges the map spans.
+    pub fn bounds(&self) -> MapBounds {
+        let ends = |v: &[f64]| (v[0], v[v.len() - 1]);
+        MapBounds {
+            front: ends(&self.front),
+            rear: ends(&self.rear),
+        }
+    }
+
     /// The metric at grid point (i, j).
     pub fn value(&self, metric: Metric, i: usize, j: usize) -> f64 {
         metric.of_sample(&self.samples[i * self.rear.len() + j])
@@ -123,26 +212,37 @@ pub(crate) fn solve_rear(
 /// The best combination on the `metric` = `target` curve: closest to
 /// `reference`. Starts from the closest curve point of the map and refines
 /// over k1 within ± `span` by golden-section search with k2 solved by
-/// simulation. Returns (k1, k2, the metric simulated there).
+/// simulation, held to the map's `bounds`: k1 within its front range, and a
+/// k2 beyond its rear range costed above any inside it (growing with the
+/// excess, so the search turns back to the map).
 pub(crate) fn best_on_curve(
     study: &Study,
     metric: Metric,
     curve: &[(f64, f64)],
+    bounds: MapBounds,
     reference: (f64, f64),
-    target: f64,
-    span: f64,
-) -> Option<(f64, f64, f64)> {
+    (target, span): (f64, f64),
+) -> Option<Best> {
     let start = *curve
         .iter()
         .min_by(|a, b| distance(**a, reference).total_cmp(&distance(**b, reference)))?;
     let tol = 1e-6 * target.abs().max(1e-9);
+    // Off the map's rear range: above every distance a point on it has.
+    const OFF_MAP: f64 = 1e6;
     let cost = |kf: f64| {
-        solve_rear(study, metric, kf, start.1, (target, tol))
-            .map_or((f64::INFINITY, f64::NAN), |kr| {
-                (distance((kf, kr), reference), kr)
-            })
+        solve_rear(study, metric, kf, start.1, (target, tol)).map_or(
+            (f64::INFINITY, f64::NAN),
+            |kr| {
+                let excess = bounds.rear_excess(kr);
+                let off = if excess > 0.0 { OFF_MAP + excess } else { 0.0 };
+                (distance((kf, kr), reference) + off, kr)
+            },
+        )
     };
-    let (mut lo, mut hi) = (start.0 - span, start.0 + span);
+    let (mut lo, mut hi) = (
+        (start.0 - span).max(bounds.front.0),
+        (start.0 + span).min(bounds.front.1),
+    );
     let g = 0.5 * (5f64.sqrt() - 1.0);
     for _ in 0..25 {
         let (m1, m2) = (hi - g * (hi - lo), lo + g * (hi - lo));
@@ -154,5 +254,10 @@ pub(crate) fn best_on_curve(
     }
     let kf = 0.5 * (lo + hi);
     let (d, kr) = cost(kf);
-    d.is_finite().then(|| (kf, kr, study.value(metric, kf, kr)))
+    d.is_finite().then(|| Best {
+        k_front: kf,
+        k_rear: kr,
+        value: study.value(metric, kf, kr),
+        edge: bounds.edge((kf, kr)),
+    })
 }

@@ -18,7 +18,9 @@ pub(crate) mod rbf;
 pub(crate) mod response;
 pub(crate) mod stiffness;
 
+pub use inverse::MapEdge;
 pub use response::{NotHandling, ReportedSample, Response, SideslipEnd};
+pub use stiffness::{NoTyreHas, StudyAxle};
 
 use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;

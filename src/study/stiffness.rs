@@ -13,6 +13,7 @@ use crate::error::{
     ParamError, ParamReason, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
     MOST_LOAD_STIFFNESS,
 };
+use serde::Serialize;
 
 /// An axle's tyre as a stiffness is judged: its name and static load.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +53,70 @@ pub(crate) fn stiffness_problem(
     (at.load > 0.0 && !a_tyres).then(|| ParamReason::StiffnessAgainstLoad(Box::new(slip)))
 }
 
+/// An axle of the studied car.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StudyAxle {
+    /// The front axle.
+    Front,
+    /// The rear axle.
+    Rear,
+}
+
+/// A stiffness no tyre has, computed rather than given (the RBF network's
+/// answer to a target beyond its data): the first axle whose stiffness
+/// lies outside [`LEAST_LOAD_STIFFNESS`]–[`MOST_LOAD_STIFFNESS`] times its
+/// tyre's static load per rad, and that ratio, 1/rad (NaN for no number).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NoTyreHas {
+    /// The axle.
+    pub axle: StudyAxle,
+    /// Its stiffness per unit of its tyre's static load, 1/rad.
+    pub per_load: f64,
+}
+
+impl NoTyreHas {
+    /// "stiffer" or "softer" than any tyre (or no number).
+    pub fn words(&self) -> String {
+        let axle = match self.axle {
+            StudyAxle::Front => "front",
+            StudyAxle::Rear => "rear",
+        };
+        let than = format!(
+            "(a tyre's cornering stiffness is {LEAST_LOAD_STIFFNESS}–{MOST_LOAD_STIFFNESS} times its static load per rad)"
+        );
+        match self.per_load {
+            r if r > MOST_LOAD_STIFFNESS => format!(
+                "stiffer than any tyre: the {axle}'s is {} times its tyre's static load per rad {than}",
+                crate::format::significant(r, 4)
+            ),
+            r if r.is_finite() => format!(
+                "softer than any tyre: the {axle}'s is {} times its tyre's static load per rad {than}",
+                crate::format::significant(r, 4)
+            ),
+            _ => format!("no tyre's: the {axle}'s is no number"),
+        }
+    }
+}
+
 impl Study {
+    /// Whether (k_front, k_rear), N/rad per tyre, is a stiffness no tyre
+    /// has: the first axle outside the range a tyre's lies in, as the
+    /// study file's values are judged ([`stiffness_problem`]).
+    pub(crate) fn no_tyre_has(&self, k_front: f64, k_rear: f64) -> Option<NoTyreHas> {
+        let loads = self.axle_loads();
+        [
+            (StudyAxle::Front, k_front, loads[0]),
+            (StudyAxle::Rear, k_rear, loads[1]),
+        ]
+        .into_iter()
+        .map(|(axle, k, at)| NoTyreHas {
+            axle,
+            per_load: k / at.load,
+        })
+        .find(|n| !(LEAST_LOAD_STIFFNESS..=MOST_LOAD_STIFFNESS).contains(&n.per_load))
+    }
+
     /// Each axle's tyre with its static load (front, rear).
     fn axle_loads(&self) -> [AxleLoad; 2] {
         let (sf, sr) = self.model.vehicle.static_axle_loads();

@@ -95,8 +95,16 @@ fn inverse_answers_resimulate_to_the_target() {
     // The refined best point is on the curve and no farther from the
     // reference than any interpolated curve point.
     let reference = (500.0 * DEG, 540.0 * DEG);
-    let (kf, kr, e) =
-        best_on_curve(&st, Metric::Er, &curve, reference, target, 100.0 * DEG).unwrap();
+    let best = best_on_curve(
+        &st,
+        Metric::Er,
+        &curve,
+        map.bounds(),
+        reference,
+        (target, 100.0 * DEG),
+    )
+    .unwrap();
+    let (kf, kr, e) = (best.k_front, best.k_rear, best.value);
     assert!((e - target).abs() <= 1e-6 * target);
     let best_curve = curve
         .iter()

@@ -948,5 +948,6 @@ mod trips_s108_diagwords43;
 mod trips_s108_lead;
 mod trips_s108_mf43;
 mod trips_s108_runwords43;
+mod trips_s109_eqstudy41;
 mod trips_s109_lead;
 mod trips_s109_simwords41;

@@ -6,6 +6,7 @@
 
 mod critical;
 mod figures;
+mod misses;
 mod outputs;
 mod slices;
 
@@ -21,6 +22,7 @@ use crate::jobs::shard::{
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
 use crate::vehicle::{Kinematics, VehicleModel};
+pub use misses::{ConditionMiss, Spot};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -37,6 +39,9 @@ pub struct EquilibriaSummary {
     pub agreeing: usize,
     /// The same, %.
     pub agreement_percent: f64,
+    /// Each condition where they disagree or the swarm's index sum falls
+    /// short of the winding number: which solver found what.
+    pub misses: Vec<ConditionMiss>,
     /// Largest residual max(|β̇|, |ṙ|) of an equilibrium.
     pub max_residual: f64,
     /// PSO seed.
@@ -213,6 +218,7 @@ fn report(
         conditions: n,
         agreeing: agree,
         agreement_percent: 100.0 * agree as f64 / n as f64,
+        misses: misses::misses(&res, sw.pso.certify),
         max_residual: res
             .points
             .iter()
@@ -267,6 +273,7 @@ impl EquilibriaReport {
             "  PSO and exact agree at {}/{} conditions ({:.1} %); largest residual {:.1e}; {:.2} s",
             s.agreeing, s.conditions, s.agreement_percent, s.max_residual, s.seconds
         ));
+        out.extend(misses::lines(&s.misses));
         for (k, c) in &s.equilibria_in_box_histogram {
             out.push(format!(
                 "  {} with {} in the box",

@@ -4,11 +4,13 @@
 //! refined by simulation) out, as `study.csv`, `maps.png`, `rbf.json`,
 //! `rbf.png`, `inverse.json` and `summary.json`; stiffness per tyre in the file's unit.
 
-use crate::study::inverse::{best_on_curve, distance, Map};
+use crate::study::inverse::{best_on_curve, distance, Map, MapEdge};
 use crate::study::rbf::Rbf;
+use crate::study::stiffness::NoTyreHas;
 use crate::study::{Metric, NotHandling, Sample, StiffnessUnit, Study};
 
 mod figures;
+mod lines;
 mod numbers;
 mod rbf_fit;
 mod table;
@@ -77,6 +79,9 @@ pub struct BestAnswer {
     pub resimulated: f64,
     /// Relative distance to the current tyres.
     pub distance_to_reference: f64,
+    /// The map's edge the answer was held to (the curve may come closer
+    /// beyond it, where the map has no data); None inside the map.
+    pub at_map_edge: Option<MapEdge>,
 }
 
 /// The network's answer to an Er target, re-simulated.
@@ -87,8 +92,12 @@ pub struct RbfAnswer {
     /// Rear stiffness.
     pub k_rear: f64,
     /// Er there, simulated, s; None where the re-simulated response has
-    /// no Er (it did not settle, or is no handling response).
+    /// no Er (it did not settle, or is no handling response) or where the
+    /// answer is no tyre's (`no_tyre_has`: not simulated).
     pub er_resimulated: Option<f64>,
+    /// The answer's stiffness no tyre has (the network extrapolating far
+    /// beyond its data), if so: the answer is then not simulated.
+    pub no_tyre_has: Option<NoTyreHas>,
     /// Its error against the target, %.
     pub error_percent: Option<f64>,
     /// The Er the network was trained on, smallest and largest, s: a
@@ -382,21 +391,30 @@ fn answer(
         let region = map.region(&all).iter().map(per_unit).collect();
         let curve = map.iso_curve(t.metric, t.value);
         let span = 2.0 * (input.front[1] - input.front[0]);
+        let bounds = map.bounds();
         let best =
-            best_on_curve(st, t.metric, &curve, reference, t.value, span).map(|(kf, kr, e)| {
+            best_on_curve(st, t.metric, &curve, bounds, reference, (t.value, span)).map(|b| {
                 BestAnswer {
-                    k_front: kf / k,
-                    k_rear: kr / k,
-                    resimulated: e,
-                    distance_to_reference: distance((kf, kr), reference),
+                    k_front: b.k_front / k,
+                    k_rear: b.k_rear / k,
+                    resimulated: b.value,
+                    distance_to_reference: distance((b.k_front, b.k_rear), reference),
+                    at_map_edge: b.edge,
                 }
             });
         let rbf = net.filter(|_| t.metric == Metric::Er).map(|net| {
             let p = net.predict(t.value);
-            let e = Some(st.er(p[0], p[1])).filter(|e| e.is_finite());
+            // An answer no tyre has is no car to simulate: its "Er" would
+            // be reported as the network's answer re-simulated.
+            let no_tyre = st.no_tyre_has(p[0], p[1]);
+            let e = match no_tyre {
+                Some(_) => None,
+                None => Some(st.er(p[0], p[1])).filter(|e| e.is_finite()),
+            };
             RbfAnswer {
                 k_front: p[0] / k,
                 k_rear: p[1] / k,
+                no_tyre_has: no_tyre,
                 er_resimulated: e,
                 error_percent: e.map(|e| 100.0 * (e - t.value) / t.value),
                 trained_er: net.trained_range(),
@@ -466,7 +484,7 @@ impl StudyReport {
         }
         if let Some(inv) = &self.inverse {
             for t in &inv.targets {
-                out.extend(target_lines(t, inv.reference, u, &self.map));
+                out.extend(lines::target_lines(t, inv.reference, u, &self.map));
             }
         }
         out
@@ -496,69 +514,4 @@ impl StudyReport {
         }
         write_json_sorted(&files[5], &self.summary)
     }
-}
-
-/// The lines of one answered target.
-fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit, map: &Map) -> Vec<String> {
-    let n = t.region.len();
-    let mut out = vec![format!(
-        "  {} = {} ± {}: {n} map {} every constraint",
-        t.metric,
-        t.target,
-        t.tolerance,
-        if n == 1 {
-            "point meets it and"
-        } else {
-            "points meet it and"
-        },
-    )];
-    // Er keeps the paper's name; the other metrics their column's.
-    let name = match t.metric {
-        Metric::Er => "Er".to_string(),
-        m => m.to_string(),
-    };
-    let er = &t.curve;
-    out.push(match &er.best {
-        Some(b) => format!(
-            "  {name} = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with {name} {:.6} (re-simulated), distance {:.3}",
-            t.target,
-            er.curve.len(),
-            reference[0],
-            reference[1],
-            b.k_front,
-            b.k_rear,
-            b.resimulated,
-            b.distance_to_reference
-        ),
-        None if er.curve.is_empty() => format!(
-            "  {name} = {}: not reached on the map{}",
-            t.target,
-            target_range::beyond_the_map(map, t.metric, t.target)
-        ),
-        None => format!(
-            "  {name} = {}: a curve of {} map points, but no point on it re-simulates to the target (the secant in the rear stiffness did not converge from the map's closest point)",
-            t.target,
-            er.curve.len()
-        ),
-    });
-    if let Some(r) = &er.rbf {
-        let (lo, hi) = r.trained_er;
-        let outside = t.target < lo || t.target > hi;
-        let resimulated = match (r.er_resimulated, r.error_percent) {
-            (Some(e), Some(p)) => format!("Er {e:.6} re-simulated ({p:+.2} %)"),
-            _ => "no Er re-simulated (the response there does not settle to a steady state within the step)".to_string(),
-        };
-        out.push(format!(
-            "    RBF answer: ({:.1}, {:.1}) {u}, {resimulated}, distance {:.3}{}",
-            r.k_front,
-            r.k_rear,
-            r.distance_to_reference,
-            if outside {
-                format!("; an extrapolation: Er {} lies outside the Er {lo:.5}–{hi:.5} s the network was trained on, where it has no data", t.target)
-            } else {
-                String::new()
-            }
-        ));
-    }
-    out
 }

@@ -7,7 +7,7 @@ use crate::study::inverse::Map;
 use crate::study::Metric;
 
 /// The SI unit the study reads a metric's target in (study.csv's).
-fn unit(metric: Metric) -> &'static str {
+pub(super) fn unit(metric: Metric) -> &'static str {
     match metric {
         Metric::Er
         | Metric::YawRateTotalVariance
@@ -24,7 +24,7 @@ fn unit(metric: Metric) -> &'static str {
 
 /// The smallest and largest value of `metric` over the map's handling
 /// responses; `None` where it has none.
-fn span(map: &Map, metric: Metric) -> Option<(f64, f64)> {
+pub(super) fn span(map: &Map, metric: Metric) -> Option<(f64, f64)> {
     let mut values = (0..map.front.len())
         .flat_map(|i| (0..map.rear.len()).map(move |j| (i, j)))
         .map(|(i, j)| map.value(metric, i, j))

@@ -1,4 +1,4 @@
-//! Issue 41 (round 40's finding 4, session 109): a rig file of three loads
+//! Fresh-eyes round 40's finding 4 (session 109): a rig file of three loads
 //! (2000, 4000 and 6000 N, 121 slip angles each) whose load carries 1 %
 //! Gaussian noise, as a load-controlled rig's does, read its 6000 N level
 //! as three ("5899 N (9), 6007 N (98), 6112 N (11)") and PAC89's figure

@@ -5,7 +5,7 @@
 //! scatter (`own_scale.rs`; the method is described in [`super`]). Units:
 //! the variable's own (N, rad, Pa).
 
-use super::own_scale::split_own_scale;
+use super::own_scale::{median, split_own_scale};
 pub use crate::error::Variable;
 use serde::Serialize;
 
@@ -136,17 +136,6 @@ impl Levels {
     /// `None` outside every band.
     pub fn nominal_of(&self, v: f64) -> Option<f64> {
         self.select(v).map(|k| self.levels[k].nominal)
-    }
-}
-
-/// The median of `sorted` (the mean of its two middle values for an
-/// even count).
-pub(super) fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    if n % 2 == 1 {
-        sorted[n / 2]
-    } else {
-        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
     }
 }
 
@@ -304,6 +293,10 @@ fn push_own_scale(part: &[f64], resolution: f64, out: &mut Found) {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "levels_noise_tests.rs"]
+mod noise_tests;
 
 #[cfg(test)]
 mod tests {

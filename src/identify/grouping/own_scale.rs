@@ -20,7 +20,6 @@
 //! keeps its tails, and only samples far from both levels (a ramp between
 //! them) are transitions.
 
-use super::levels::median;
 use std::ops::Range;
 
 /// Bins across a group (or a part the separation-wide bins found) when
@@ -47,6 +46,17 @@ const SEPARATED: f64 = 4.0;
 /// from a level than its scatter reaches is no sample at its load (a
 /// condition is fitted at its level's nominal load).
 const TAIL: f64 = 4.0;
+
+/// The median of `sorted` (the mean of its two middle values for an
+/// even count).
+pub(super) fn median(sorted: &[f64]) -> f64 {
+    let n = sorted.len();
+    if n % 2 == 1 {
+        sorted[n / 2]
+    } else {
+        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
+    }
+}
 
 /// Robust deviation (1.4826·MAD) of sorted values about their median; 0
 /// for none.
@@ -118,7 +128,8 @@ impl<'a> Histogram<'a> {
 pub(super) fn split_own_scale(group: &[f64], resolution: f64, noise: f64) -> Vec<Range<usize>> {
     let n = group.len();
     if n < 2 * OWN_SCALE_BINS || group[n - 1] <= group[0] {
-        return vec![0..n];
+        let whole = 0..n;
+        return vec![whole];
     }
     let h = Histogram::new(group);
     let mut cores = Vec::new();
@@ -199,93 +210,4 @@ fn widen(group: &[f64], mut parts: Vec<Range<usize>>, noise: f64) -> Vec<Range<u
         parts[i].start = gap.start + right.max(left);
     }
     parts
-}
-
-#[cfg(test)]
-mod tests {
-    use crate::identify::grouping::levels::{levels, Variable};
-
-    /// Standard normal draws from a seeded LCG (Box–Muller).
-    struct Gauss(u64);
-
-    impl Gauss {
-        fn uniform(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((self.0 >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        }
-        fn draw(&mut self) -> f64 {
-            let (u, v) = (self.uniform(), self.uniform());
-            (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-        }
-    }
-
-    /// A load-controlled rig's file: `per` samples at each load, recorded
-    /// load by load, each scattered by `share` of its load (Gaussian).
-    fn rig(loads: &[f64], share: f64, per: usize, seed: u64) -> Vec<f64> {
-        let mut g = Gauss(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0xD1B5);
-        loads
-            .iter()
-            .flat_map(|&f| {
-                (0..per)
-                    .map(|_| f + share * f * g.draw())
-                    .collect::<Vec<_>>()
-            })
-            .collect()
-    }
-
-    /// Three to five loads 10 % apart with 1 % noise (10 deviations
-    /// apart) and 15 % apart with 2 % noise (7.5), 121 samples each, over
-    /// 100 seeds: as many levels as loads, each with its median within
-    /// half a deviation of its load (the median's standard error is 0.11
-    /// of one) and its samples but for a few tails: a chance dip inside
-    /// one level's scatter no longer cuts it (round 40: 5899, 6007 and
-    /// 6112 N for one 6000 N level).
-    #[test]
-    fn rig_loads_with_gaussian_noise_are_one_level_each() {
-        for (share, spacing) in [(0.01, 0.10), (0.02, 0.15)] {
-            for count in 3..=5 {
-                for seed in 0..100 {
-                    let loads: Vec<f64> = (0..count)
-                        .map(|k| 2000.0 * (1.0f64 + spacing).powi(k))
-                        .collect();
-                    let v = rig(&loads, share, 121, seed);
-                    let l = levels(Variable::Load, &v, 10.0);
-                    let at = format!("{share} noise, {count} loads, seed {seed}: {:?}", l.levels);
-                    assert_eq!(l.levels.len(), loads.len(), "{at}");
-                    for (q, f) in l.levels.iter().zip(&loads) {
-                        assert!((q.nominal - f).abs() < 0.5 * share * f, "{at}");
-                        assert!(q.samples.abs_diff(121) <= 6, "{at}");
-                    }
-                    let held: usize = l.levels.iter().map(|q| q.samples).sum();
-                    assert_eq!(held + l.transition_samples, v.len(), "{at}");
-                    assert!(l.transition_samples <= 10, "{at}");
-                }
-            }
-        }
-    }
-
-    /// One load held with 1 % noise (121 to 3000 samples) or 2 % (500 and
-    /// 3000), over 100 seeds: one level holding every sample, however its
-    /// tail bins fall. (At 2 % with 121 samples the noise read from the
-    /// sorted samples, `spread_within`, falls to a tenth of the scatter
-    /// for some seeds, and the separation-wide bins then cut the level:
-    /// not this split's doing.)
-    #[test]
-    fn one_noisy_load_is_one_level_holding_every_sample() {
-        for (share, counts) in [(0.01, &[121, 500, 3000][..]), (0.02, &[500, 3000][..])] {
-            for &per in counts {
-                for seed in 0..100 {
-                    let v = rig(&[6000.0], share, per, seed);
-                    let l = levels(Variable::Load, &v, 10.0);
-                    let at = format!("{share} noise, {per} samples, seed {seed}");
-                    assert_eq!(l.levels.len(), 1, "{at}: {:?}", l.levels);
-                    assert_eq!(l.levels[0].samples, per, "{at}");
-                    assert_eq!(l.transition_samples, 0, "{at}");
-                }
-            }
-        }
-    }
 }

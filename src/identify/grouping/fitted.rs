@@ -10,7 +10,7 @@
 //! load levels is of levels, not of conditions.
 //! Units: the variable's own (N, rad, Pa).
 
-use super::levels::median;
+use super::own_scale::median;
 use super::RigData;
 
 /// A condition's (load, camber, pressure) level indices; no pressure

@@ -1,9 +1,11 @@
 //! Levels of a grouping variable of rig data (load, camber, pressure): the
 //! values a rig held, found from the gaps between the sorted samples and
-//! split at density valleys so that ramps between levels do not join them
-//! (the method is described in [`super`]). Units: the variable's own (N,
-//! rad, Pa).
+//! split at density valleys so that ramps between levels do not join them,
+//! and only at valleys that separate levels, not inside one level's
+//! scatter (`own_scale.rs`; the method is described in [`super`]). Units:
+//! the variable's own (N, rad, Pa).
 
+use super::own_scale::{median, split_own_scale};
 pub use crate::error::Variable;
 use serde::Serialize;
 
@@ -137,17 +139,6 @@ impl Levels {
     }
 }
 
-/// The median of `sorted` (the mean of its two middle values for an
-/// even count).
-pub(super) fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    if n % 2 == 1 {
-        sorted[n / 2]
-    } else {
-        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
-    }
-}
-
 /// The fewest samples at one value that make a level.
 pub const LEVEL_SAMPLES: usize = 3;
 
@@ -277,10 +268,14 @@ fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Foun
 }
 
 /// Records the levels of `part` split on its own scale
-/// ([`split_own_scale`]); a part of fewer than three samples is ramp or
-/// isolated samples, counted as transitions.
+/// ([`split_own_scale`]): a rig's load varies with slip along a sweep by
+/// ±150 N, and a file keeping every fourth row makes consecutive samples
+/// differ by that much, so the noise read from them (53 N for the Hoosier
+/// file, 16 N at full rate) sets a separation that joins its five loads
+/// 560 N apart into one group. A part of fewer than three samples is ramp
+/// or isolated samples, counted as transitions.
 fn push_own_scale(part: &[f64], resolution: f64, out: &mut Found) {
-    let ranges = split_own_scale(part, resolution);
+    let ranges = split_own_scale(part, resolution, out.levels.noise);
     let kept: usize = ranges.iter().map(|r| r.len()).sum();
     out.levels.transition_samples += part.len() - kept;
     for r in ranges {
@@ -299,67 +294,9 @@ fn push_own_scale(part: &[f64], resolution: f64, out: &mut Found) {
     }
 }
 
-/// Bins across a group (or a part the separation-wide bins found) when
-/// its valleys are looked for on its own scale.
-const OWN_SCALE_BINS: usize = 32;
-/// Share of a group's samples each side of a valley must hold for the
-/// valley to split it on its own scale.
-const OWN_SCALE_MODE: f64 = 0.05;
-
-/// Splits `group` (sorted) at empty valleys of its own histogram,
-/// [`OWN_SCALE_BINS`] bins across it: a rig's load varies with slip along
-/// a sweep by ±150 N, and a file keeping every fourth row makes
-/// consecutive samples differ by that much, so the noise read from them
-/// (53 N for the Hoosier file, 16 N at full rate) sets a separation that
-/// joins its five loads 560 N apart into one group. Two levels stay apart
-/// where a run of bins below the valley count, at least `resolution` wide
-/// (no gap of a quantised channel's steps), lies between parts each
-/// holding [`OWN_SCALE_MODE`] of the group; the valley's
-/// samples are transitions, a level's tails stay with it (a single level,
-/// however noisy, has no interior valley and is kept whole). Returns the
-/// parts as index ranges of `group`.
-fn split_own_scale(group: &[f64], resolution: f64) -> Vec<std::ops::Range<usize>> {
-    let (lo, hi) = (group[0], group[group.len() - 1]);
-    let keep = (group.len() / 100).max(3);
-    if hi <= lo || group.len() < 2 * OWN_SCALE_BINS {
-        let whole = 0..group.len();
-        return vec![whole];
-    }
-    let width = (hi - lo) / OWN_SCALE_BINS as f64;
-    let bin = |v: f64| (((v - lo) / width) as usize).min(OWN_SCALE_BINS - 1);
-    let mut counts = [0usize; OWN_SCALE_BINS];
-    for &v in group {
-        counts[bin(v)] += 1;
-    }
-    // Valleys: maximal runs of sparse bins with dense bins on both sides.
-    let dense: Vec<usize> = (0..OWN_SCALE_BINS).filter(|&b| counts[b] >= keep).collect();
-    let valleys: Vec<(usize, usize)> = dense
-        .windows(2)
-        .filter(|w| (w[1] - w[0] - 1) as f64 * width >= resolution)
-        .map(|w| (w[0] + 1, w[1] - 1))
-        .collect();
-    // Cut only where each side of every cut keeps a mode's share.
-    let least = (OWN_SCALE_MODE * group.len() as f64).ceil() as usize;
-    let mut cuts: Vec<(usize, usize)> = Vec::new();
-    let mut since = 0;
-    for &(a, b) in &valleys {
-        let before: usize = counts[since..a].iter().sum();
-        let after: usize = counts[b + 1..].iter().sum();
-        if before >= least && after >= least {
-            cuts.push((a, b));
-            since = b + 1;
-        }
-    }
-    let mut parts = Vec::with_capacity(cuts.len() + 1);
-    let mut start = 0;
-    for &(a, b) in &cuts {
-        let end = start + group[start..].partition_point(|&v| bin(v) < a);
-        parts.push(start..end);
-        start = end + group[end..].partition_point(|&v| bin(v) <= b);
-    }
-    parts.push(start..group.len());
-    parts
-}
+#[cfg(test)]
+#[path = "levels_noise_tests.rs"]
+mod noise_tests;
 
 #[cfg(test)]
 mod tests {

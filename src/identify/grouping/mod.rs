@@ -17,14 +17,14 @@
 //!   6 σ)` is then split at density valleys (a histogram of bins of that
 //!   width; bins holding less than 1 % of the group are *transitions*), so a
 //!   ramp between two levels does not merge them. A narrower group is split
-//!   on its own scale (32 bins across it) where a valley at least the
-//!   resolution wide lies between parts each holding 5 % of it: a file
-//!   keeping every fourth row of a rig's sweep makes consecutive loads
-//!   differ by the load's travel with slip, and the noise read from them
-//!   would otherwise join levels 560 N apart. A level is kept whatever
-//!   its share of the file; fewer than three samples apart from the rest are
-//!   not a level: counted as too few for one (two rows at one load are no
-//!   ramp between levels).
+//!   on its own scale (32 bins across it, `own_scale.rs`) at a dip at least
+//!   the resolution wide between parts each holding 5 % of it whose medians
+//!   lie 4 within-level deviations apart (no cut inside one level's
+//!   scatter); a valley's samples within 4 deviations of a level join it.
+//!   Every 4th row of a rig's sweep would join levels 560 N apart without
+//!   it. A level is kept whatever its share of the file; fewer than three
+//!   samples apart from the rest are not a level: counted as too few for
+//!   one (two rows at one load are no ramp between levels).
 //! - **Selection** of one load, pressure or camber level: an error when the
 //!   file has no such column or when the value lies outside every level's
 //!   band (the level's range widened by the separation threshold). The
@@ -45,6 +45,7 @@
 
 mod fitted;
 pub(crate) mod levels;
+mod own_scale;
 mod thin;
 
 pub use super::data::SlipAxis;

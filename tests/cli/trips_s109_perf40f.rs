@@ -18,7 +18,13 @@ use handling::tyre::{Tyre, TyreModel};
 fn true_coefficients(campaign: &Path) -> [f64; 2] {
     let text = fs::read_to_string(campaign.join("vehicle.toml")).unwrap();
     let v: toml::Value = toml::from_str(&text).unwrap();
-    let num = |k: &str| v["vehicle"][k].as_float().unwrap();
+    // synth writes the mass as an integer (790), the lengths as floats.
+    let num = |k: &str| {
+        let x = &v["vehicle"][k];
+        x.as_float()
+            .or_else(|| x.as_integer().map(|i| i as f64))
+            .unwrap_or_else(|| panic!("vehicle.{k}: {x}"))
+    };
     let (m, a, b) = (num("mass"), num("a"), num("b"));
     let text = fs::read_to_string(root().join("tyres/unitire.toml")).unwrap();
     let tyre: Tyre = toml::from_str(&text).unwrap();

@@ -1,4 +1,4 @@
-//! Issue 40 (session 109): the slow oval's base axles left their prior.
+//! The slow oval's base axles left their prior (session 109).
 //! From session 101 on, the base identification of the slow oval
 //! (`synth --programme slow-oval --effects bank_profile --seed 1`, no tyre
 //! data) picked its basin under the untempered prior, where the runs'

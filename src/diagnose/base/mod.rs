@@ -207,10 +207,8 @@ fn axles_from_runs(
     let t0 = Instant::now();
     let (polished, starts) = identify_axles(&problem);
     // The runs' evidence against the prior, from their residuals about the
-    // best start (the fit without tempering): every later fit (this one's
-    // polish, its folds, every candidate's) weighs the prior by it, and
-    // the start is the basin best under it (the untempered best may lie
-    // far outside the prior: `best_tempered`).
+    // untempered best: every later fit weighs the prior by it, and this one
+    // starts from the basin best under it (`best_tempered`).
     let tempering = problem.tempering(&polished[0].1);
     let data = data_costs(&polished, &problem);
     let rows = rows.tempered(tempering.prior_weight);

@@ -951,4 +951,5 @@ mod trips_s108_runwords43;
 mod trips_s109_eqstudy41;
 mod trips_s109_lead;
 mod trips_s109_loadlevels41;
+mod trips_s109_perf40f;
 mod trips_s109_simwords41;

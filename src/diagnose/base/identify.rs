@@ -25,9 +25,13 @@
 //! run is far from the banked one's, so a start is not a guess: the
 //! runs are replayed over a grid of front and rear coefficients (5 to 380
 //! 1/rad, geometric) at a friction that does not saturate, the best grid
-//! points of distinct basins are polished by Levenberg–Marquardt, and the
-//! best polish is the fit ([`identify_axles`]). A candidate effect is
-//! refitted jointly with the axles from a grid at its own values
+//! points of distinct basins are polished by Levenberg–Marquardt
+//! ([`identify_axles`]) against the prior as stated, and the fit starts
+//! from the polish best against the prior tempered by the runs' own
+//! evidence ([`best_tempered`]): the untempered best may be a basin far
+//! outside the prior that the tempered polish would only refine. A
+//! candidate effect is refitted jointly with the axles from a grid at its
+//! own values
 //! ([`axle_grid`]), so that an effect such as the measured bank is not
 //! judged in the basin of the model without it.
 //!
@@ -265,14 +269,19 @@ fn distinct(scored: &[(f64, Vec<f64>)], n: usize) -> Vec<Vec<f64>> {
     taken
 }
 
-/// The start of the base's axle fit: the grid's distinct basins polished
-/// by Levenberg–Marquardt, the best of them, and the number of starts.
+/// The grid's distinct basins polished by Levenberg–Marquardt under
+/// `problem` (its prior as it stands: untempered when the base is first
+/// identified), each as `(cost, shares)` lowest cost first, and the number
+/// of starts. Every basin is kept, not only the best: the prior is
+/// tempered after this polish ([`best_tempered`]), and a basin the
+/// untempered prior let the runs pull far off it may then lose to one
+/// inside it.
 pub fn identify_axles<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
-) -> (Vec<f64>, usize) {
+) -> (Vec<(f64, Vec<f64>)>, usize) {
     let grid = axle_grid(problem, &[]);
     let starts = distinct(&grid, BASE_STARTS);
-    let polished: Vec<(f64, Vec<f64>)> = starts
+    let mut polished: Vec<(f64, Vec<f64>)> = starts
         .par_iter()
         .map(|p| {
             let lm = BoundedLm {
@@ -284,11 +293,45 @@ pub fn identify_axles<F: Fn(&[f64]) -> Augmented + Sync>(
             (lm.cost, lm.params)
         })
         .collect();
-    let best = polished
-        .into_iter()
+    polished.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if polished.is_empty() {
+        polished.push((f64::NAN, shares(20.0, 20.0, 1.0).to_vec()));
+    }
+    (polished, starts.len())
+}
+
+/// The data's cost of `polished` basins, each `(cost, shares)` with its
+/// cost under `problem`'s prior: the cost less the prior's rows, as
+/// `(data cost, shares)`.
+pub fn data_costs<F: Fn(&[f64]) -> Augmented + Sync>(
+    polished: &[(f64, Vec<f64>)],
+    problem: &Problem<F>,
+) -> Vec<(f64, Vec<f64>)> {
+    polished
+        .iter()
+        .map(|(c, p)| (c - problem.prior_cost(p), p.clone()))
+        .collect()
+}
+
+/// Of basins of data cost `data` (`(data cost, shares)`, [`data_costs`]),
+/// the one lowest under `tempered`'s prior: its data cost plus the
+/// tempered prior's rows, no replay needed. The basins were polished
+/// against the untempered prior, which counts every residual as an
+/// independent sample: thousands of them outweigh it at a small gain in
+/// fit, and the best basin there may lie far outside the prior (the slow
+/// oval's, [`crate::diagnose::base`]) where the tempered prior charges
+/// more than the runs gain. A basin of no finite cost is passed over; the
+/// first of `data` when none is finite, None for none.
+pub fn best_tempered<F: Fn(&[f64]) -> Augmented + Sync>(
+    data: &[(f64, Vec<f64>)],
+    tempered: &Problem<F>,
+) -> Option<Vec<f64>> {
+    data.iter()
+        .map(|(c, p)| (c + tempered.prior_cost(p), p))
+        .filter(|(c, _)| c.is_finite())
         .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map_or_else(|| shares(20.0, 20.0, 1.0).to_vec(), |b| b.1);
-    (best, starts.len())
+        .map(|(_, p)| p.clone())
+        .or_else(|| data.first().map(|(_, p)| p.clone()))
 }
 
 #[cfg(test)]
@@ -373,8 +416,9 @@ mod tests {
             [2e-4, 5e-3, 1.0],
             AXLE_BOUNDS.to_vec(),
         );
-        let (start, starts) = identify_axles(&problem);
+        let (polished, starts) = identify_axles(&problem);
         assert_eq!(starts, BASE_STARTS);
+        let start = polished[0].1.clone();
         // The diagnosis polishes the best start to convergence.
         let p = crate::diagnose::fit::fit(
             &problem,
@@ -399,6 +443,60 @@ mod tests {
             "{}",
             friction(p[2])
         );
+    }
+
+    #[test]
+    fn the_start_is_the_basin_best_under_the_tempered_prior_not_the_untempered() {
+        use crate::diagnose::base::prior::{rows, FrictionRule};
+        use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
+        use crate::vehicle::{Vehicle, VehicleModel};
+        // The slow oval's two basins (session 108): 22 / 22 1/rad inside
+        // the road prior (8–35), 138 / 190 1/rad 5.6 and 6.5 σ outside it,
+        // the friction held. Data costs (½Σr², no replay made) such that
+        // the untempered prior (rows of weight 1, ½(5.6² + 6.5²) ≈ 36.6
+        // for the stiff basin) lets the stiff one win by its lower data
+        // cost, and the slow oval's tempering (×139) does not.
+        let prior = AxlePrior::of(TyreClass::Road);
+        let rule = FrictionRule::new(&prior, 1.3);
+        let held = rule.value;
+        let (soft, stiff) = (shares(22.0, 22.0, held), shares(138.0, 190.0, held));
+        let runs = runs_of(&soft);
+        let problem = |weight: f64| {
+            Problem::new(
+                |p: &[f64]| {
+                    let (f, r) = axle_tyres(p);
+                    Augmented::new(VehicleModel::new(Vehicle::compact_sedan(), f, r), 1.0)
+                },
+                runs.iter().collect(),
+                [2e-4, 5e-3, 1.0],
+                AXLE_BOUNDS.to_vec(),
+            )
+            .with_prior(Some(rows(&prior, &rule, 0).tempered(weight)))
+        };
+        let untempered = problem(1.0);
+        let z = |k: f64| AxlePrior::z(prior.cornering, k);
+        let stiff_rows = 0.5 * (z(138.0).powi(2) + z(190.0).powi(2));
+        assert!((untempered.prior_cost(&stiff) - stiff_rows).abs() < 1e-6 * stiff_rows);
+        // Polished costs under the untempered prior (data + rows): the
+        // data cost back is each basin's own.
+        let soft_rows = untempered.prior_cost(&soft);
+        let polished = vec![
+            (960.0 + stiff_rows, stiff.to_vec()),
+            (1000.0 + soft_rows, soft.to_vec()),
+        ];
+        let data = data_costs(&polished, &untempered);
+        assert!((data[0].0 - 960.0).abs() < 1e-9, "{data:?}");
+        assert!((data[1].0 - 1000.0).abs() < 1e-9, "{data:?}");
+        // Untempered, the stiff basin is the best: 40 less of data cost
+        // against its 36.6 of rows (the soft one's 0.5).
+        assert!(soft_rows < 1.0, "{soft_rows}");
+        assert_eq!(best_tempered(&data, &untempered), Some(stiff.to_vec()));
+        // Tempered ×139, its rows cost 139² times more: the soft basin.
+        assert_eq!(best_tempered(&data, &problem(139.1)), Some(soft.to_vec()));
+        // A basin of no finite cost is passed over.
+        let broken = vec![(f64::NAN, stiff.to_vec()), (1000.0, soft.to_vec())];
+        assert_eq!(best_tempered(&broken, &untempered), Some(soft.to_vec()));
+        assert_eq!(best_tempered(&[], &untempered), None);
     }
 
     #[test]

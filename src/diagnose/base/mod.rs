@@ -12,7 +12,9 @@ pub(crate) mod identify;
 pub(crate) mod no_tyre;
 pub mod prior;
 
-use crate::diagnose::base::identify::{identify_axles, AxleIdentification};
+use crate::diagnose::base::identify::{
+    best_tempered, data_costs, identify_axles, AxleIdentification,
+};
 use crate::diagnose::base::prior::{FrictionRule, PriorReport, PriorRows};
 use crate::diagnose::campaign::prior::AxlePrior;
 use crate::diagnose::campaign::{BaseTyres, Campaign};
@@ -203,13 +205,15 @@ fn axles_from_runs(
     .with_layout(layout.clone(), &model, derivatives)
     .with_prior(Some(rows));
     let t0 = Instant::now();
-    let (start, starts) = identify_axles(&problem);
+    let (polished, starts) = identify_axles(&problem);
     // The runs' evidence against the prior, from their residuals about the
-    // best start (the fit without tempering): every later fit (this one's
-    // polish, its folds, every candidate's) weighs the prior by it.
-    let tempering = problem.tempering(&start);
+    // untempered best: every later fit weighs the prior by it, and this one
+    // starts from the basin best under it (`best_tempered`).
+    let tempering = problem.tempering(&polished[0].1);
+    let data = data_costs(&polished, &problem);
     let rows = rows.tempered(tempering.prior_weight);
     let problem = problem.with_prior(Some(rows));
+    let start = best_tempered(&data, &problem).unwrap_or_else(|| polished[0].1.clone());
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
     let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
     if let (Some(rec), Some(st)) = (timing, &stamps) {

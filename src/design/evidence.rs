@@ -81,6 +81,67 @@ pub struct Measured {
     /// The designed manoeuvre the run is named after and its prediction
     /// (None: no manoeuvre of the design has the run's file name).
     pub predicted: Option<Predicted>,
+    /// The residuals the χ² are summed over (samples × channels logged).
+    pub residuals: usize,
+    /// The campaign's own run file this run is (None: a new run): the
+    /// candidates were fitted to it, so it is no new evidence.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fitted_on: Option<FittedOn>,
+}
+
+/// A driven run that is one of the campaign's own (round 41: one of them
+/// given to `--measured` "separated" the candidates without a word that
+/// they had been fitted to it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FittedOn {
+    /// The campaign's run file.
+    pub run: String,
+    /// How it was found.
+    pub by: SameRun,
+}
+
+/// How a driven run was found to be one of the campaign's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SameRun {
+    /// The same file (its canonical path).
+    Path,
+    /// Another file, byte for byte the same (a copy).
+    Content,
+}
+
+/// The RMS miss, in noise floors, beyond which the better candidate does
+/// not fit a driven run: the 3 noise floors a channel alone needs to be a
+/// significant gap in `diagnose`.
+pub const MISFIT_FLOORS: f64 = 3.0;
+
+impl Measured {
+    /// Where both candidates miss the run by far more than they differ:
+    /// the better one's χ² above the noise's (one per residual), as noise
+    /// floors (its root), where its RMS miss is beyond [`MISFIT_FLOORS`]
+    /// and that root beyond [`MISFIT_FLOORS`] times the separation. Then
+    /// the separation measures how differently the two miss a run neither
+    /// replays (a steer logged ×1.5 separated them by 115 noise floors),
+    /// not which one the car is; None where the better one fits.
+    pub fn misfit(&self) -> Option<f64> {
+        let n = self.residuals as f64;
+        let excess = (self.best_chi_square() - n).max(0.0).sqrt();
+        let rms = self.best_rms();
+        (rms > MISFIT_FLOORS && excess > MISFIT_FLOORS * self.separation.abs()).then_some(excess)
+    }
+
+    /// The better candidate's χ² on the run.
+    fn best_chi_square(&self) -> f64 {
+        self.chi_square
+            .iter()
+            .map(|c| c.1)
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The better candidate's RMS miss of the run, in noise floors.
+    pub fn best_rms(&self) -> f64 {
+        (self.best_chi_square() / self.residuals.max(1) as f64).sqrt()
+    }
 }
 
 /// What a design predicted for the manoeuvre a driven run is named after.
@@ -191,5 +252,35 @@ pub fn measured(
         separation: super::signed_root(diff),
         favours: members[best].label(),
         predicted: None,
+        residuals: prepared.count(),
+        fitted_on: None,
     })
+}
+
+#[cfg(test)]
+mod misfit_tests {
+    use super::*;
+
+    fn m(chi: [f64; 2], separation: f64) -> Measured {
+        Measured {
+            run: "r.csv".into(),
+            chi_square: vec![("a".into(), chi[0]), ("b".into(), chi[1])],
+            separation,
+            favours: "a".into(),
+            predicted: None,
+            residuals: 1000,
+            fitted_on: None,
+        }
+    }
+
+    /// χ² 1e6 over 1000 residuals (31.6 floors RMS), 100 apart: misfit,
+    /// √(1e6 − 1000) = 999.5 floors; the same 100 apart on a run fitted to
+    /// 1.1 floors RMS, or a miss under three times the separation: not.
+    #[test]
+    fn a_separation_is_misfit_only_where_both_miss_far_beyond_it() {
+        let e = m([1e6, 1e6 + 1e4], 100.0).misfit().unwrap();
+        assert!((e - 999.5).abs() < 0.1, "{e}");
+        assert!(m([1210.0, 11210.0], 100.0).misfit().is_none());
+        assert!(m([1e6, 1e6 + 1e4], 400.0).misfit().is_none());
+    }
 }

@@ -36,7 +36,9 @@ pub use advice::{Advised, AdvisedBest, DiagnosisReads, Missing, Recommendation, 
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
 pub use calibration::{Calibration, ReferenceGap, CALIBRATING_D};
 pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
-pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
+pub use evidence::{
+    compare, measured, FittedOn, Measured, Predicted, SameRun, MAX_REPETITIONS, MISFIT_FLOORS,
+};
 pub use family::{Designed, Kind, Limits};
 pub use request::DesignRequest;
 pub use separation::Logging;

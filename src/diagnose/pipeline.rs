@@ -205,7 +205,8 @@ const VISIBLE_AX: f64 = 0.5;
 /// The campaign's candidate effects that its runs can show, and a note for
 /// each one left out (an effect of braking and throttle without a
 /// longitudinal acceleration, a bank profile without a `bank` channel, an
-/// accelerometer roll where every run logs the roll that levels its `ay`).
+/// accelerometer roll where every run logs the roll that levels its `ay`,
+/// or where no run logs `ay`: [`Unseen::accelerometer_roll`]).
 fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
     // The acceleration the replays use: the measured ax, else the
     // smoothed speed derivative (a raw difference of a noisy speed would
@@ -216,7 +217,11 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
             .any(|a| a.abs() > VISIBLE_AX)
     });
     let banked = c.runs.iter().any(|r| r.bank.is_some());
-    let rolled = c.runs.iter().all(|r| r.roll.is_some() && r.ay.is_some());
+    let with_ay = c.runs.iter().filter(|r| r.ay.is_some());
+    let roll_unseen = Unseen::accelerometer_roll(
+        with_ay.clone().count(),
+        with_ay.filter(|r| r.roll.is_some()).count(),
+    );
     // Linear base tyres have no limit for a friction scale to lower.
     let linear_base = c.tyres.linear();
     let mut notes = Vec::new();
@@ -234,7 +239,10 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
                 Needs::BankChannel if !banked => Unseen::BankChannel,
                 Needs::FrictionLimit if linear_base => Unseen::FrictionLimit,
                 // A logged roll levels ay (`io::campaign`'s reading).
-                _ if *e == EffectKind::AccelerometerRoll && rolled => Unseen::RollLogged,
+                _ if *e == EffectKind::AccelerometerRoll => match roll_unseen {
+                    Some(unseen) => unseen,
+                    None => return true,
+                },
                 _ => return true,
             };
             notes.push(Note::NotACandidate { effect: *e, lacks });

@@ -5,7 +5,6 @@
 
 use super::{Error, Variable};
 use crate::format::plural;
-use serde::Serialize;
 use std::path::PathBuf;
 use thiserror::Error as ThisError;
 
@@ -276,41 +275,7 @@ impl FitError {
     }
 }
 
-/// What runs lack for a candidate effect to show in them.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Unseen {
-    /// A longitudinal acceleration above `threshold` (m/s²).
-    LongitudinalAcceleration {
-        /// m/s².
-        threshold: f64,
-    },
-    /// A bank channel.
-    BankChannel,
-    /// Base tyres with a friction limit (the base model's are linear).
-    FrictionLimit,
-    /// An accelerometer roll not already known: every run logs its body
-    /// roll, which levels `ay` before the fit.
-    RollLogged,
-}
-
-impl std::fmt::Display for Unseen {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Unseen::LongitudinalAcceleration { threshold } => write!(
-                f,
-                "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
-            ),
-            Unseen::BankChannel => f.write_str("no run has a bank channel"),
-            Unseen::RollLogged => f.write_str(
-                "every run logs its body roll, which levels ay before the fit: the accelerometer's g·sin φ is known, not fitted",
-            ),
-            Unseen::FrictionLimit => f.write_str(
-                "the base model's tyres are linear, with no friction limit for a friction scale to lower: its fit would hold it at 1 whatever the runs show (give tyres with a limit, rig data or none, for axles identified from the runs)",
-            ),
-        }
-    }
-}
+pub use super::unseen::Unseen;
 
 /// Why the diagnosis of a campaign could not be made.
 #[derive(Debug, ThisError)]

@@ -61,6 +61,7 @@ mod sweep_limit;
 mod tests;
 mod too_many_rows;
 mod units;
+mod unseen;
 mod unstable_step;
 mod vehicle_limit;
 

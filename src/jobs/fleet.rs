@@ -539,7 +539,7 @@ impl FleetReport {
                 format!(
                     "  {:<24} {:<32} J {:.3} → {:.3} (noise {:.3})",
                     r.label(),
-                    r.verdict_words("+"),
+                    r.verdict_or_kind_words("+"),
                     r.heldout_error_before.unwrap_or(f64::NAN),
                     r.heldout_error_after.unwrap_or(f64::NAN),
                     r.noise_level.unwrap_or(f64::NAN)

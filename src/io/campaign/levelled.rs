@@ -6,6 +6,7 @@
 //! removed first; and the note that says so, with the numbers. Units: rad,
 //! m/s².
 
+use crate::error::Unseen;
 use crate::format::{fixed, readable};
 use crate::measured::calibration::roll::{gravity_term, levelled, roll_offset, RollOffset};
 use crate::measured::clean::quantile;
@@ -33,8 +34,15 @@ pub(super) fn level_by_roll(
         .map(f64::abs)
         .collect();
     terms.sort_by(f64::total_cmp);
+    // Candidate or not by the pipeline's one rule, on the same pieces.
+    let with_ay = runs.iter().filter(|r| r.ay.is_some());
+    let unseen = Unseen::accelerometer_roll(
+        with_ay.clone().count(),
+        with_ay.filter(|r| r.roll.is_some()).count(),
+    );
     let runs = runs.into_iter().map(|r| levelled(r, phi0)).collect();
-    let note = note(with, raw.len(), declared, offset, quantile(&terms, 0.995));
+    let largest = quantile(&terms, 0.995);
+    let note = note(with, raw.len(), declared, offset, (largest, unseen));
     (runs, Some(note))
 }
 
@@ -45,7 +53,7 @@ fn note(
     of: usize,
     declared: bool,
     offset: Option<RollOffset>,
-    largest: Option<f64>,
+    (largest, unseen): (Option<f64>, Option<Unseen>),
 ) -> String {
     let unit = match declared {
         true => ", converted from the degrees `degrees` under [runs] declares",
@@ -68,13 +76,21 @@ fn note(
             fixed(g, 3)
         )
     });
-    let rest = match of - with {
-        0 => "accelerometer_roll is no candidate".to_string(),
-        n => format!(
+    let rest = match (unseen, of - with) {
+        (Some(_), _) => "accelerometer_roll is no candidate".to_string(),
+        (None, 0) => "accelerometer_roll is a candidate for the pieces with ay and no roll".into(),
+        (None, n) => format!(
             "{n} {} without roll keep their ay as logged, for accelerometer_roll to fit",
             if n == 1 { "run" } else { "runs" }
         ),
     };
+    // A log without ay has nothing for the roll to level (round 41: the
+    // Putnam log's note said ay was levelled).
+    if unseen == Some(Unseen::NoAyChannel) {
+        return format!(
+            "roll: logged in {with} of {of} {runs}{unit}, but no run logs ay, the one channel it levels: {rest} (it moves ay alone); the roll itself is not scored: the gap is the yaw rate's and beta's"
+        );
+    }
     format!(
         "roll: logged in {with} of {of} {runs}{unit}: ay levelled by it before every fit and the bank's estimate, (ay − g·sin φ)/cos φ with φ {offset} (a body-fixed accelerometer rolled by φ reads g·sin φ of gravity: known from the log, not fitted){size}; {rest}; the roll itself is not scored: the gap is the yaw rate's, ay's and beta's"
     )
@@ -92,11 +108,17 @@ mod tests {
             spans: 3,
             seconds: 25.2,
         };
-        let n = note(2, 2, false, Some(o), Some(0.5861));
+        let n = note(
+            2,
+            2,
+            false,
+            Some(o),
+            (Some(0.5861), Some(Unseen::RollLogged)),
+        );
         assert!(n.starts_with("roll: logged in 2 of 2 runs: ay levelled by it before every fit and the bank's estimate, (ay − g·sin φ)/cos φ with φ the logged roll less its own offset, 0.00210 ± 4e-5 rad, its mean at 3 standstills (25 s)"), "{n}");
         assert!(n.contains("g·sin φ reaches 0.586 m/s²"), "{n}");
         assert!(n.contains("; accelerometer_roll is no candidate;"), "{n}");
-        let n = note(1, 3, true, None, None);
+        let n = note(1, 3, true, None, (None, None));
         assert!(
             n.contains("logged in 1 of 3 runs, converted from the degrees"),
             "{n}"
@@ -107,5 +129,14 @@ mod tests {
             "{n}"
         );
         assert!(!n.contains("reaches"), "{n}");
+        // No ay to level: not said levelled, and no candidate.
+        let n = note(1, 1, true, None, (None, Some(Unseen::NoAyChannel)));
+        assert!(
+            n.contains(
+                "but no run logs ay, the one channel it levels: accelerometer_roll is no candidate"
+            ),
+            "{n}"
+        );
+        assert!(!n.contains("ay levelled by it"), "{n}");
     }
 }

@@ -182,10 +182,17 @@ pub(super) fn canonical(
     (by, declared): (Option<DeclaredBy>, &[&str]),
 ) -> (csv::StringRecord, Vec<(usize, HeaderUnit)>) {
     let mut refused = Vec::new();
+    // A column with a unit beside the column under its own name (`sa_deg`
+    // beside `alpha`) is another column, left under its name (a reader
+    // names the columns it does not read): renamed, it was refused as
+    // `alpha` named twice, at a column headed `sa_deg` (round 41).
+    let beside = |c: &str, h: &str| h != c && header.iter().any(|o| o == c);
     let names: Vec<String> = header
         .iter()
         .enumerate()
         .map(|(i, h)| match reading(h, (checked, known), by, declared) {
+            Some(Reading::Accept(c)) if beside(c, h) => h.to_string(),
+            Some(Reading::Refuse(r)) if beside(r.column, h) => h.to_string(),
             Some(Reading::Accept(c)) => c.to_string(),
             Some(Reading::Refuse(r)) => {
                 let c = r.column.to_string();
@@ -256,6 +263,25 @@ mod tests {
             Some(Reading::Refuse(r)) => assert_eq!(r.column, "alpha"),
             _ => panic!("SA_deg not read"),
         }
+    }
+
+    /// `sa_deg` (or `alpha [rad]`) beside `alpha` is left under its own
+    /// name, neither refused nor read as a second `alpha`; alone, refused.
+    #[test]
+    fn a_column_with_a_unit_beside_the_column_itself_keeps_its_name() {
+        let rig = ["fz", "alpha"];
+        let header = csv::StringRecord::from(vec!["fz", "alpha", "sa_deg", "alpha [rad]"]);
+        let (named, refused) = canonical(&header, &rig, &[], (None, &[]));
+        assert_eq!(
+            named.iter().collect::<Vec<_>>(),
+            ["fz", "alpha", "sa_deg", "alpha [rad]"]
+        );
+        assert!(refused.is_empty());
+        let alone = csv::StringRecord::from(vec!["fz", "sa_deg"]);
+        let (named, refused) = canonical(&alone, &rig, &[], (None, &[]));
+        assert_eq!(named.iter().collect::<Vec<_>>(), ["fz", "alpha"]);
+        assert_eq!(refused.len(), 1);
+        assert_eq!(refused[0].0, 2);
     }
 
     #[test]

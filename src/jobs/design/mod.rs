@@ -13,7 +13,9 @@ mod summary;
 
 pub use diagnosis_file::{read_diagnosis, Diagnosed};
 
-use crate::design::{compare, design, measured, Design, DesignRequest, Measured};
+use crate::design::{
+    compare, design, measured, Design, DesignRequest, FittedOn, Measured, SameRun,
+};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::error::{DesignError, Error, OutputError, WriteStep};
@@ -76,6 +78,32 @@ fn steer_against_yaw(c: &Campaign, run: &crate::measured::MeasuredRun) -> Result
     }
 }
 
+/// The campaign's own run file that the driven run `path` is: the same
+/// file, else one byte for byte the same (a copy); None for a new run.
+/// The candidates were fitted to the campaign's runs, so one of them
+/// measured again is no new evidence between them.
+fn fitted_on(c: &Campaign, path: &Path) -> Option<FittedOn> {
+    let mut files: Vec<&Path> = c.runs.iter().map(|r| r.path.as_path()).collect();
+    files.dedup();
+    let canonical = |p: &Path| std::fs::canonicalize(p).ok();
+    let same = |by: SameRun, f: &&Path| FittedOn {
+        run: f.display().to_string(),
+        by,
+    };
+    let this = canonical(path);
+    if let Some(f) = files
+        .iter()
+        .find(|f| this.is_some() && canonical(f) == this)
+    {
+        return Some(same(SameRun::Path, f));
+    }
+    let bytes = std::fs::read(path).ok()?;
+    files
+        .iter()
+        .find(|f| std::fs::read(f).is_ok_and(|b| b == bytes))
+        .map(|f| same(SameRun::Content, f))
+}
+
 /// Designs for the diagnosis in `dir` (its campaign at `campaign`, else
 /// where the diagnosis read it), measures the runs `driven` against the
 /// first set, for the output folder `out` (default `<dir>/design`).
@@ -125,6 +153,7 @@ pub fn run(
             let run = read_run(p)?;
             steer_against_yaw(&c, &run)?;
             let mut m = measured(&c, &fitted, &first, &run)?;
+            m.fitted_on = fitted_on(&c, p);
             if let Some(set) = d.sets.first() {
                 compare(&mut m, set, &run, &d.logging);
             }

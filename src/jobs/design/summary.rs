@@ -4,7 +4,7 @@
 //! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
-use crate::design::{DiagnosisReads, Measured, Recommendation, Scored, SetDesign, Worth};
+use crate::design::{DiagnosisReads, Measured, Recommendation, SameRun, Scored, SetDesign, Worth};
 use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
@@ -201,6 +201,25 @@ fn measured_lines(m: &Measured) -> Vec<String> {
         ),
         None => "  no prediction to compare: the family has no manoeuvre of this run's file name".into(),
     });
+    if let Some(f) = &m.fitted_on {
+        let how = match f.by {
+            SameRun::Path => "the same file",
+            SameRun::Content => "byte for byte the same",
+        };
+        out.push(format!(
+            "  warning: this run is the campaign's own {} ({how}): the candidates were fitted to it, so its separation is no new evidence between them; drive a new run",
+            f.run
+        ));
+    }
+    if let Some(excess) = m.misfit() {
+        out.push(format!(
+            "  warning: both candidates miss the run by far more than they differ: the better, {}, is {:.1} noise floors RMS off it ({excess:.1} noise floors above the noise over its {} residuals, against a separation of {:.1}): the separation is misfit, not evidence between them",
+            m.favours,
+            m.best_rms(),
+            m.residuals,
+            m.separation.abs()
+        ));
+    }
     if let Some(p) = &m.predicted {
         if p.coverage < PARTIAL {
             out.push(format!(

@@ -89,6 +89,29 @@ impl FleetRow {
         if self.verdict.is_empty() {
             return "—".to_string();
         }
+        self.effect_words(sep)
+    }
+
+    /// As [`Self::verdict_words`], but where no effect is named, the
+    /// verdict's case in words: the terminal table has no `kind` column
+    /// (fleet.csv and the page's statement do), and "—" alone read the same
+    /// for a significant gap no effect explains and for no gap at all
+    /// (round 41).
+    pub fn verdict_or_kind_words(&self, sep: &str) -> String {
+        if !self.verdict.is_empty() {
+            return self.effect_words(sep);
+        }
+        match self.kind {
+            Some(VerdictKind::OutsideLibrary) => "— (a gap no effect explains)",
+            Some(VerdictKind::NoSignificantGap) => "— (no significant gap)",
+            Some(VerdictKind::NotIdentifiable) => "— (base not identifiable)",
+            Some(VerdictKind::Explained) | None => "—",
+        }
+        .to_string()
+    }
+
+    /// The verdict's effects joined by `sep`, with their confounded ones.
+    fn effect_words(&self, sep: &str) -> String {
         let effects = crate::diagnose::effects::joined(&self.verdict, sep);
         if self.confounded_with.is_empty() {
             return effects;

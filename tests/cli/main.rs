@@ -948,3 +948,4 @@ mod trips_s108_diagwords43;
 mod trips_s108_lead;
 mod trips_s108_mf43;
 mod trips_s108_runwords43;
+mod trips_s109_gyroscale41;

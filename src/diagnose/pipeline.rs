@@ -551,7 +551,8 @@ fn run(
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let scored = (&base, found.chosen.as_ref().map(|s| &s.heldout));
     let gap = gap_report(c, (noise, parts, run_gaps), scored, &scales, &mut verdict);
-    crate::diagnose::report::cause::point(&mut verdict, &notes, &gap);
+    let road = roads(c, &ctx);
+    crate::diagnose::report::cause::point(&mut verdict, &notes, &gap, &road);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),
@@ -563,7 +564,7 @@ fn run(
         notes,
         cleaning: c.cleaning.clone(),
         calibration: c.calibration.clone(),
-        road: roads(c, &ctx),
+        road,
         base: base_report(&bases, tyre_source, rig_grouping),
         gap,
         ranking,

@@ -14,6 +14,7 @@ pub mod clean;
 pub(crate) mod derivative;
 pub(crate) mod road;
 mod road_apart;
+mod road_scale;
 mod road_words;
 
 use std::path::PathBuf;

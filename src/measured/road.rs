@@ -40,6 +40,7 @@ use crate::constants::G;
 use serde::Serialize;
 
 pub use super::road_apart::{BankApart, BySpeed};
+pub use super::road_scale::{scale_in_run, ScaleApart, YawScale};
 
 /// An angle in rad as degrees to one decimal, never "-0.0".
 fn deg(a: f64) -> String {
@@ -161,7 +162,18 @@ pub struct RoadGeometry {
     /// An estimated bank that is a steady value the campaign's other runs
     /// do not show (set over the campaign, [`RoadGeometry::set_apart`]):
     /// what it would be as a bank, an `ay` offset or a yaw-rate offset.
+    /// None where the run's yaw-rate scale is apart (`scale_apart`): its
+    /// bank is then the scale's.
     pub apart: Option<BankApart>,
+    /// What the yaw rate reads of what `ay/u` says, from the slope of the
+    /// bank estimate's residual on `u·r` ([`YawScale`]; None: a bank
+    /// measured, no `ay`, or too little turning).
+    pub yaw_scale: Option<YawScale>,
+    /// A yaw-rate scale the campaign's other runs, reading the yaw rate as
+    /// `ay/u` says, do not share (set over the campaign,
+    /// [`RoadGeometry::set_apart`]): a scale error of the gyro or of the
+    /// accelerometer.
+    pub scale_apart: Option<ScaleApart>,
 }
 
 /// A run's speed varies enough to split at the median when its 95th
@@ -219,6 +231,11 @@ impl RoadGeometry {
                 (None, Some(ay)) => by_speed(run, &bank_estimate(run, ay, offsets)),
                 _ => None,
             },
+            yaw_scale: match (&run.bank, &run.ay) {
+                (None, Some(ay)) => yaw_scale(run, ay, offsets),
+                _ => None,
+            },
+            scale_apart: None,
             speed: median_speed(run),
             bank,
             grade,
@@ -229,8 +246,24 @@ impl RoadGeometry {
     /// Marks the runs of a campaign (`roads`) whose estimated bank is a
     /// steady value the others do not show ([`BankApart`]): its 5–95 %
     /// range [`APART_BANK`] or more to one side of the median of the
-    /// other runs' medians, of two other runs or more.
-    pub fn set_apart(mut roads: Vec<RoadGeometry>) -> Vec<RoadGeometry> {
+    /// other runs' medians, of two other runs or more; and those whose
+    /// yaw-rate scale the others do not share ([`ScaleApart`],
+    /// [`super::road_scale::set_apart`]), whose bank is then the scale's.
+    pub fn set_apart(roads: Vec<RoadGeometry>) -> Vec<RoadGeometry> {
+        let mut roads = Self::bank_apart(roads);
+        let scales: Vec<Option<YawScale>> = roads.iter().map(|g| g.yaw_scale).collect();
+        for (g, a) in roads.iter_mut().zip(super::road_scale::set_apart(&scales)) {
+            g.scale_apart = a;
+            if a.is_some() {
+                g.apart = None;
+            }
+        }
+        roads
+    }
+
+    /// The runs whose estimated bank is a steady value the others do not
+    /// show ([`BankApart`]).
+    fn bank_apart(mut roads: Vec<RoadGeometry>) -> Vec<RoadGeometry> {
         let medians: Vec<Option<f64>> = roads
             .iter()
             .map(|g| g.estimated_bank().map(|b| b.median))
@@ -310,8 +343,9 @@ impl RoadGeometry {
             }
             _ => "",
         };
-        let apart = match self.apart {
-            Some(a) if lateral => super::road_apart::apart(&a, self.speed, self.by_speed),
+        let apart = match (self.scale_apart, self.apart) {
+            (Some(s), _) if lateral => super::road_scale::words(&s),
+            (None, Some(a)) if lateral => super::road_apart::apart(&a, self.speed, self.by_speed),
             _ => String::new(),
         };
         format!(
@@ -340,6 +374,17 @@ impl RoadGeometry {
 /// sample: the sensors' offsets `b` removed, the sideslip's rate where the
 /// run has `beta` (a sample beside a masked one has none: NaN, left out).
 pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Vec<f64> {
+    let sine: Vec<f64> = lateral_mismatch(run, ay, offsets)
+        .into_iter()
+        .map(|e| e / G)
+        .collect();
+    smoothed_angle(&run.t, &sine, &run.masked)
+}
+
+/// `a_y − b_ay − u·(r − b_r) − d(u·(β − b_β))/dt`, m/s² per sample: what
+/// the bank estimate reads as `g·sin θ` (NaN beside a masked sample where
+/// the run has `beta`).
+fn lateral_mismatch(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Vec<f64> {
     let lateral: Option<Vec<f64>> = run.beta.as_ref().map(|b| {
         // The sideslip's offset is no lateral velocity: d(u·b_β)/dt =
         // b_β·u̇ would read as bank wherever the car speeds up.
@@ -349,17 +394,35 @@ pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64], offsets: SensorOffset
             .collect()
     });
     let masked = |k: usize| run.masked.binary_search(&k).is_ok();
-    let raw: Vec<f64> = (0..run.t.len())
+    (0..run.t.len())
         .map(|k| {
             let v_dot = match &lateral {
                 Some(v) if central(k, v.len()).iter().any(|&i| masked(i)) => f64::NAN,
                 Some(v) => rate(&run.t, v, k),
                 None => 0.0,
             };
-            (ay[k] - offsets.ay - run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate) - v_dot) / G
+            ay[k] - offsets.ay - run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate) - v_dot
+        })
+        .collect()
+}
+
+/// The yaw rate's scale of `run` ([`YawScale`]): the line of the bank
+/// estimate's residual on the turning `u·(r − b_r)` where the residual is
+/// known, both averaged alike (the same linear filter keeps the line),
+/// masked samples left out.
+fn yaw_scale(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Option<YawScale> {
+    let e = lateral_mismatch(run, ay, offsets);
+    let x: Vec<f64> = (0..e.len())
+        .map(|k| match e[k].is_finite() {
+            true => run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate),
+            false => f64::NAN,
         })
         .collect();
-    smoothed_angle(&run.t, &raw, &run.masked)
+    let (xs, es) = (
+        smooth(&run.t, &x, &run.masked),
+        smooth(&run.t, &e, &run.masked),
+    );
+    YawScale::of_kept(&xs, &es, &run.masked)
 }
 
 /// The neighbours of sample `k` of `n` a central difference takes (one

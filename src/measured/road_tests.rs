@@ -328,3 +328,54 @@ fn a_run_over_speeds_tells_a_yaw_rate_offset_from_an_ay_offset() {
         "not growing with the speed as a yaw-rate offset's would: a bank or an ay offset"
     ));
 }
+
+/// A straight then a left turn at 25 m/s (2 s, then 8 s at 0.16 rad/s,
+/// 100 Hz) on flat ground, its gyro reading `scale` times the yaw rate, and
+/// the road banked `turn_bank` rad (left edge higher) in the turn only.
+fn turn(name: &str, scale: f64, turn_bank: f64) -> RoadGeometry {
+    let n = 1001;
+    let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+    let r: Vec<f64> = t
+        .iter()
+        .map(|&t| if t < 2.0 { 0.0 } else { 0.16 })
+        .collect();
+    let bank: Vec<f64> = r
+        .iter()
+        .map(|r| if *r > 0.0 { turn_bank } else { 0.0 })
+        .collect();
+    let ay: Vec<f64> = (0..n).map(|k| 25.0 * r[k] + G * bank[k].sin()).collect();
+    let gyro: Vec<f64> = r.iter().map(|r| scale * r).collect();
+    let run = MeasuredRun::new(name, t, vec![25.0; n], vec![0.01; n], gyro).with_ay(ay);
+    RoadGeometry::of(name, &run, SensorOffsets::default(), 0.0)
+}
+
+/// Round 40: one run's yaw rate ×1.15 read as a bank of −2.2° to −0.1°.
+/// Of four exact runs the scaled one is set apart with its scale given
+/// back exactly, and its line says it is the gyro's (or the
+/// accelerometer's) scale, not a bank, naming what reads alike at one
+/// speed: the same turn banked `asin(4·(1/1.15 − 1)/g)` under a true gyro
+/// reads the same scale. The other runs read ×1, and none is set apart.
+#[test]
+fn a_yaw_rate_scale_no_other_run_shares_is_set_apart() {
+    let roads = RoadGeometry::set_apart(vec![
+        turn("a", 1.0, 0.0),
+        turn("b", 1.15, 0.0),
+        turn("c", 1.0, 0.0),
+        turn("d", 1.0, 0.0),
+    ]);
+    for g in [&roads[0], &roads[2], &roads[3]] {
+        assert_eq!(g.scale_apart, None);
+        assert!((g.yaw_scale.unwrap().scale - 1.0).abs() < 1e-9, "{g:?}");
+    }
+    let a = roads[1].scale_apart.unwrap();
+    assert!(
+        (a.scale - 1.15).abs() < 1e-9 && (a.factor - 1.15).abs() < 1e-9,
+        "{a:?}"
+    );
+    assert_eq!((a.other_runs, roads[1].apart), (3, None));
+    let line = roads[1].line().unwrap();
+    assert!(line.contains("; its yaw rate reads ×1.150 ± 0.000 of what ay/u says, the other 3 runs' ×1.000 (their median): a scale error of ×1.150 of the gyro (or of ×0.870 of the accelerometer), not a bank; only a road banked in step with the turning under this run alone (as a banked oval's turns) reads alike at one speed"), "{line}");
+    let banked = turn("e", 1.0, (4.0 * (1.0 / 1.15 - 1.0) / G).asin());
+    let k = banked.yaw_scale.unwrap().scale;
+    assert!((k - 1.15).abs() < 1e-9, "{k}");
+}

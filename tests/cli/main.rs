@@ -950,6 +950,7 @@ mod trips_s108_mf43;
 mod trips_s108_runwords43;
 mod trips_s109_eqstudy41;
 mod trips_s109_fleetdesign41;
+mod trips_s109_gyroscale41;
 mod trips_s109_lead;
 mod trips_s109_loadlevels41;
 mod trips_s109_perf40f;

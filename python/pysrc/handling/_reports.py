@@ -443,12 +443,13 @@ class Verdict:
     ``noise_floor``, or null where no one channel carries what is left)
     and ``runs_carrying`` (``carried_by``: the run, or two, holding more
     than two thirds of ``J² − J_n²``, each ``run``, ``share_percent``,
-    ``heldout_error``, empty where it is spread over the runs;
+    ``heldout_error``, ``scale_apart`` (its road's yaw-rate scale apart,
+    or null), empty where it is spread over the runs;
     ``above_noise``, ``runs``, ``largest``; or null); ``tyres_far_from_load`` with ``front``, ``rear``; or
     ``on_search_bound`` with ``parameters``). ``causes`` lists
     what the report holds elsewhere about the channel, each with ``kind``:
     ``beta_against`` (``file``, ``correlation``), ``run_carries``
-    (``run``, ``share_percent``, ``rms``) or ``steady_offset``."""
+    (``run``, ``share_percent``, ``rms``, ``scale_apart``) or ``steady_offset``."""
     threshold: Optional[float] = None
     """The multiple of the noise level a gap must exceed (no significant gap)."""
     no_tyre: List[Dict[str, Any]] = field(default_factory=list)

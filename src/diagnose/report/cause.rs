@@ -8,7 +8,8 @@
 //! model's steady offset in the channel (the gap's finding); and where a
 //! gap the effects leave is carried by one channel (the gap's shares),
 //! which, and the run (or two) holding most of that gap over all
-//! channels ([`super::runs_left`]). Without them
+//! channels ([`super::runs_left`]), with its yaw-rate scale where its road
+//! reads one apart from the other runs' ([`ScaleApart`]). Without them
 //! "another cause (a model-form error …, or this channel's sensor)" points
 //! nowhere while the report's top names the run (round 38: one run's
 //! `beta` negated, its note at −0.88, the warning silent on it).
@@ -16,6 +17,7 @@
 //! Units: RMS values and floors in the channel's unit; shares in percent.
 
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::outcome::RunsCarrying;
 use crate::diagnose::report::outcome::{
     CarriedBy, ChannelCause, ChannelLeft, ChannelWorsened, GapFinding, Note, Verdict,
     VerdictWarning,
@@ -23,17 +25,25 @@ use crate::diagnose::report::outcome::{
 use crate::diagnose::report::shares::{ChannelShare, CARRIES_SHARE};
 use crate::diagnose::report::summary::DOMINANT_SHARE;
 use crate::diagnose::report::{GapReport, Part, Shrinkage};
+use crate::measured::road::{RoadGeometry, ScaleApart};
 
 /// Fills the causes of the channel warnings of an explained `verdict`
 /// from the diagnosis's `notes` and its `gap` (its findings and held-out
 /// table), and the channel that carries what a gap it leaves holds (the
-/// gap's shares).
-pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
+/// gap's shares); the runs holding a gap left named with their yaw-rate
+/// scale where their `roads` read one apart.
+pub(crate) fn point(
+    verdict: &mut Verdict,
+    notes: &[Note],
+    gap: &GapReport,
+    roads: &[RoadGeometry],
+) {
     if let Verdict::OutsideLibrary(o) = verdict {
         // The verdict's gap is the base model's: its parts' `after` are
         // its `before` (no effects).
         o.bearing = beta_against(notes);
-        o.runs_carrying = super::runs_left::runs_carrying(&gap.parts, &gap.noise, o.noise_level);
+        let runs = super::runs_left::runs_carrying(&gap.parts, &gap.noise, o.noise_level);
+        o.runs_carrying = with_scales(runs, roads);
         return;
     }
     let Verdict::Explained(e) = verdict else {
@@ -49,6 +59,7 @@ pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
                 channel, causes, ..
             }) => {
                 *causes = causes_of(*channel, notes, &gap.findings, &gap.parts);
+                with_run_scales(causes, roads);
                 if !causes.is_empty() {
                     named.push(*channel);
                 }
@@ -64,16 +75,18 @@ pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
             ..
         } = w
         {
-            *runs_carrying = super::runs_left::runs_carrying(&gap.parts, &gap.noise, *noise_level);
+            let runs = super::runs_left::runs_carrying(&gap.parts, &gap.noise, *noise_level);
+            *runs_carrying = with_scales(runs, roads);
             *carried_by = carrying(&gap.channel_shares).map(|(channel, share_percent)| {
                 let causes_named = named.contains(&channel);
                 // A channel no warning names: what the report holds about
                 // it said here (round 39: one run's yaw offset carried the
                 // rest, "ay carries 75 %" pointed nowhere).
-                let causes = match causes_named {
+                let mut causes = match causes_named {
                     true => Vec::new(),
                     false => causes_of(channel, notes, &gap.findings, &gap.parts),
                 };
+                with_run_scales(&mut causes, roads);
                 let noise_floor = gap
                     .parts
                     .iter()
@@ -87,6 +100,34 @@ pub(crate) fn point(verdict: &mut Verdict, notes: &[Note], gap: &GapReport) {
                     noise_floor,
                 }
             });
+        }
+    }
+}
+
+/// `runs` with the yaw-rate scale apart of each run named in it, from its
+/// road in `roads` (the same run names: each replayed piece's).
+fn with_scales(runs: Option<RunsCarrying>, roads: &[RoadGeometry]) -> Option<RunsCarrying> {
+    let mut runs = runs?;
+    let scale_of =
+        |run: &str| -> Option<ScaleApart> { roads.iter().find(|g| g.run == run)?.scale_apart };
+    for s in runs.carried_by.iter_mut().chain(runs.largest.iter_mut()) {
+        s.scale_apart = scale_of(&s.run);
+    }
+    Some(runs)
+}
+
+/// The yaw-rate scale apart of each run carrying a channel's gap in
+/// `causes`, from its road in `roads`.
+fn with_run_scales(causes: &mut [ChannelCause], roads: &[RoadGeometry]) {
+    for c in causes {
+        if let ChannelCause::RunCarries {
+            run, scale_apart, ..
+        } = c
+        {
+            *scale_apart = roads
+                .iter()
+                .find(|g| g.run == *run)
+                .and_then(|g| g.scale_apart);
         }
     }
 }
@@ -171,6 +212,7 @@ fn run_carrying(row: &Shrinkage) -> Option<ChannelCause> {
         run: top.run.clone(),
         share_percent: 100.0 * share,
         rms: top.after,
+        scale_apart: None,
     })
 }
 
@@ -222,11 +264,14 @@ mod tests {
             run: named,
             share_percent,
             rms,
+            scale_apart,
         }) = run_carrying(&row(Channel::Beta, runs(0.0102)))
         else {
             panic!("no run named")
         };
         assert_eq!((named.as_str(), rms), ("b.csv", 0.0102));
+        // Its road's scale is added where the roads are known (`point`).
+        assert_eq!(scale_apart, None);
         let expected = 100.0 * 0.060024 / (0.060024 + 0.021);
         assert!((share_percent - expected).abs() < 1e-6, "{share_percent}");
         assert_eq!(run_carrying(&row(Channel::Beta, runs(0.0080))), None);

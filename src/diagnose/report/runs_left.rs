@@ -70,6 +70,7 @@ pub(crate) fn runs_carrying(
             run: s.run.clone(),
             share_percent: 100.0 * part(s) / total,
             heldout_error: (s.weighted / s.samples.max(1) as f64).sqrt(),
+            scale_apart: None,
         })
         .collect();
     shares.sort_by(|a, b| b.share_percent.total_cmp(&a.share_percent));

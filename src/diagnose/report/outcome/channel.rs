@@ -90,6 +90,9 @@ pub enum ChannelCause {
         share_percent: f64,
         /// Its held-out RMS with the verdict's effects, the channel's unit.
         rms: f64,
+        /// Its yaw rate's scale that the other runs do not share, read
+        /// from its road's kinematics (its road's `scale_apart`).
+        scale_apart: Option<crate::measured::road::ScaleApart>,
     },
     /// The base model's steady offset in the channel over the runs (its
     /// gap finding's, [`super::GapFinding::Channel`]).
@@ -148,4 +151,7 @@ pub struct RunShare {
     /// over the channels' scales, dimensionless; the noise level is the
     /// campaign's).
     pub heldout_error: f64,
+    /// Its yaw rate's scale that the other runs do not share, read from
+    /// its road's kinematics (its road's `scale_apart`; None: none).
+    pub scale_apart: Option<crate::measured::road::ScaleApart>,
 }

@@ -40,6 +40,7 @@ fn another_cause_names_the_file_whose_beta_moves_against_the_model() {
         run: run.into(),
         share_percent: 91.4,
         rms: 0.0312,
+        scale_apart: None,
     };
     let w = left(0.0147, 0.0132, 14.0, vec![against.clone()]);
     assert!(
@@ -293,6 +294,7 @@ fn a_gap_left_names_the_channel_that_carries_it() {
             run: "step_060kph_2ms2.csv".into(),
             share_percent: 91.0,
             rms: 0.0132,
+            scale_apart: None,
         }],
         noise_floor: 0.002,
     });
@@ -356,6 +358,7 @@ fn a_gap_left_names_the_runs_that_hold_it_or_says_it_is_spread() {
             run: "runs/step_100kph_2ms2.csv".into(),
             share_percent: 90.8,
             heldout_error: 5.553,
+            scale_apart: None,
         }],
         above_noise: 8,
         runs: 8,

@@ -25,9 +25,14 @@ pub(super) fn pointed(causes: &[ChannelCause], channel: Channel, floor: f64) -> 
                 run,
                 share_percent,
                 rms,
+                scale_apart,
             } => {
+                // A gyro's scale error in that run holds its gap.
+                let scale = scale_apart.map_or(String::new(), |a| {
+                    format!("; {}", crate::measured::road::scale_in_run(&a))
+                });
                 let carries = format!(
-                    "{share_percent:.0} % of this channel's gap above noise left (RMS {rms:.4} {unit}, {} noise floors)",
+                    "{share_percent:.0} % of this channel's gap above noise left (RMS {rms:.4} {unit}, {} noise floors){scale}",
                     crate::format::fixed(rms / floor, 1)
                 );
                 let file = source_file(std::path::Path::new(run));

@@ -8,10 +8,15 @@
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{OutsideLibrary, RunShare, RunsCarrying};
 
-/// One run and its share: `a.csv 58 % (its own held-out error 3.120)`.
+/// One run and its share: `a.csv 58 % (its own held-out error 3.120)`,
+/// and its yaw rate's scale where its road reads one the other runs do not
+/// share (a gyro's scale error holds the gap its run leaves).
 fn one(s: &RunShare) -> String {
+    let scale = s.scale_apart.map_or(String::new(), |a| {
+        format!("; {}", crate::measured::road::scale_in_run(&a))
+    });
     format!(
-        "{} {:.0} % (its own held-out error {:.3})",
+        "{} {:.0} % (its own held-out error {:.3}{scale})",
         s.run, s.share_percent, s.heldout_error
     )
 }
@@ -29,6 +34,20 @@ pub(super) fn held_by(r: &RunsCarrying) -> String {
         r.runs,
         each.join(" and ")
     )
+}
+
+/// `r` without the yaw-rate scales `said` already names (a run carrying
+/// the channel's gap said with its scale is not said with it again).
+pub(super) fn without_scales_said(r: &RunsCarrying, said: &str) -> RunsCarrying {
+    let mut r = r.clone();
+    for s in r.carried_by.iter_mut() {
+        if let Some(a) = s.scale_apart {
+            if said.contains(&crate::measured::road::scale_in_run(&a)) {
+                s.scale_apart = None;
+            }
+        }
+    }
+    r
 }
 
 /// Where a further cause held by one run or two lies: in their data
@@ -84,6 +103,7 @@ mod tests {
             run: run.into(),
             share_percent,
             heldout_error,
+            scale_apart: None,
         }
     }
 

@@ -82,7 +82,11 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             let runs = runs_carrying.as_ref();
             let named = runs.filter(|r| !r.carried_by.is_empty());
             match (carried_by, named, runs) {
-                (Some(c), Some(r), _) => format!("{head}, not noise: {}; over all channels {}", carried(c), super::runs_left::held_by(r)),
+                (Some(c), Some(r), _) => {
+                    let said = carried(c);
+                    let r = super::runs_left::without_scales_said(r, &said);
+                    format!("{head}, not noise: {said}; over all channels {}", super::runs_left::held_by(&r))
+                }
                 (Some(c), None, _) => format!("{head}, not noise: {}", carried(c)),
                 (None, Some(r), _) => format!("{head}, not noise: {}; {}", super::runs_left::held_by(r), super::runs_left::look_first(r)),
                 (None, None, Some(r)) => format!("{head} (an effect outside the library, or the base model's own form), not noise: {}", super::runs_left::spread(r)),

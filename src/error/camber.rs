@@ -42,14 +42,6 @@ fn both_units(limit: f64) -> String {
 /// evaluated in another is said why.
 pub(super) fn camber_beyond(column: &str, value: f64, limit: f64) -> String {
     let v = super::number::Num(value);
-    if column != "camber" && limit < std::f64::consts::FRAC_PI_2 {
-        // A slip-angle column asked by the camber's rule (tyre-eval).
-        let deg = crate::format::readable(value.to_degrees(), 3);
-        return format!(
-            "{v} rad ({deg}°) is beyond {}, as every slip angle of the column other than 0 is, where no tyre is swept alone (a rig sweeps through 0 to about 15°); a column with a slip angle within ±20° is read in radians",
-            both_units(limit)
-        );
-    }
     if column != "camber" {
         return format!("{v} rad is beyond ±{:.0}°", limit.to_degrees());
     }

@@ -348,6 +348,13 @@ impl RoadGeometry {
             (None, Some(a)) if lateral => super::road_apart::apart(&a, self.speed, self.by_speed),
             _ => String::new(),
         };
+        // A run whose yaw rate's scale is apart has no bank to state: what
+        // its mismatch reads as an angle is the scale's, in step with the
+        // turning, and is said as such.
+        let what = match self.scale_apart {
+            Some(_) if lateral => "no bank: the angle",
+            _ => what,
+        };
         format!(
             "{what} {}{offsets} {}° to {}° (5–95 %; median {}°){caveat}{apart}",
             p.source.words(),

@@ -290,7 +290,9 @@ fn a_stall_on_linear_tyres_is_advised_a_step_within_the_roads_grip() {
     assert!(ran, "{said}");
     let line = said
         .lines()
-        .find(|l| l.contains("(μ·g) this road can give"))
+        .find(|l| {
+            l.contains("(μ·g) this road can give") && l.contains("no friction limit of their own")
+        })
         .unwrap_or_else(|| panic!("no word of μ·g: {said}"));
     assert!(
         line.contains(

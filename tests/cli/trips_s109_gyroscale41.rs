@@ -86,8 +86,14 @@ fn a_scaled_gyro_is_named(k: f64) {
     );
     let line = road_line(&said, run);
     assert!(line.contains(&words), "{line}");
-    // Its bank is the scale's: not said as a bank, an ay or a yaw offset.
+    // Its bank is the scale's: not said as a bank, an ay or a yaw offset
+    // (round 42: the line began "bank estimated … (median -5.1°)").
     assert!(!line.contains("read alike in one run's ay − u·r"), "{line}");
+    assert!(!line.contains("bank estimated"), "{line}");
+    assert!(
+        line.contains(": no bank: the angle estimated from ay − u·r"),
+        "{line}"
+    );
     let on_page = line.trim_start().trim_start_matches("road: ");
     assert!(
         page.contains(&escaped(on_page)),

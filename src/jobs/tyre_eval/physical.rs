@@ -20,13 +20,12 @@
 //! `CAMMIN`/`CAMMAX` with a warning as MFeval does (`ranges.rs`), a model
 //! with no camber range saying them (`camber.rs`).
 //!
-//! A slip angle is asked by the same rule past ±20° ([`MAX_RIG_SLIP_ANGLE`],
-//! the most a rig sweeps in radians): a column whose every slip angle other
-//! than 0 lies there reads as one in degrees (0.5, 1, 1.2 meant as degrees
-//! read as 29–69°), and each such cell is asked at its place.
+//! A slip angle is not asked by that rule: `tyre-eval` is asked for points,
+//! and points only in the sliding range (30–80°, where a curvature makes
+//! the force reverse) are a tyre's state as much as a sweep through 0 is.
 
 use crate::constants::MOST_PRESSURE;
-use crate::error::{InputProblem, MAX_RIG_SLIP_ANGLE, MOST_CAMBER, STEEP_CAMBER};
+use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
 use crate::io::camber_in_degrees;
 use std::f64::consts::FRAC_PI_2;
 
@@ -85,9 +84,6 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
     let finite = || values.iter().filter(|v| v.is_finite());
     let every = name == "fz" && finite().count() > 0 && finite().all(|v| *v < 0.0);
     let camber_degrees = name == "camber" && camber_in_degrees(values);
-    // A slip-angle column by the camber's rule (round 41: 0.5, 1, 1.2
-    // meant as degrees were evaluated at 29–69° without a word).
-    let alpha_degrees = name == "alpha" && alpha_in_degrees(values);
     let refused = |(i, &value): (usize, &f64)| {
         let problem = if name == "speed" && value < 0.0 {
             // A slip angle within ±90° already says the wheel rolls
@@ -104,12 +100,6 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
                 column,
                 value,
                 limit: STEEP_CAMBER,
-            }
-        } else if alpha_degrees && (MAX_RIG_SLIP_ANGLE..=hi).contains(&value.abs()) {
-            InputProblem::AngleInDegrees {
-                column,
-                value,
-                limit: MAX_RIG_SLIP_ANGLE,
             }
         } else if !(lo..=hi).contains(&value) {
             InputProblem::NotPhysical {
@@ -139,19 +129,6 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
         .collect()
 }
 
-/// Whether a slip-angle column reads as degrees, by the camber's rule:
-/// some slip angle other than 0, and every one beyond
-/// [`MAX_RIG_SLIP_ANGLE`] (20°) read in radians. A tyre is swept through
-/// zero slip and its peak (the TTC's to 12°, a `.tir` grid's to 15°), so a
-/// column that never comes within 20° of straight rolling is no sweep of
-/// points in radians; one written in degrees reads so (1° as 57°).
-fn alpha_in_degrees(values: &[f64]) -> bool {
-    let mut slipped = values.iter().filter(|v| v.is_finite() && **v != 0.0);
-    let first = slipped.next();
-    first.is_some_and(|v| v.abs() > MAX_RIG_SLIP_ANGLE)
-        && slipped.all(|v| v.abs() > MAX_RIG_SLIP_ANGLE)
-}
-
 /// Whether an angle beyond `limit` (rad) reads as one in degrees: more
 /// than 1° past it (a hair past 90° is 90° rounded, said as such) and
 /// within it in degrees, as `identify` says of its rig files.
@@ -178,22 +155,7 @@ mod tests {
         assert!(not_physical("camber", &[0.1, 0.5, -0.4]).is_empty());
         assert!(not_physical("camber", &[0.0, 0.3, -0.3]).is_empty());
         assert!(not_physical("camber", &[0.0, 0.0]).is_empty());
-        // A slip angle by its own rule (below): beside a small one, read.
+        // A slip angle is not asked by the camber's rule: points past 20° are read.
         assert!(not_physical("alpha", &[0.0, 0.05, 0.5]).is_empty());
-    }
-
-    /// 0.5, 1 and −1.2 meant as degrees (29–69° in radians) are asked at
-    /// each cell; beside 0.1 (a sweep through small slip) or 0 alone, read.
-    #[test]
-    fn a_slip_angle_column_reads_as_degrees_where_no_slip_is_small() {
-        let asked = not_physical("alpha", &[0.0, 0.5, 1.0, -1.2]);
-        assert_eq!(asked.len(), 3, "{asked:?}");
-        assert!(matches!(
-            asked[2],
-            (3, InputProblem::AngleInDegrees { value: -1.2, limit, .. }) if limit == MAX_RIG_SLIP_ANGLE
-        ));
-        assert!(not_physical("alpha", &[0.1, 0.5, 1.0, -1.2]).is_empty());
-        assert!(not_physical("alpha", &[0.0, 0.3, -0.3]).is_empty());
-        assert!(not_physical("alpha", &[0.0]).is_empty());
     }
 }

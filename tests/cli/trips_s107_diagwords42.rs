@@ -9,15 +9,6 @@
 
 use super::*;
 
-/// `text` as the page writes it (`report::html::escape`).
-fn escaped(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&#39;")
-}
-
 /// The verdict's warnings in `diagnosis.json`.
 fn warnings(d: &serde_json::Value) -> Vec<String> {
     d["verdict"]["warnings"]

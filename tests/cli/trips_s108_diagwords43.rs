@@ -8,15 +8,6 @@
 
 use super::*;
 
-/// `text` as the page writes it (`report::html::escape`).
-fn escaped(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&#39;")
-}
-
 /// The book's campaign with `column` of `run` mapped by `f`, diagnosed:
 /// stdout, `diagnosis.json` and the page.
 fn edited(

@@ -9,15 +9,6 @@
 
 use super::*;
 
-/// `text` as the page writes it (`report::html::escape`).
-fn escaped(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&#39;")
-}
-
 /// The book's campaign with `yaw_rate` of `run` scaled by `k` (1: none),
 /// diagnosed: stdout, `diagnosis.json` and the page.
 fn scaled(dir: &Path, run: &str, k: f64) -> (String, serde_json::Value, String) {

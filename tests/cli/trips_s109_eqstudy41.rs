@@ -8,6 +8,8 @@
 
 use super::*;
 
+use crate::trips_s94_eq::study_with;
+
 /// The bundled steer sweep (Li, Jia & Zhao's first) with `pso` added to
 /// its `[pso]` table, written as `sweep.toml` in a scratch folder.
 fn steer_sweep(pso: &str) -> tempfile::TempDir {
@@ -15,19 +17,6 @@ fn steer_sweep(pso: &str) -> tempfile::TempDir {
     let with = text.replacen("seed = 1\n", &format!("seed = 1\n{pso}\n"), 1);
     assert_ne!(with, text, "the sweep has a [pso] seed line");
     scratch(&[("sweep.toml", &with)])
-}
-
-/// The bundled coarse study with its inverse target and reference replaced.
-fn coarse_study(target: &str, reference_front: &str) -> tempfile::TempDir {
-    let text = bundled_scenario("sedan_study_coarse.toml")
-        .replace("value = 0.13,", &format!("value = {target},"))
-        .replace(
-            "front = 500.0, rear",
-            &format!("front = {reference_front}, rear"),
-        );
-    assert!(text.contains(&format!("value = {target},")), "{text}");
-    assert!(text.contains(&format!("front = {reference_front}, rear")));
-    scratch(&[("study.toml", &text)])
 }
 
 /// 1-based line and column of the first `needle` in `text`, its column
@@ -88,7 +77,7 @@ fn distance(k: (f64, f64), reference: (f64, f64)) -> f64 {
 /// (the reference at 500) nothing of the kind is said.
 #[test]
 fn the_inverse_best_combination_is_held_to_the_map_and_said_so_at_its_edge() {
-    let dir = coarse_study("0.13", "5000.0");
+    let dir = study_with("0.13", "5000.0");
     let o = run_in(dir.path(), &["study", "study.toml", "--out", "out"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
@@ -122,7 +111,7 @@ fn the_inverse_best_combination_is_held_to_the_map_and_said_so_at_its_edge() {
         line.contains("; held to the map: it lies on the map's edge, the highest front stiffness (700 N/deg), and the curve may come closer beyond it"),
         "{line}"
     );
-    let dir = coarse_study("0.13", "500.0");
+    let dir = study_with("0.13", "500.0");
     let o = run_in(dir.path(), &["study", "study.toml", "--out", "out"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
@@ -156,7 +145,7 @@ fn csv_er_range(path: &Path) -> (f64, f64) {
 /// and says which axle no tyre is like.
 #[test]
 fn an_rbf_answer_no_tyre_has_is_not_simulated_and_the_target_said_out_of_reach() {
-    let dir = coarse_study("1.3", "500.0");
+    let dir = study_with("1.3", "500.0");
     let o = run_in(dir.path(), &["study", "study.toml", "--out", "out"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);

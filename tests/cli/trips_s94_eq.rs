@@ -196,7 +196,7 @@ fn the_branch_diagram_joins_the_fold_to_the_two_branches_that_meet_there() {
 
 /// The bundled coarse study with its Er target set to `target`, the tyres
 /// named by absolute path.
-fn study_with(target: &str, reference: &str) -> tempfile::TempDir {
+pub(crate) fn study_with(target: &str, reference: &str) -> tempfile::TempDir {
     let tyres = root().join("tyres");
     let text = fs::read_to_string(root().join("scenarios/sedan_study_coarse.toml"))
         .unwrap()
@@ -204,6 +204,10 @@ fn study_with(target: &str, reference: &str) -> tempfile::TempDir {
         .replace("value = 0.13,", &format!("value = {target},"))
         .replace("front = 500.0, rear", &format!("front = {reference}, rear"));
     assert!(text.contains(&format!("value = {target},")), "{text}");
+    assert!(
+        text.contains(&format!("front = {reference}, rear")),
+        "{text}"
+    );
     scratch(&[("study.toml", &text)])
 }
 

@@ -110,21 +110,12 @@ impl Settling {
     /// A noise-free record's verdict from its spread (a share of the step)
     /// and its steady window's trend.
     pub(super) fn of_spread(spread: f64, trend: Option<Trend>) -> Self {
-        match (spread < SETTLED_SPREAD, trend) {
-            (false, _) => Settling::NotSettled { beyond: spread },
-            (
-                true,
-                Some(Trend {
-                    heads,
-                    converging,
-                    rising,
-                }),
-            ) if heads >= SETTLED_DRIFT => Settling::Drifting {
-                heads,
-                converging,
-                rising,
-            },
-            (true, trend) => approaching(trend, 1.0),
+        if let Some(drift) = drifting(trend, 1.0, spread) {
+            return drift;
+        }
+        match spread < SETTLED_SPREAD {
+            false => Settling::NotSettled { beyond: spread },
+            true => approaching(trend, 1.0),
         }
     }
 }
@@ -216,7 +207,15 @@ impl ChannelSettling {
                         name,
                         (*heads, *rising),
                         ceiling,
-                        (limit::Verb::Finite, "its steady value")
+                        // A drift that does not slow has no steady value
+                        // to head beyond: its window's mean is the level.
+                        (
+                            limit::Verb::Finite,
+                            match converging {
+                                true => "its steady value",
+                                false => "its window's mean",
+                            }
+                        )
                     ),
                 )),
                 _ => None,
@@ -386,21 +385,40 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
     if beyond < SETTLED_SPREAD && n.inside.peak * to_scale >= SETTLED_SPREAD {
         beyond = beyond.max(SETTLED_SPREAD).max(n.inside.range * to_scale);
     }
+    let spread = if beyond >= band { beyond } else { 0.0 };
+    if let Some(drift) = drifting(n.trend, to_scale, spread) {
+        return drift;
+    }
     if beyond >= SETTLED_SPREAD && beyond >= band {
         return Settling::NotSettled { beyond };
     }
-    match n.trend {
-        Some(Trend {
-            heads,
-            converging,
-            rising,
-        }) if heads * to_scale >= SETTLED_DRIFT => Settling::Drifting {
-            heads: heads * to_scale,
-            converging,
-            rising,
-        },
-        trend => approaching(trend, to_scale),
-    }
+    approaching(n.trend, to_scale)
+}
+
+/// The verdict on a response whose `trend` (taken to `to_scale` times the
+/// step) moves one way across both windows and heads [`SETTLED_DRIFT`] or
+/// more beyond its window's mean: drifting where its spread (`spread`, a
+/// share of the step, 0 where within the noise's band) passes, and, where
+/// the spread fails too, where the trend does not slow. A spread is a
+/// deviation about the window's mean, and of a ramp it is a fraction of
+/// the ramp's rise: a yaw rate rising 10 %/s to the record's end spread by
+/// 2.1 % and was read "off by up to about 2.1 %" with its gain 40 % above
+/// the car's; a trend that does not slow has no steady value to be off
+/// from. A slowing trend with a failing spread stays a spread (not
+/// settled), as a study's samples take it.
+fn drifting(trend: Option<Trend>, to_scale: f64, spread: f64) -> Option<Settling> {
+    let Trend {
+        heads,
+        converging,
+        rising,
+    } = trend?;
+    let heads = heads * to_scale;
+    let passes = spread < SETTLED_SPREAD;
+    (heads >= SETTLED_DRIFT && (passes || !converging)).then_some(Settling::Drifting {
+        heads,
+        converging,
+        rising,
+    })
 }
 
 /// The verdict on a response settled by its spread and drift whose
@@ -474,6 +492,16 @@ pub(super) fn part_means(
 /// window before it.
 pub(super) const TREND_PARTS: usize = 12;
 
+/// The most a trend's slope may keep, across the two windows it is read
+/// over, and still be read as slowing: a slope that falls by less than a
+/// third there (thirds' ratio q above 0.935, a time constant over about
+/// five windows) is a drift the record cannot tell from a ramp, and a
+/// geometric limit extrapolated from it (d₂·q/(1 − q), fifteen thirds'
+/// changes and more) is no steady value the record bounds. A logged ramp's
+/// ratio read 0.9999 through the zero-phase filter's ends and was called
+/// settling.
+const SLOWED_BY: f64 = 2.0 / 3.0;
+
 /// Where the trend of a normalised response (steady value 1 over its
 /// steady window) heads, from the means of [`TREND_PARTS`] equal parts
 /// spanning the steady window and the window before it; `deviation` is
@@ -487,8 +515,8 @@ pub(super) const TREND_PARTS: usize = 12;
 /// and forth. The steady window's thirds' means m₁, m₂, m₃ of a geometric
 /// approach x = L − c·qᵗ form a geometric sequence whose limit is
 /// L = m₃ + d₂·q/(1 − q), with d₁ = m₂ − m₁, d₂ = m₃ − m₂, q = d₂/d₁ < 1; a
-/// trend that does not slow (q ≥ 1) heads at least a window's change
-/// beyond its last third.
+/// trend that does not slow (q ≥ 1, or q⁶ above [`SLOWED_BY`]) heads at
+/// least a window's change beyond its last third.
 pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Option<Trend> {
     let significant = (3.0 * deviation).max(1e-6);
     let rising = parts[1] > parts[0];
@@ -502,7 +530,7 @@ pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Optio
     let last = &parts[TREND_PARTS / 2..];
     let [m1, m2, m3] = [0, 2, 4].map(|k| 0.5 * (last[k] + last[k + 1]));
     let (d1, d2) = (m2 - m1, m3 - m2);
-    if d2.abs() >= d1.abs() {
+    if d2.abs() >= d1.abs() || (d2 / d1).powi(TREND_PARTS as i32 / 2) > SLOWED_BY {
         return Some(Trend {
             heads: (m3 - 1.0).abs() + (m3 - m1).abs(),
             converging: false,

@@ -86,7 +86,7 @@ fn a_sliding_cars_falling_trend_is_said_to_fall_not_to_pass_the_grip() {
     );
     let settling = line_with(&said, "the response has not settled");
     assert!(
-        settling.contains("the lateral acceleration is still drifting: the trend across its steady window heads 6.7 % of its step back below its steady value"),
+        settling.contains("the lateral acceleration is still drifting: the trend across its steady window heads 6.7 % of its step back below its window's mean"),
         "{settling}"
     );
 }

@@ -221,3 +221,53 @@ fn tyres_with_no_limit_are_bounded_by_the_road() {
         "{said}"
     );
 }
+
+/// Round 43: a yaw rate rising 10 %/s to the record's end spreads by only
+/// 2.1 % of its step about the window's mean; read as "not settled, off by
+/// up to about 2.1 %" its gain was 40 % above the car's. A ramp that does
+/// not slow is drifting whatever its spread, and its warning bounds
+/// nothing.
+#[test]
+fn a_ramp_spread_beyond_two_percent_is_drifting_and_bounds_no_gain() {
+    let ramp = trend_of_parts(parts(|t| 1.0 + 0.1 * t), 0.0).unwrap();
+    assert!(!ramp.converging && ramp.rising);
+    let s = Settling::of_spread(0.021, Some(ramp));
+    assert!(
+        matches!(
+            s,
+            Settling::Drifting {
+                converging: false,
+                rising: true,
+                ..
+            }
+        ),
+        "{s:?}"
+    );
+    let channels = ChannelSettling {
+        yaw_rate: s,
+        ay: None,
+        beta: None,
+    };
+    let w = channels.not_settled_warning(5.19).unwrap();
+    assert!(w.contains("drifts without slowing"), "{w}");
+    assert!(!w.contains("off by up to"), "{w}");
+    // A spread without a one-way trend (a response ringing in its window)
+    // stays a spread.
+    assert_eq!(
+        Settling::of_spread(0.021, None),
+        Settling::NotSettled { beyond: 0.021 }
+    );
+}
+
+/// A geometric approach is read as slowing only where its slope falls by a
+/// third or more across the two windows: a time constant of 3 s (three
+/// windows) does, one of 30 s (q = 0.989 a third) is a drift the record
+/// cannot tell from a ramp, and its limit is not extrapolated.
+#[test]
+fn an_approach_slower_than_the_windows_can_see_is_no_converging_trend() {
+    let approach =
+        |tau: f64| trend_of_parts(parts(|t| 1.0 - 0.3 * (-(t + 2.0) / tau).exp()), 0.0).unwrap();
+    assert!(approach(3.0).converging);
+    let slow = approach(30.0);
+    assert!(!slow.converging && slow.rising, "{slow:?}");
+}

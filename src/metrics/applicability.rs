@@ -24,6 +24,12 @@
 //! its steer to what a steering system can do, a road-wheel rate within
 //! [`STEER_RATE`]; and a run that starts with its steer already applied
 //! starts with an instant step from straight running.
+//!
+//! A response time at or below 0 is said as a lead only beyond
+//! [`LEAD_SPREADS`] of its crossing's spread from the run's own noise
+//! (`crossing_spread.rs`): a 0.0003 rad step under gyro noise of 1.7
+//! times its steady yaw rate read −0.029 s where the noise moves it by
+//! ±0.096 s.
 
 use super::StepMetrics;
 
@@ -84,6 +90,13 @@ pub const SPIN_OVERSHOOT: f64 = 100.0;
 /// The speed below which a step steer measures no dynamics, m/s
 /// (18 km/h).
 pub const CRAWL_SPEED: f64 = 5.0;
+/// Standard deviations of a response time's spread from noise beyond 0
+/// (early) for a response to lead the steer: a response lags the steer, so
+/// a time at or below 0 is a lead only where its noise would put it there
+/// in under one draw in 740 (one-sided normal; the spread leans high).
+/// Within it the time is the noise's, and `noise_spread.rs` says it with
+/// its spread (a third of its size or more, past the twentieth said).
+pub const LEAD_SPREADS: f64 = 3.0;
 /// The fastest road-wheel steer rate a schedule is taken to mean, rad/s:
 /// steering robots drive the handwheel at up to about 3,000°/s (ESC's
 /// sine with dwell needs about 1,200°/s), about 3.5 rad/s at the road
@@ -275,11 +288,20 @@ pub fn applicability_with_grip(
             overshoot,
             Some(Overshoot::GripUsed(_) | Overshoot::NoGripLimit | Overshoot::LinearSlip(_))
         );
-    for (name, time) in [
-        ("yaw rate", Some(m.yaw_rate_response_time)),
-        ("lateral acceleration", m.ay_response_time),
+    for (name, time, spread) in [
+        (
+            "yaw rate",
+            Some(m.yaw_rate_response_time),
+            m.yaw_rate_response_time_spread,
+        ),
+        (
+            "lateral acceleration",
+            m.ay_response_time,
+            m.ay_response_time_spread,
+        ),
     ] {
-        if let Some(t) = time.filter(|t| *t <= 0.0) {
+        let beyond_noise = |t: f64| spread.is_none_or(|s| -t > LEAD_SPREADS * s);
+        if let Some(t) = time.filter(|t| *t <= 0.0 && beyond_noise(*t)) {
             out.push(format!(
                 "the {name} reaches 90 % of its step {} s before the steer reaches half of its own (response time {} s): {}, not the lag GB/T 6323 and ISO 7401 measure",
                 crate::format::significant(-t, 2),

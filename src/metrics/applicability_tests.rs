@@ -366,3 +366,39 @@ fn a_value_beyond_a_limit_never_prints_as_the_limit() {
         "{w}"
     );
 }
+
+/// A response time below 0 is a lead only beyond [`LEAD_SPREADS`] of its
+/// spread from the run's noise: −0.029 s with ±0.096 s (the 0.0003 rad
+/// step's gyro noise) is the noise's and says nothing; −0.05 s with
+/// ±0.015 s (3.3 spreads) is said; without a spread (a noise-free run) any
+/// time below 0 is said, as before.
+#[test]
+fn a_lead_within_its_noise_is_not_said_and_one_beyond_it_is() {
+    let leading = |t: f64, spread: Option<f64>| {
+        let m = StepMetrics {
+            yaw_rate_response_time: t,
+            yaw_rate_response_time_spread: spread,
+            ..moderate()
+        };
+        applicability(&m, Some(22.2))
+            .iter()
+            .any(|w| w.contains("the yaw rate reaches 90 % of its step"))
+    };
+    assert!(!leading(-0.029, Some(0.096)));
+    assert!(!leading(-0.045, Some(0.015)));
+    assert!(leading(-0.05, Some(0.015)));
+    assert!(leading(-0.029, None));
+    // The ay's lead is judged by the ay's spread, not the yaw rate's.
+    let ay = |spread: f64| StepMetrics {
+        ay_response_time: Some(-0.05),
+        ay_response_time_spread: Some(spread),
+        yaw_rate_response_time_spread: Some(1.0),
+        ..moderate()
+    };
+    let said = |m: &StepMetrics| {
+        applicability(m, Some(22.2))
+            .iter()
+            .any(|w| w.contains("the lateral acceleration reaches 90 %"))
+    };
+    assert!(!said(&ay(0.042)) && said(&ay(0.01)));
+}

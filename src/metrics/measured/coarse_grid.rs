@@ -15,8 +15,14 @@
 //!
 //! ISO 7401 starts the step from straight running: a step from a steady
 //! turn gives changes from that turn (the table's steady ay is the
-//! change), which is said. Units: SI, rad, s; sideslip and steer said in
-//! degrees.
+//! change), which is said where the yaw rate and ay before it both stand
+//! apart from 0 beyond their own noise: each mean at least [`FROM_TURN`] of
+//! its step and [`TURN_ERRORS`] standard errors, the error counting
+//! correlated samples (`s·√(τ/n)`, τ the integrated autocorrelation time
+//! of `measured/calibration/stats.rs`): a 0.0003 rad step's pre-step yaw
+//! rate of −0.000557 rad/s under gyro noise of 0.002 rad/s (1.6 standard
+//! errors of its 0.5 s mean) was said to be a turn. Units: SI, rad, s;
+//! sideslip and steer said in degrees.
 
 use super::super::StepMetrics;
 use crate::measured::MeasuredRun;
@@ -31,6 +37,12 @@ const GRID_LEVELS: f64 = 65536.0;
 /// step for it to start from a turn: offsets of a gyro and an
 /// accelerometer are a few % of a step, each on its own.
 const FROM_TURN: f64 = 0.2;
+
+/// Standard errors of its noise by which each pre-step mean must stand
+/// from 0 for the step to start from a turn: a straight run's mean lies
+/// beyond 4 of them in about one run in 16 000 per channel (normal), and
+/// both channels must.
+const TURN_ERRORS: f64 = 4.0;
 
 /// The resolution q of `x`: its smallest non-zero change, where its range
 /// spans at most [`GRID_LEVELS`] of it.
@@ -165,8 +177,9 @@ fn one_ramp(x: &[f64], q: f64) -> bool {
 }
 
 /// The warning of a step that starts from a steady turn: the yaw rate and
-/// ay both read at least [`FROM_TURN`] of their steps before it (over the
-/// first `pre_window` s of `piece`).
+/// ay both read at least [`FROM_TURN`] of their steps and [`TURN_ERRORS`]
+/// standard errors of their means before it (over the first `pre_window`
+/// s of `piece`).
 pub(super) fn from_turn(piece: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> Option<String> {
     let ay = piece.ay.as_deref()?;
     let ay_step = m.ay_steady?;
@@ -179,18 +192,34 @@ pub(super) fn from_turn(piece: &MeasuredRun, m: &StepMetrics, pre_window: f64) -
             .filter(|(t, x)| **t <= t0 + pre_window && x.is_finite())
             .map(|(_, x)| *x)
             .collect();
-        v.iter().sum::<f64>() / v.len().max(1) as f64
+        mean_and_error(&v)
     };
-    let (r0, a0) = (before(&piece.yaw_rate), before(ay));
-    let turning =
-        r0.abs() >= FROM_TURN * m.yaw_rate_steady.abs() && a0.abs() >= FROM_TURN * ay_step.abs();
+    let ((r0, r_se), (a0, a_se)) = (before(&piece.yaw_rate)?, before(ay)?);
+    let apart = |mean: f64, error: f64, step: f64| {
+        mean.abs() >= FROM_TURN * step.abs() && mean.abs() > TURN_ERRORS * error
+    };
+    let turning = apart(r0, r_se, m.yaw_rate_steady) && apart(a0, a_se, ay_step);
     turning.then(|| {
         format!(
-            "the step starts from a turn (before it: yaw rate {} rad/s, ay {} m/s²), not from straight running as ISO 7401 asks: the steady values are changes from that turn (ay ends at {} m/s², the table's {} m/s² is the change), and the response is the car's about its turning state, not from straight ahead",
+            "the step starts from a turn (before it: yaw rate {} rad/s, ay {} m/s², each more than {TURN_ERRORS} standard errors of its mean from 0), not from straight running as ISO 7401 asks: the steady values are changes from that turn (ay ends at {} m/s², the table's {} m/s² is the change), and the response is the car's about its turning state, not from straight ahead",
             crate::format::readable(r0, 3),
             crate::format::readable(a0, 3),
             crate::format::readable(a0 + ay_step, 3),
             crate::format::readable(ay_step, 4),
         )
     })
+}
+
+/// The mean of `v` and its standard error counting correlated samples:
+/// `s·√(τ/n)`, τ the integrated autocorrelation time (1 for white noise);
+/// None for no samples.
+fn mean_and_error(v: &[f64]) -> Option<(f64, f64)> {
+    let n = v.len();
+    let mean = v.iter().sum::<f64>() / n as f64;
+    if n == 0 {
+        return None;
+    }
+    let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n.max(2) - 1) as f64;
+    let tau = crate::measured::calibration::stats::integrated_time(v, mean);
+    Some((mean, (var * tau / n as f64).sqrt()))
 }

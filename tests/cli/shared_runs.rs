@@ -87,3 +87,39 @@ pub(crate) fn yaw_inertia_3500_beside_a_delay() -> &'static Diagnosed {
         Diagnosed { said, d, out }
     })
 }
+
+/// `identify rig <args> --out out`: the terminal (stdout), the run made
+/// once per argument list and its files copied to `out` (the tyre file,
+/// `*.report.json`, the figure), its stdout naming them there. A swarm
+/// fit of one level of the Hoosier file (UniTire, about 10 s of a core)
+/// was run by four tests alike. The run must succeed.
+pub(crate) fn identified(rig: &Path, args: &[&str], out: &Path) -> String {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static MADE: crate::memo::Memo<Vec<String>, (PathBuf, String)> = crate::memo::Memo::new();
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let ext = out.extension().and_then(|e| e.to_str()).unwrap_or("toml");
+    let mut key = vec![rig.display().to_string(), ext.to_string()];
+    key.extend(args.iter().map(|a| a.to_string()));
+    let (made, said) = MADE.get(key, || {
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        let dir = fresh(&format!("identified-{n}"));
+        let made = dir.join(format!("fit.{ext}"));
+        let mut all = vec!["identify", rig.to_str().unwrap()];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--out", made.to_str().unwrap()]);
+        let o = run(&all);
+        assert!(o.status.success(), "{}", stderr(&o));
+        (made, String::from_utf8_lossy(&o.stdout).into_owned())
+    });
+    // Every file of the run (fit.toml, fit.report.json, fit.png) under
+    // `out`'s stem.
+    let (from, to) = (made.with_extension(""), out.with_extension(""));
+    for f in fs::read_dir(made.parent().unwrap()).unwrap() {
+        let name = f.unwrap().file_name().into_string().unwrap();
+        if let Some(rest) = name.strip_prefix("fit.") {
+            let target = format!("{}.{rest}", to.display());
+            fs::copy(made.parent().unwrap().join(&name), target).unwrap();
+        }
+    }
+    said.replace(&from.display().to_string(), &to.display().to_string())
+}

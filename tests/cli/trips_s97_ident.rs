@@ -348,7 +348,9 @@ fn a_refused_swarm_hold_is_tried_again_at_its_new_two_standard_error_edge() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("uni.toml");
     let said =
-        trips_s69_identify::at_pressure(&rig, "unitire", &out, &["--camber", "0", "--seed", "1"]);
+        // The default seed, 1: the fit trips_s69_identify's and
+        // trips_s95_ident's tests read.
+        trips_s69_identify::at_pressure(&rig, "unitire", &out, &["--camber", "0"]);
     let c9 = said
         .lines()
         .find(|l| l.contains("aligning.c9 = "))

@@ -611,6 +611,7 @@ mod scenarios;
 mod sedan_runs;
 mod set_search;
 mod shards;
+mod shared_runs;
 mod sweeps;
 mod toml_errors;
 mod trips;

@@ -23,20 +23,12 @@ fn one_level(rig: &Path, model: &str, out: &Path) -> String {
 
 /// `identify rig --model model --pressure 83400` with `extra` arguments,
 /// written to `out`: the terminal.
+/// Several tests fit the same level alike: the run is made once
+/// ([`shared_runs::identified`]) and its files copied to `out`.
 pub(crate) fn at_pressure(rig: &Path, model: &str, out: &Path, extra: &[&str]) -> String {
-    let mut args = vec![
-        "identify",
-        rig.to_str().unwrap(),
-        "--model",
-        model,
-        "--pressure",
-        "83400",
-    ];
+    let mut args = vec!["--model", model, "--pressure", "83400"];
     args.extend_from_slice(extra);
-    args.extend_from_slice(&["--out", out.to_str().unwrap()]);
-    let o = run(&args);
-    assert!(o.status.success(), "{}", stderr(&o));
-    String::from_utf8_lossy(&o.stdout).into_owned()
+    shared_runs::identified(rig, &args, out)
 }
 
 /// The held lines of `text` whose value is not the stated one but the

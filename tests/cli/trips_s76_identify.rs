@@ -228,29 +228,13 @@ fn a_magic_formula_version_the_tool_reads_but_does_not_fit_is_said_so() {
 #[test]
 fn a_template_fit_writes_its_held_values_and_warns_of_its_nominal_pressure() {
     let test = "a_template_fit_writes_its_held_values_and_warns_of_its_nominal_pressure";
-    let Some(data) = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv") else {
+    // `identify <hoosier> --model mf61 --template fsae190_50R10.tir --out
+    // h.tir`, run once for this test and trips_s95_ident's.
+    let Some(fit) = shared_runs::hoosier_on_fsae190(test) else {
         return;
     };
-    let Some(template) = shared_data(test, "tir_public/fsae190_50R10.tir") else {
-        return;
-    };
-    let dir = tempfile::tempdir().unwrap();
-    let o = run_in(
-        dir.path(),
-        &[
-            "identify",
-            data.to_str().unwrap(),
-            "--model",
-            "mf61",
-            "--template",
-            template.to_str().unwrap(),
-            "--out",
-            "h.tir",
-        ],
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let s = said(&o);
-    let tir = fs::read_to_string(dir.path().join("h.tir")).unwrap();
+    let s = format!("{}{}", fit.stdout, fit.stderr);
+    let tir = fs::read_to_string(fit.dir.join("h.tir")).unwrap();
     let written = |name: &str| -> f64 {
         let l = tir
             .lines()

@@ -28,9 +28,8 @@ pub(crate) fn edited_campaign(dir: &Path, from: &str, to: &str) -> PathBuf {
 /// to the car's 2315/3500 = 0.661.
 #[test]
 fn a_yaw_inertia_too_large_beside_a_sensor_delay_is_named_as_the_pair_it_is() {
-    let dir = tempfile::tempdir().unwrap();
-    let c = edited_campaign(dir.path(), "yaw_inertia = 2315", "yaw_inertia = 3500");
-    let (said, d) = diagnose_to(&c, &dir.path().join("out"));
+    let run = shared_runs::yaw_inertia_3500_beside_a_delay();
+    let (said, d) = (&run.said, &run.d);
     let v = &d["verdict"];
     assert_eq!(v["kind"], "explained", "{said}");
     let mut effects: Vec<&str> = v["effects"]

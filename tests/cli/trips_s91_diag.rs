@@ -6,7 +6,6 @@
 use super::*;
 
 use super::trips_s63::evidence;
-use super::trips_s90_diag::edited_campaign;
 
 /// Before: a yaw inertia 1.5× the car's beside a sensor delay gave
 /// "sensor_delay+yaw_inertia explains the gap" with nothing saying the
@@ -17,11 +16,11 @@ use super::trips_s90_diag::edited_campaign;
 /// singles paired and the start passed over).
 #[test]
 fn a_verdict_reached_by_the_pairs_fallback_says_so() {
-    let dir = tempfile::tempdir().unwrap();
-    let c = edited_campaign(dir.path(), "yaw_inertia = 2315", "yaw_inertia = 3500");
-    let (said, d) = diagnose_to(&c, &dir.path().join("out"));
+    // The run trips_s90_diag names the pair on, read here for its search.
+    let run = shared_runs::yaw_inertia_3500_beside_a_delay();
+    let (said, d) = (&run.said, &run.d);
     assert_eq!(d["verdict"]["kind"], "explained", "{said}");
-    let f = evidence(&d, "pairs_fallback");
+    let f = evidence(d, "pairs_fallback");
     assert_eq!(f.len(), 1, "{said}");
     let f = f[0];
     assert_eq!(f["start"], "relaxation_length", "{said}");
@@ -140,10 +139,8 @@ pub(crate) fn png_pixels(path: &Path) -> (Vec<u8>, usize, usize) {
 /// last 4 px and the first 20 px, where the panel above used to spill.
 #[test]
 fn the_gap_maps_key_stays_inside_its_panel_on_a_two_effect_verdict() {
-    let dir = tempfile::tempdir().unwrap();
-    let c = edited_campaign(dir.path(), "yaw_inertia = 2315", "yaw_inertia = 3500");
-    let out = dir.path().join("out");
-    let (said, d) = diagnose_to(&c, &out);
+    let run = shared_runs::yaw_inertia_3500_beside_a_delay();
+    let (said, d, out) = (&run.said, &run.d, &run.out);
     assert_eq!(
         d["verdict"]["effects"].as_array().unwrap().len(),
         2,

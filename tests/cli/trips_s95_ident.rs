@@ -193,17 +193,15 @@ fn reversal(said: &str) -> (f64, f64, f64, Option<f64>, f64) {
 #[test]
 fn the_reversal_angle_of_a_template_fit_is_where_mode_221_reverses() {
     let test = "the_reversal_angle_of_a_template_fit_is_where_mode_221_reverses";
-    let (Some(rig), Some(fsae)) = (
-        hoosier(test),
-        shared_data(test, "tir_public/fsae190_50R10.tir"),
-    ) else {
+    // `identify <hoosier> --model mf61 --template fsae190_50R10.tir`, run
+    // once for this test and trips_s76_identify's.
+    let Some(fit) = super::shared_runs::hoosier_on_fsae190(test) else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("h.tir");
-    let said = with_template(&rig, &fsae, &out);
-    let (deg, fz, camber, p, sign) = reversal(&said);
-    assert!(deg > 1.0, "{deg}° in {said}");
+    let out = fit.dir.join("h.tir");
+    let (deg, fz, camber, p, sign) = reversal(&fit.stdout);
+    assert!(deg > 1.0, "{deg}° in {}", fit.stdout);
     let p = p.unwrap_or(83400.0);
     let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
     for k in [0.98, 1.02] {

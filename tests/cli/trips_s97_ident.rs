@@ -80,6 +80,10 @@ fn a_template_block_turning_against_its_slip_over_the_written_range_is_said_by_i
         return;
     };
     let dir = scratch(&[("p.csv", "fz,kappa,alpha,camber,speed\n2500,0.05,0,0,11\n")]);
+    // What is said is the template's longitudinal block (no stage fits it:
+    // the file has no fx) over the data's loads (FZMIN 405.3, FZMAX 2928.5
+    // N), not the lateral fit: 10 iterations per step give the same words
+    // as the default in a twentieth of its time.
     let o = run_in(
         dir.path(),
         &[
@@ -89,6 +93,8 @@ fn a_template_block_turning_against_its_slip_over_the_written_range_is_said_by_i
             "mf61",
             "--template",
             tir.to_str().unwrap(),
+            "--max-iterations",
+            "10",
             "--out",
             "hm.tir",
         ],
@@ -342,7 +348,9 @@ fn a_refused_swarm_hold_is_tried_again_at_its_new_two_standard_error_edge() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("uni.toml");
     let said =
-        trips_s69_identify::at_pressure(&rig, "unitire", &out, &["--camber", "0", "--seed", "1"]);
+        // The default seed, 1: the fit trips_s69_identify's and
+        // trips_s95_ident's tests read.
+        trips_s69_identify::at_pressure(&rig, "unitire", &out, &["--camber", "0"]);
     let c9 = said
         .lines()
         .find(|l| l.contains("aligning.c9 = "))

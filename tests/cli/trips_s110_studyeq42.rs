@@ -1,4 +1,4 @@
-//! What fresh-eyes users tripped on in rounds 41 and 42 (issue 41), run as
+//! What fresh-eyes users tripped on in rounds 41 and 42, run as
 //! a user runs the tool: a study's RBF network that is a regression, said
 //! without a word; a design's "recommended" run expected within its own
 //! uncertainty; an equilibrium sweep's `speed = 70` (km/h meant) solved at

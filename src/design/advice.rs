@@ -9,6 +9,11 @@
 //! the campaign adds less than the runs that left the pair confounded.
 //! When none of the best is recommended, the set says so
 //! ([`Recommendation`]) instead of offering them as separating tests.
+//! One recommended by that rule whose expected separation is within
+//! [`FIRM_SIGMAS`] of its own uncertainty is said to be weak ([`Weak`]):
+//! Putnam's sweep expected to measure 277.9 ± 268.9 (1.03 σ) was
+//! "recommended", where one run of it lands at or below 0, no separation or
+//! the wrong candidate favoured, with a chance of 15 % on a normal spread.
 //!
 //! The diagnosis's confounded words name, per effect, the test that
 //! separates it (its signature, e.g. "steps at two speeds"); [`advised`]
@@ -24,6 +29,35 @@ use crate::diagnose::effects::EffectKind;
 use serde::Serialize;
 
 pub use crate::diagnose::report::worth::{worth, Worth};
+
+/// The expected separation, in units of its own uncertainty, from which
+/// one run separates a pair firmly: below it a normal spread puts 0 within
+/// 2 σ, and one run favours the wrong candidate with a chance above 2.3 %.
+pub const FIRM_SIGMAS: f64 = 2.0;
+
+/// A recommended manoeuvre whose expected separation lies within
+/// [`FIRM_SIGMAS`] of its own uncertainty.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Weak {
+    /// Its expected separation over its uncertainty.
+    pub sigmas: f64,
+    /// The chance that one run measures 0 or less (no separation, or the
+    /// wrong candidate favoured), on a normal spread: Φ(−sigmas).
+    pub wrong: f64,
+}
+
+impl Scored {
+    /// Whether it is recommended ([`Worth::Separates`]) but weakly: its
+    /// expected separation within [`FIRM_SIGMAS`] of its uncertainty.
+    pub fn weak(&self) -> Option<Weak> {
+        let (e, u) = self.expected.zip(self.uncertainty)?;
+        let sigmas = e / u;
+        (self.worth == Some(Worth::Separates) && sigmas < FIRM_SIGMAS).then(|| Weak {
+            sigmas,
+            wrong: 0.5 * libm::erfc(sigmas / std::f64::consts::SQRT_2),
+        })
+    }
+}
 
 /// What the diagnosis reads of a set's candidates with the campaign's
 /// runs: the words of the set's separation D say why D of the campaign's
@@ -250,6 +284,18 @@ mod tests {
         );
         let drive = recommendation(&[scored(27.0, 1.9, 8.2), scored(5.0, 1.0, 8.2)], 8.2);
         assert_eq!(drive, Recommendation::Drive { count: 1 });
+        // Putnam's sweep, 277.9 ± 268.9 against a campaign of 247.9: the
+        // rule recommends it, but at 1.03 σ one run lands at or below 0
+        // with Φ(−1.03) = 15 %; 27 ± 1.9 is firm; 4.0 ± 2.0 is at the
+        // bound (2 σ, Φ(−2) = 2.3 %), firm; one not recommended is no
+        // weak recommendation.
+        let putnam = scored(277.9, 268.9, 247.9).weak().unwrap();
+        assert!((putnam.sigmas - 277.9 / 268.9).abs() < 1e-12);
+        assert!((putnam.wrong - 0.1507).abs() < 5e-4, "{}", putnam.wrong);
+        assert_eq!(scored(27.0, 1.9, 8.2).weak(), None);
+        assert_eq!(scored(4.0, 2.0, 1.0).weak(), None);
+        assert!(scored(3.9, 2.0, 1.0).weak().is_some());
+        assert_eq!(scored(3.1, 9.5, 0.5).weak(), None);
     }
 
     /// Every effect of the library has its advised test in the family, or

@@ -32,7 +32,9 @@ pub mod lacking;
 mod request;
 pub mod separation;
 
-pub use advice::{Advised, AdvisedBest, DiagnosisReads, Missing, Recommendation, Worth};
+pub use advice::{
+    Advised, AdvisedBest, DiagnosisReads, Missing, Recommendation, Weak, Worth, FIRM_SIGMAS,
+};
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
 pub use calibration::{Calibration, ReferenceGap, CALIBRATING_D};
 pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};

@@ -48,7 +48,7 @@ pub struct SimulationSettings {
     pub max_step: Option<f64>,
 }
 
-pub use kmh::KmhSpeed;
+pub use kmh::{KmhSpeed, KmhStatedBy};
 pub use rows::MAX_ROWS;
 
 fn default_step() -> f64 {
@@ -566,7 +566,7 @@ fn is_folder_name(name: &str) -> bool {
     !(name.trim().is_empty() || name.contains(['/', '\\']) || name == "." || name == "..")
 }
 
-mod kmh;
+pub(crate) mod kmh;
 pub(crate) mod layout;
 mod no_grip;
 mod reach;

@@ -1,7 +1,8 @@
 //! Equilibrium sweep files (the book's `docs/src/formats.md`, "The project's own files"): a vehicle, its tyres,
 //! model options, the swept steer / friction / speed values, the search box,
 //! PSO settings and report options. Values are SI unless a `unit` says
-//! otherwise (`deg`, `km/h`), converted on reading.
+//! otherwise (`deg`, `km/h`), converted on reading; a speed axis without a
+//! unit whose fastest value reads as km/h is noted (`speed_kmh`).
 
 use super::axis_order::{disorder, range_value, Disorder};
 use super::file_kind::not_this_toml;
@@ -19,6 +20,8 @@ use crate::tyre::TyreModel;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, MIN_SPEED};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
+
+mod speed_kmh;
 
 /// A range `from..=to` by `step`.
 #[derive(Debug, Clone, Deserialize)]
@@ -538,7 +541,12 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     } else {
         portrait_conditions(&src, &f.report.phase_portraits)?
     };
-    let notes = portrait_notes(&grid, &portraits);
+    // The speed first: a km/h slip there explains a portrait off the axis.
+    let mut notes: Vec<String> = speed_kmh::fastest(&src, &f.sweep.speed)
+        .map(|k| k.to_string())
+        .into_iter()
+        .collect();
+    notes.extend(portrait_notes(&grid, &portraits));
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
             .map_or("sweep".into(), |s| s.to_string_lossy().into_owned())

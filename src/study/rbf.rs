@@ -4,9 +4,18 @@
 //! and a linear output layer with bias fitted to the training outputs. The
 //! output layer is solved by SVD least squares, so a badly conditioned design
 //! (a spread large against the spacing of the inputs) still gives an answer;
-//! the condition number is reported.
+//! the condition number is reported. The solve drops the directions whose
+//! singular value is below [`RCOND`] of the largest: past a condition
+//! number of `1/RCOND` it keeps fewer directions than there are pairs, and
+//! the network is then a least-squares fit through them, not the
+//! interpolant `newrbe` builds (`kept` says how many it kept).
 
 use nalgebra::{DMatrix, DVector};
+
+/// The singular values the solve keeps, relative to the largest: below it a
+/// direction of the design is rounding (double precision carries about 16
+/// digits, so at 1e-12 a direction's weight would carry 4 at best).
+pub(crate) const RCOND: f64 = 1e-12;
 
 /// A trained network from scalar inputs to vector outputs.
 #[derive(Debug, Clone, PartialEq)]
@@ -17,6 +26,10 @@ pub struct Rbf {
     weights: DMatrix<f64>,
     /// 2-norm condition number of the design matrix.
     pub condition: f64,
+    /// The directions (singular values) the solve kept: those above
+    /// [`RCOND`] of the largest; fewer than the centres makes the network a
+    /// regression, not an interpolant.
+    pub kept: usize,
 }
 
 impl Rbf {
@@ -50,7 +63,7 @@ impl Rbf {
         for k in 0..m {
             let rhs = DVector::from_iterator(n, y.iter().map(|v| v[k]));
             let w = svd
-                .solve(&rhs, 1e-12 * smax)
+                .solve(&rhs, RCOND * smax)
                 .expect("SVD was computed with U and V");
             weights.set_row(k, &w.transpose());
         }
@@ -59,7 +72,40 @@ impl Rbf {
             b,
             weights,
             condition: smax / smin,
+            kept: s.iter().filter(|v| **v > RCOND * smax).count(),
         }
+    }
+
+    /// The largest spread, to 1 %, at which a network on inputs `x` keeps
+    /// every direction (its condition number below `1/RCOND`): the spread
+    /// from which down it interpolates its pairs; None where even a spread
+    /// of a millionth of the inputs' range does not (inputs repeated).
+    pub(crate) fn interpolating_spread(x: &[f64]) -> Option<f64> {
+        let full = |spread: f64| {
+            let y: Vec<Vec<f64>> = x.iter().map(|_| vec![0.0]).collect();
+            Self::train(x, &y, spread).kept == x.len()
+        };
+        let (lo, hi) = x.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, &v| {
+            (a.0.min(v), a.1.max(v))
+        });
+        let range = hi - lo;
+        let (mut a, mut b) = (1e-6 * range, 1e3 * range);
+        if range.is_nan() || range <= 0.0 || !full(a) {
+            return None;
+        }
+        if full(b) {
+            return Some(b);
+        }
+        // The condition number grows with the spread: bisect its log.
+        while b / a > 1.01 {
+            let m = (a * b).sqrt();
+            if full(m) {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        Some(a)
     }
 
     /// The network's output at `x`.
@@ -94,6 +140,29 @@ mod tests {
         // Between the centres it interpolates smoothly.
         let p = net.predict(0.55);
         assert!((p[0] - 0.55f64.sin()).abs() < 1e-3, "{p:?}");
+    }
+
+    /// Wang & Liang's spread of 2 s on Er values 0.01 s apart is numerically
+    /// singular: the solve keeps fewer directions than pairs and misses
+    /// them; at the spread `interpolating_spread` finds it keeps every one
+    /// and passes through its pairs, and at twice that it no longer does.
+    #[test]
+    fn a_spread_far_beyond_the_spacing_regresses_and_the_one_found_interpolates() {
+        let x: Vec<f64> = (0..9).map(|i| 0.10 + 0.012 * f64::from(i)).collect();
+        let y: Vec<Vec<f64>> = x.iter().map(|v| vec![(40.0 * v).sin()]).collect();
+        let wide = Rbf::train(&x, &y, 2.0);
+        assert!(wide.condition > 1.0 / RCOND, "{}", wide.condition);
+        assert!(wide.kept < x.len(), "{}", wide.kept);
+        let s = Rbf::interpolating_spread(&x).unwrap();
+        assert!(s < 2.0 && s > 0.001, "{s}");
+        let net = Rbf::train(&x, &y, s);
+        assert_eq!(net.kept, x.len());
+        assert!(net.condition <= 1.0 / RCOND, "{}", net.condition);
+        for (xi, yi) in x.iter().zip(&y) {
+            assert!((net.predict(*xi)[0] - yi[0]).abs() < 1e-6);
+        }
+        assert!(Rbf::train(&x, &y, 1.03 * s).kept < x.len());
+        assert_eq!(Rbf::interpolating_spread(&[0.1, 0.1]), None);
     }
 
     #[test]

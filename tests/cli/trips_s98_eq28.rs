@@ -58,7 +58,7 @@ fn a_two_axis_sweep_draws_a_branch_diagram_per_value_of_the_other_axis() {
     assert!(
         said.contains("  branch diagrams along steer, one per speed (4 figures): branches_steer_speed_30kmh.png … branches_steer_speed_120kmh.png, each with its .csv\n")
             && said.contains("  branch diagrams along speed, one per steer (11 figures): branches_speed_steer_0deg.png … branches_speed_steer_11.4592deg.png")
-            && said.contains("  stability_map.png: steer × speed, every swept value, bifurcations along them marked\n"),
+            && said.contains("  stability_map.png: steer × speed, every swept value, bifurcations along them marked; coloured by the equilibria in the box at each point (points): 1 stable + 1 saddle ("),
         "{said}"
     );
     // Every bifurcation along steer is drawn in its speed's diagram: a

@@ -8,10 +8,12 @@
 //! ISO 3888's lane change at 80 km/h, ISO 4138's constant radius slower),
 //! and any test speed from 50 km/h up written in km/h reaches it.
 //!
-//! Speeds elsewhere have their own rules: a sweep's axis spans speeds on
-//! purpose and takes `unit = "km/h"` (its phase portraits off the axis
-//! get a km/h hint, `io::sweep`); a replayed or campaign log's speed is
-//! read against its yaw rate and lateral acceleration (`io::run_units`).
+//! An equilibrium sweep's speed axis given without a unit keeps the same
+//! rule ([`kmh_note`], from `io::sweep`): its fastest value from
+//! [`KMH_NOTE_SPEED`] up is noted, with the axis's `unit = "km/h"` as the
+//! remedy (its phase portraits off the axis get their own km/h hint). A
+//! replayed or campaign log's speed is read against its yaw rate and
+//! lateral acceleration (`io::run_units`).
 //!
 //! Units: m/s; km/h only as said.
 
@@ -37,6 +39,41 @@ pub struct KmhSpeed {
     pub at: (usize, usize),
     /// The speed, m/s.
     pub speed: f64,
+    /// What states it: a manoeuvre, or a sweep's axis.
+    pub stated_by: KmhStatedBy,
+}
+
+/// What states a speed noted in km/h: its remedy differs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KmhStatedBy {
+    /// A scenario's manoeuvre: the run is at it.
+    Manoeuvre,
+    /// An equilibrium sweep's speed axis, given without a unit: the
+    /// equilibria are solved at it; the axis takes `unit = "km/h"`.
+    SweepAxis,
+}
+
+/// The note on speed `speed` (m/s) that `src` states at `key`, where at or
+/// above [`KMH_NOTE_SPEED`]: the one rule for every speed a file states.
+pub(crate) fn kmh_note(
+    src: &TomlSource,
+    key: &str,
+    speed: f64,
+    stated_by: KmhStatedBy,
+) -> Option<KmhSpeed> {
+    if speed.is_nan() || speed < KMH_NOTE_SPEED {
+        return None;
+    }
+    let at = src
+        .key_span(key)
+        .map_or((0, 0), |span| line_col(&src.text, span.start));
+    Some(KmhSpeed {
+        path: src.path.clone(),
+        key: key.to_string(),
+        at,
+        speed,
+        stated_by,
+    })
 }
 
 /// The fastest speed manoeuvre `m` states, where at or above
@@ -59,18 +96,7 @@ pub(super) fn kmh_speed(src: &TomlSource, m: &Manoeuvre, replayed: bool) -> Opti
         }
         m => ("manoeuvre.speed".to_string(), m.speed(0.0)),
     };
-    if speed < KMH_NOTE_SPEED {
-        return None;
-    }
-    let at = src
-        .key_span(&key)
-        .map_or((0, 0), |span| line_col(&src.text, span.start));
-    Some(KmhSpeed {
-        path: src.path.clone(),
-        key,
-        at,
-        speed,
-    })
+    kmh_note(src, &key, speed, KmhStatedBy::Manoeuvre)
 }
 
 /// `v` to two decimals, trailing zeros dropped (288, 22.22).
@@ -86,14 +112,20 @@ impl fmt::Display for KmhSpeed {
             (line, col) => format!("{}:{line}:{col}", self.path.display()),
         };
         let v = short(self.speed);
+        let (done, remedy) = match self.stated_by {
+            KmhStatedBy::Manoeuvre => ("the run is at", format!("write {}", short(self.speed / 3.6))),
+            KmhStatedBy::SweepAxis => (
+                "the equilibria are solved at",
+                "give the axis `unit = \"km/h\"` (`speed = { values = [...], unit = \"km/h\" }`, or a range's `unit`)".to_string(),
+            ),
+        };
         write!(
             f,
-            "{place}: `{}`: speed = {v} m/s is {} km/h; {v} km/h is {} m/s: speeds are in m/s, and handling tests run well below {} km/h (ISO 7401's step steer at 80 km/h), so the run is at {v} m/s as written; if km/h was meant, write {}",
+            "{place}: `{}`: speed = {v} m/s is {} km/h; {v} km/h is {} m/s: speeds are in m/s, and handling tests run well below {} km/h (ISO 7401's step steer at 80 km/h), so {done} {v} m/s as written; if km/h was meant, {remedy}",
             self.key,
             short(3.6 * self.speed),
             short(self.speed / 3.6),
             short(3.6 * KMH_NOTE_SPEED),
-            short(self.speed / 3.6),
         )
     }
 }

@@ -337,6 +337,7 @@ impl DesignReport {
                         set.members.join(" / "),
                         s.separation,
                         match s.worth {
+                            _ if s.weak().is_some() => "; weak: within 2 of its own uncertainty, one run may show no separation or favour the wrong candidate",
                             Some(crate::design::Worth::Separates) | None => "",
                             Some(crate::design::Worth::WithinUncertainty) => "; not recommended: within its own uncertainty",
                             Some(crate::design::Worth::BelowCampaign) => "; not recommended: less than the campaign's runs separate them by",

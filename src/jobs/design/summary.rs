@@ -4,7 +4,9 @@
 //! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
-use crate::design::{DiagnosisReads, Measured, Recommendation, SameRun, Scored, SetDesign, Worth};
+use crate::design::{
+    DiagnosisReads, Measured, Recommendation, SameRun, Scored, SetDesign, Worth, FIRM_SIGMAS,
+};
 use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
@@ -173,7 +175,7 @@ fn ranked_line(k: usize, s: &Scored) -> String {
         k + 1,
         s.name,
         s.separation,
-        worth_words(s.worth),
+        worth_words(s),
         s.description
     )
 }
@@ -238,9 +240,18 @@ fn measured_lines(m: &Measured) -> Vec<String> {
     out
 }
 
-/// Whether a manoeuvre is recommended, in words after its expectation.
-fn worth_words(worth: Option<Worth>) -> &'static str {
-    match worth {
+/// Whether a manoeuvre is recommended, in words after its expectation;
+/// one recommended within [`FIRM_SIGMAS`] of its uncertainty is said to be
+/// weak, with its ratio and the chance one run misleads.
+fn worth_words(s: &Scored) -> String {
+    if let Some(w) = s.weak() {
+        return format!(
+            "; weak: expected at {:.2} times its own uncertainty, below {FIRM_SIGMAS}, so one run lands at or below 0 (no separation, or the wrong candidate favoured) with a chance of {:.0} % on a normal spread: it separates them as a series, not in one run",
+            w.sigmas,
+            100.0 * w.wrong
+        );
+    }
+    match s.worth {
         Some(Worth::Separates) => "; recommended",
         Some(Worth::WithinUncertainty) => {
             "; not recommended: within its own uncertainty, one run may show no separation or favour the wrong candidate"
@@ -253,6 +264,7 @@ fn worth_words(worth: Option<Worth>) -> &'static str {
         }
         None => "",
     }
+    .to_string()
 }
 
 /// `v` with `decimals` decimals where they show it, else with its first

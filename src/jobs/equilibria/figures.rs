@@ -1,10 +1,11 @@
 //! PNG figures of equilibrium sweeps: branch diagrams (stable solid,
 //! unstable dashed, folds marked), phase portraits (vector field,
 //! trajectories with arrowheads in the direction of flow, equilibria, saddle separatrices, computed in
-//! [`crate::equilibria::phase`]) and stability maps over two swept
-//! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
+//! [`crate::equilibria::phase`]); the stability map over two swept
+//! parameters is `super::map`'s. Angles are drawn in degrees, speeds in
+//! km/h, for reading.
 
-use super::slices::{axis_label, display, held_words, title_tail, Diagram};
+use super::slices::{axis_label, display, title_tail, Diagram};
 use crate::equilibria::bifurcation::{Axis, Bifurcation, BifurcationKind};
 use crate::equilibria::phase::{self, Manifold};
 use crate::equilibria::sweep::SweepResult;
@@ -19,9 +20,9 @@ use std::path::Path;
 
 /// Palette index of the fold markers (grey, apart from the stability
 /// colours).
-const FOLD: usize = 7;
+pub(super) const FOLD: usize = 7;
 
-fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
+pub(super) fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
     eqs.iter()
         .copied()
         .filter(|e| bx.contains([e.beta, e.yaw_rate]))
@@ -457,121 +458,4 @@ fn equilibrium_markers(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Series> {
         }
     }
     series
-}
-
-/// The bifurcations located along either axis of a stability map over
-/// `axes` (the third, if any, at its value in `first`), as grey discs: a
-/// map's cells change only where the stable set does, and a pitchfork or a
-/// Hopf point does not change it.
-fn map_bifurcations(res: &SweepResult, axes: (Axis, Axis), first: &Condition) -> Option<Series> {
-    let (ax, ay) = axes;
-    let on: Vec<&Bifurcation> = res
-        .bifurcations
-        .iter()
-        .filter(|b| b.axis == ax || b.axis == ay)
-        .filter(|b| {
-            [Axis::Steer, Axis::Friction, Axis::Speed]
-                .into_iter()
-                .filter(|&o| o != ax && o != ay)
-                .all(|o| (o.get(&b.at) - o.get(first)).abs() < 1e-12)
-        })
-        .collect();
-    (!on.is_empty()).then(|| {
-        let x: Vec<f64> = on.iter().map(|b| display(ax, ax.get(&b.at))).collect();
-        let y: Vec<f64> = on.iter().map(|b| display(ay, ay.get(&b.at))).collect();
-        Series::line("bifurcations located", &x, &y, FOLD).styled(Style::Points(7))
-    })
-}
-
-/// The stability map's category of a point's equilibria in the box: 0
-/// none, 1 stable only, 2 stable and saddles, 3 no stable one (the order of
-/// [`stability_map`]'s legend). Apart from it so that it reads on a screen.
-fn map_category(e: &[Equilibrium]) -> usize {
-    let stable = e.iter().filter(|q| q.stability.kind.is_stable()).count();
-    let saddles = e
-        .iter()
-        .filter(|q| q.stability.kind == Kind::Saddle)
-        .count();
-    match (e.len(), stable, saddles) {
-        (0, _, _) => 0,
-        (_, s, 0) if s > 0 => 1,
-        (_, s, _) if s > 0 => 2,
-        _ => 3,
-    }
-}
-
-/// Stability map over two swept axes (the third at its first value), the
-/// bifurcations along them marked.
-pub fn stability_map(
-    res: &SweepResult,
-    ax: Axis,
-    ay: Axis,
-    bx: &SearchBox,
-    path: &Path,
-) -> Result<(), Error> {
-    // In the colours of the branch diagrams: stable, stable beside a
-    // saddle, and unstable.
-    let cats: [(&str, usize); 4] = [
-        ("no equilibrium in the box", 7),
-        ("stable only", Class::Stable.colour()),
-        ("stable and saddles", Class::Saddle.colour()),
-        ("no stable equilibrium", Class::Unstable.colour()),
-    ];
-    let mut pts: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
-    let first = res.points[0].condition;
-    let others: Vec<Axis> = [Axis::Steer, Axis::Friction, Axis::Speed]
-        .into_iter()
-        .filter(|a| *a != ax && *a != ay)
-        .collect();
-    for p in &res.points {
-        if others
-            .iter()
-            .any(|o| (o.get(&p.condition) - o.get(&first)).abs() > 1e-12)
-        {
-            continue;
-        }
-        let cat = map_category(&in_box(&p.exact, bx));
-        pts[cat].push((
-            display(ax, ax.get(&p.condition)),
-            display(ay, ay.get(&p.condition)),
-        ));
-    }
-    let step = |a: Axis| {
-        let v = res.grid.values(a);
-        v.windows(2)
-            .map(|w| display(a, w[1]) - display(a, w[0]))
-            .fold(f64::INFINITY, f64::min)
-    };
-    let (dx, dy) = (step(ax), step(ay));
-    let series = cats
-        .iter()
-        .zip(&pts)
-        .filter(|(_, p)| !p.is_empty())
-        .map(|((label, color), p)| {
-            let (x, y): (Vec<f64>, Vec<f64>) = p.iter().copied().unzip();
-            Series::line(label, &x, &y, *color).styled(Style::Cells(dx, dy))
-        })
-        .collect();
-    let mut series: Vec<Series> = series;
-    series.extend(map_bifurcations(res, (ax, ay), &first));
-    let panel = Panel {
-        title: format!(
-            "stability map (equilibria in the search box){}",
-            others
-                .iter()
-                .map(|&o| format!(", at {}", held_words(o, &first)))
-                .collect::<String>()
-        ),
-        x_label: axis_label(ax).into(),
-        y_label: axis_label(ay).into(),
-        series,
-        ..Panel::default()
-    };
-    Figure {
-        panels: vec![panel],
-        columns: 1,
-        width: 900,
-        row_height: 700,
-    }
-    .save(path)
 }

@@ -6,6 +6,7 @@
 
 mod critical;
 mod figures;
+mod map;
 mod misses;
 mod outputs;
 mod slices;
@@ -295,7 +296,8 @@ impl EquilibriaReport {
             out.extend(critical_speed_line(&self.sweep.model, b));
         }
         if sw.report.plots {
-            out.extend(slices::figure_lines(&sw.grid));
+            let colours = map::colour_words(&self.result, &sw.search_box);
+            out.extend(slices::figure_lines(&sw.grid, &colours));
         }
         out.extend(
             self.leftovers
@@ -367,7 +369,7 @@ impl EquilibriaReport {
             let v = sw.grid.varying();
             if v.len() >= 2 {
                 let file = dir.join("stability_map.png");
-                figures::stability_map(r, v[0], v[1], &sw.search_box, &file)?;
+                map::stability_map(r, v[0], v[1], &sw.search_box, &file)?;
             }
             for (k, c) in sw.portraits.iter().enumerate() {
                 let eqs = exact::solve(&sw.model, c);

@@ -138,9 +138,10 @@ pub(super) fn title_tail(d: &Diagram, k: usize, lines: usize) -> String {
 
 /// The terminal's lines on the figures of a sweep of two or more axes:
 /// which files hold the branch diagrams along each axis, and what the
-/// stability map shows. Nothing for a one-axis sweep (its one diagram is
-/// `branches_<axis>.png`).
-pub(super) fn figure_lines(grid: &Grid) -> Vec<String> {
+/// stability map shows, its `colours` in words after it
+/// (`super::map::colour_words`). Nothing for a one-axis sweep (its one
+/// diagram is `branches_<axis>.png`).
+pub(super) fn figure_lines(grid: &Grid, colours: &str) -> Vec<String> {
     let varying = grid.varying();
     if varying.len() < 2 {
         return Vec::new();
@@ -166,7 +167,7 @@ pub(super) fn figure_lines(grid: &Grid) -> Vec<String> {
             axis.name()
         ));
     }
-    out.push(format!("  stability_map.png: {}", map_words(grid)));
+    out.push(format!("  stability_map.png: {}{colours}", map_words(grid)));
     out
 }
 
@@ -244,7 +245,7 @@ mod tests {
         assert_eq!((ds.len(), n), (MAX_DIAGRAMS, 41));
         assert_eq!(ds[0].line, axis_lines(&g, Axis::Steer)[0]);
         assert_eq!(ds[MAX_DIAGRAMS - 1].line, axis_lines(&g, Axis::Steer)[40]);
-        let lines = figure_lines(&g);
+        let lines = figure_lines(&g, "");
         assert!(
             lines[0].contains("at 20 of the 41 speeds, evenly spread"),
             "{lines:?}"

@@ -6,7 +6,7 @@
 //! the study's unit, Er in s.
 
 use super::target_range::{beyond_the_map, span, unit};
-use super::{BestAnswer, RbfAnswer, TargetReport};
+use super::{BestAnswer, RbfAnswer, RbfFit, TargetReport};
 use crate::study::inverse::{Map, MapEdge};
 use crate::study::{Metric, StiffnessUnit};
 
@@ -122,8 +122,17 @@ fn rbf_line(t: &TargetReport, r: &RbfAnswer, map: &Map, u: StiffnessUnit) -> Str
         (Some(e), Some(p)) => format!("Er {e:.6} re-simulated ({p:+.2} %)"),
         _ => "no Er re-simulated (the response there does not settle to a steady state within the step)".to_string(),
     };
+    // A regression's answer (see the note under the RBF line) is as good
+    // as its re-simulated Er, whatever the network's misfit.
+    let regression = match r.fit {
+        RbfFit::Regression if r.er_resimulated.is_some() => {
+            "; from the network as a regression: trust it as far as its re-simulated Er"
+        }
+        RbfFit::Regression => "; from the network as a regression, with no Er re-simulated to judge it by: not to be trusted",
+        RbfFit::Interpolant => "",
+    };
     format!(
-        "    RBF answer: ({:.1}, {:.1}) {u}, {resimulated}, distance {:.3}{extrapolation}",
+        "    RBF answer: ({:.1}, {:.1}) {u}, {resimulated}, distance {:.3}{extrapolation}{regression}",
         r.k_front, r.k_rear, r.distance_to_reference,
     )
 }

@@ -13,6 +13,7 @@ mod figures;
 mod lines;
 mod numbers;
 mod rbf_fit;
+pub use rbf_fit::RbfFit;
 mod table;
 pub use table::StudySummary;
 mod target_range;
@@ -56,6 +57,14 @@ pub struct RbfReport {
     pub training_pairs: usize,
     /// Condition number of the training system.
     pub condition_number: f64,
+    /// The directions (singular values) its solve kept, of one per
+    /// training pair.
+    pub directions_kept: usize,
+    /// Whether it interpolates its pairs or is a regression.
+    pub fit: RbfFit,
+    /// The largest spread at which it would keep every direction (an
+    /// interpolant), s; None where no spread does.
+    pub interpolating_spread: Option<f64>,
     /// Largest misfit of a training pair (either axle).
     pub largest_training_misfit: f64,
     /// The held-out pairs.
@@ -105,6 +114,9 @@ pub struct RbfAnswer {
     pub trained_er: (f64, f64),
     /// Relative distance to the current tyres.
     pub distance_to_reference: f64,
+    /// The network it comes from: a regression's answer is judged by its
+    /// re-simulated Er alone.
+    pub fit: RbfFit,
 }
 
 /// What a target has beyond a region: its curve, the best point on it and,
@@ -337,7 +349,10 @@ impl Job {
         let inverse = input
             .inverse
             .as_ref()
-            .map(|inv| answer(st, input, inv, &map, net.as_ref().map(|n| &n.0), unit))
+            .map(|inv| {
+                let net = net.as_ref().map(|n| (&n.0, n.1.fit));
+                answer(st, input, inv, &map, net, unit)
+            })
             .transpose()?;
         Ok(StudyReport {
             summary: StudySummary {
@@ -364,7 +379,9 @@ impl Job {
             tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
             out_dir: self.out_dir,
             lock,
-            notes: Vec::new(),
+            // The step's speed read as km/h written as m/s, by the
+            // scenario reader's rule (`simulate` says it too).
+            notes: sc.kmh_speed.iter().map(ToString::to_string).collect(),
         })
     }
 }
@@ -377,7 +394,7 @@ fn answer(
     input: &StudyInput,
     inv: &Inverse,
     map: &Map,
-    net: Option<&Rbf>,
+    net: Option<(&Rbf, RbfFit)>,
     unit: StiffnessUnit,
 ) -> Result<InverseReport, Error> {
     let k = unit.to_si();
@@ -402,7 +419,7 @@ fn answer(
                     at_map_edge: b.edge,
                 }
             });
-        let rbf = net.filter(|_| t.metric == Metric::Er).map(|net| {
+        let rbf = net.filter(|_| t.metric == Metric::Er).map(|(net, fit)| {
             let p = net.predict(t.value);
             // An answer no tyre has is no car to simulate: its "Er" would
             // be reported as the network's answer re-simulated.
@@ -419,6 +436,7 @@ fn answer(
                 error_percent: e.map(|e| 100.0 * (e - t.value) / t.value),
                 trained_er: net.trained_range(),
                 distance_to_reference: distance((p[0], p[1]), reference),
+                fit,
             }
         });
         let curve = CurveAnswer {
@@ -468,6 +486,7 @@ impl StudyReport {
                 "  RBF (spread {} s): trained on {} pairs, condition number {:.2e}, largest training misfit {:.3} {u}",
                 r.spread, r.training_pairs, r.condition_number, r.largest_training_misfit
             ));
+            out.extend(r.regression_note().map(|n| format!("  note: {n}")));
             out.push(format!("  validation (Wang & Liang, table 3): Er target → predicted k1, k2 [{u}] → Er re-simulated, error"));
             out.extend(r.validation.iter().map(|v| {
                 format!(

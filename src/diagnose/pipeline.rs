@@ -65,10 +65,10 @@ use crate::diagnose::report::summary::{base_run_gap, dominant, gap_summary, part
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::{baseline, Baseline};
-use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
 use crate::diagnose::verdict::search::{search, Search};
+use crate::diagnose::verdict::{calibration::offsets_matched, rules};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -553,6 +553,7 @@ fn run(
     let gap = gap_report(c, (noise, parts, run_gaps), scored, &scales, &mut verdict);
     let road = roads(c, &ctx);
     crate::diagnose::report::cause::point(&mut verdict, &notes, &gap, &road);
+    offsets_matched(&mut verdict, &gap.findings, &ctx.calibrated);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),

@@ -480,6 +480,7 @@ fn gap_report(
         .map(|e| error_rows(e, scales, &[]));
     let channel_shares = channel_shares(&before, after.as_deref());
     findings.extend(dominant(&channel_shares));
+    offsets_matched(verdict, &findings, &calibrated(c));
     if let Verdict::NoSignificantGap(n) = verdict {
         n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
         n.assumed = assumed_floors(&noise, &findings);
@@ -553,7 +554,6 @@ fn run(
     let gap = gap_report(c, (noise, parts, run_gaps), scored, &scales, &mut verdict);
     let road = roads(c, &ctx);
     crate::diagnose::report::cause::point(&mut verdict, &notes, &gap, &road);
-    offsets_matched(&mut verdict, &gap.findings, &ctx.calibrated);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),

@@ -242,7 +242,7 @@ fn a_steady_offset_the_standstills_measured_names_sensor_bias_to_add() {
     let verdict = line(&said, "verdict:");
     assert!(
         verdict.contains("the ay gap's steady offset -0.")
-            && verdict.contains("matches the standstills' ay offset 0.2")
+            && verdict.contains("matches the standstills' ay offset 0.")
             && verdict.contains(": add sensor_bias to [diagnose] effects"),
         "{verdict}"
     );

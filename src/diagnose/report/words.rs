@@ -32,12 +32,10 @@ pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
 pub use rank::{rank_warning, rank_warnings};
-pub use table::{
-    added, channel_change, channel_change_judged, channels_alone, reduction, rms, unchanged,
-    within_noise,
-};
+pub use table::{added, channel_change, channels_alone, reduction, rms, unchanged, within_noise};
 pub use trust::{
-    assumed_floor, channel_trust, channels_trusted, channels_trusted_for, judged_apart, Reader,
+    assumed_floor, channel_change_judged, channel_trust, channels_trusted, channels_trusted_for,
+    judged_apart, Reader,
 };
 pub use warnings::{effect_parameters_on_bound, verdict_warning};
 

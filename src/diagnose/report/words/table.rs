@@ -5,7 +5,7 @@
 //! floors in the channel's unit; shares in percent of the gap above noise.
 
 use crate::diagnose::report::outcome::{ChannelChange, SIGNIFICANT_NOISE_FLOORS, WORSENED};
-use crate::diagnose::report::{ChannelNoise, Reduction, Shrinkage};
+use crate::diagnose::report::{Reduction, Shrinkage};
 
 /// A channel's held-out gap within noise before and after the verdict's
 /// effects ([`crate::diagnose::report::Shrinkage::change`]): no share of
@@ -68,26 +68,6 @@ pub fn channel_change(s: &Shrinkage) -> String {
         rms(s.after),
         rms(s.noise_floor)
     )
-}
-
-/// [`channel_change`] with, where the channel's stated floor lies below
-/// its scatter ([`super::judged_apart`]: the fits weigh it by another
-/// value), that said beside the floor: one value judges significance,
-/// and the row names it.
-pub fn channel_change_judged(s: &Shrinkage, noise: &[ChannelNoise]) -> String {
-    let line = channel_change(s);
-    let judged = noise
-        .iter()
-        .find(|n| n.channel == s.channel)
-        .and_then(super::judged_apart);
-    match judged {
-        Some(j) => {
-            let floor = format!("(noise floor {})", rms(s.noise_floor));
-            let said = format!("(noise floor {}, stated, {j})", rms(s.noise_floor));
-            line.replacen(&floor, &said, 1)
-        }
-        None => line,
-    }
 }
 
 /// A worsening's share of the gap above noise added (`percent`), or where

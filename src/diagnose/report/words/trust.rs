@@ -8,7 +8,7 @@ use super::{rms, std_error, value};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
 use crate::diagnose::report::outcome::AssumedFloor;
-use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource};
+use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource, Shrinkage};
 
 /// Who reads the channels' trust, for what a user can do where a
 /// channel's reading lies near the line between a sensor and an
@@ -283,4 +283,24 @@ fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
         f.heldout_error_after,
         signatures.join("; ")
     )
+}
+
+/// [`super::channel_change`] with, where the channel's stated floor lies below
+/// its scatter ([`super::judged_apart`]: the fits weigh it by another
+/// value), that said beside the floor: one value judges significance,
+/// and the row names it.
+pub fn channel_change_judged(s: &Shrinkage, noise: &[ChannelNoise]) -> String {
+    let line = super::channel_change(s);
+    let judged = noise
+        .iter()
+        .find(|n| n.channel == s.channel)
+        .and_then(judged_apart);
+    match judged {
+        Some(j) => {
+            let floor = format!("(noise floor {})", rms(s.noise_floor));
+            let said = format!("(noise floor {}, stated, {j})", rms(s.noise_floor));
+            line.replacen(&floor, &said, 1)
+        }
+        None => line,
+    }
 }

@@ -65,10 +65,10 @@ use crate::diagnose::report::summary::{base_run_gap, dominant, gap_summary, part
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::{baseline, Baseline};
-use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
 use crate::diagnose::verdict::search::{search, Search};
+use crate::diagnose::verdict::{calibration::offsets_matched, rules};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -480,6 +480,7 @@ fn gap_report(
         .map(|e| error_rows(e, scales, &[]));
     let channel_shares = channel_shares(&before, after.as_deref());
     findings.extend(dominant(&channel_shares));
+    offsets_matched(verdict, &findings, &calibrated(c));
     if let Verdict::NoSignificantGap(n) = verdict {
         n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
         n.assumed = assumed_floors(&noise, &findings);

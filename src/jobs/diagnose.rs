@@ -355,7 +355,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
             d.shrinkage
                 .iter()
                 .filter(|s| s.part == Part::All)
-                .map(|s| format!("  {}", words::channel_change(s))),
+                .map(|s| format!("  {}", words::channel_change_judged(s, &d.gap.noise))),
         );
     }
     out
@@ -398,14 +398,17 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
             "screened, not cross-validated (in sample below {:.0} % − {:.0} points, so below {:.0} % held out):",
             first.threshold_percent, first.margin_percent, first.threshold_percent
         ));
+        // No held-out J: the column is the table's held-out one, so the
+        // in-sample J is said apart, at the end (one column, one measure).
         out.extend(singles.iter().map(|s| {
             format!(
-                "  {:<w$} {:>8.3} {:>11} {:>8} % {:>12}",
+                "  {:<w$} {:>8} {:>11} {:>8} % {:>12}  J in sample {:.3}",
                 s.effect,
-                s.insample_error_after,
+                "—",
                 "—",
                 fixed(s.insample_reduction_percent, 1),
-                crate::format::fixed(s.delta_bic, 0)
+                crate::format::fixed(s.delta_bic, 0),
+                s.insample_error_after,
             )
         }));
     }
@@ -417,12 +420,13 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(sets.iter().map(|s| {
             format!(
-                "  {:<w$} {:>8.3} {:>11} {:>8} % of what {} leaves",
+                "  {:<w$} {:>8} {:>11} {:>8} % of what {} leaves (J in sample {:.3})",
                 s.effect,
-                s.insample_error_after,
+                "—",
                 "—",
                 fixed(s.insample_reduction_percent, 1),
-                joined(&s.extends, "+")
+                joined(&s.extends, "+"),
+                s.insample_error_after,
             )
         }));
     }

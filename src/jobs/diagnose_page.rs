@@ -382,7 +382,7 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
                 Cell::Text(s.channel.unit().into()),
                 Cell::Number(words::rms(s.before)),
                 Cell::Number(words::rms(s.after)),
-                Cell::Number(words::rms(s.noise_floor)),
+                floor_cell(s, d),
                 channel_reduction(s),
                 Cell::Number(s.samples.to_string()),
             ]
@@ -414,6 +414,18 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
             ],
             &rows,
         );
+}
+
+/// A channel's noise floor, and where it is stated below the channel's
+/// scatter what judges its gap and what weighs it in the fits
+/// ([`words::judged_apart`]), as the terminal's row says it.
+fn floor_cell(s: &crate::diagnose::report::Shrinkage, d: &Diagnosis) -> Cell {
+    let floor = words::rms(s.noise_floor);
+    let noise = d.gap.noise.iter().find(|n| n.channel == s.channel);
+    match noise.and_then(words::judged_apart) {
+        Some(j) => Cell::Text(format!("{floor} (stated, {j})")),
+        None => Cell::Number(floor),
+    }
 }
 
 /// The share of a channel's gap removed (negative: added), or "not

@@ -969,3 +969,4 @@ mod trips_s109_simwords41;
 mod trips_s110_lead;
 mod trips_s110_metrics42;
 mod trips_s110_studyeq42;
+mod trips_s110_verdict43;

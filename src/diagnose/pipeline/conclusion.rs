@@ -9,7 +9,7 @@ use crate::diagnose::campaign::{Campaign, StatedFriction};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::{
     Confounded, Evidence, InSet, MassAlike, Narrowed, NotIdentifiable, OutsideLibrary,
-    ParameterValue, Ranked, Shrinkage, Verdict,
+    ParameterValue, Ranked, Shrinkage, Verdict, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::class::class_mismatch;
@@ -80,6 +80,10 @@ pub(super) fn conclude(
     }
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {
+        // Its own axles outside the stated class, inside another's.
+        let own = chosen.map(|sc| base.rank(sc)).into_iter();
+        let class = class_mismatch(&c.prior, None, own, f64::NEG_INFINITY);
+        e.warnings.extend(class.map(VerdictWarning::TyreClass));
         e.evidence.extend(mass_alike(&e.parameters, c));
         // A set that took its twin's place: the window is its own first
         // single's, the single it was grown from a look-alike of it.

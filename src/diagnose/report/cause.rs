@@ -298,6 +298,7 @@ mod tests {
             runs: 8,
             floors: 2.0,
             share: 0.6,
+            std_error: 0.0,
         };
         let finding = |channel| GapFinding::Channel {
             channel,

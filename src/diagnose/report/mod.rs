@@ -38,9 +38,9 @@ pub use crate::diagnose::report::outcome::{
     above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelCause, ChannelChange,
     ChannelLeft, ChannelWorsened, ClassMismatch, Closest, Evidence, Explained, FarFromOff,
     GapFinding, InSet, Lookalike, Lookalikes, MassAlike, Narrowed, NoSignificantGap,
-    NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused,
-    Searched, SetAside, StandstillBank, ThroughBank, Unseen, VehicleLimit, Verdict, VerdictKind,
-    VerdictWarning, Window,
+    NotIdentifiable, Note, OffsetMatch, OutsideLibrary, PairsFallback, Parsimony, RankWarning,
+    Refusal, Refused, Searched, SetAside, StandstillBank, ThroughBank, Unseen, VehicleLimit,
+    Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

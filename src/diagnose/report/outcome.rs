@@ -23,7 +23,7 @@ pub use crate::diagnose::report::evidence::{
 pub use crate::diagnose::report::lookalike::{
     InSet, Lookalike, Lookalikes, SetAside, StandstillBank, Window,
 };
-pub use crate::diagnose::report::narrowed::Narrowed;
+pub use crate::diagnose::report::narrowed::{Narrowed, OffsetMatch};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 pub use crate::diagnose::report::tyre_class::ClassMismatch;
@@ -419,6 +419,10 @@ pub enum VerdictWarning {
         /// without two runs or the parts to split).
         runs_carrying: Option<RunsCarrying>,
     },
+    /// The axles fitted with the verdict's effects lie outside the stated
+    /// tyre class's 95 % ranges and inside another class's: the class the
+    /// fits' prior pulled them toward is the campaign's to check.
+    TyreClass(ClassMismatch),
 }
 
 mod change;

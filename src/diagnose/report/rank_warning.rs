@@ -5,6 +5,7 @@
 //! dimensionless, reductions in percent, parameters in their own units.
 
 use crate::diagnose::base::identify::NoTyre;
+use crate::diagnose::effects::EffectKind;
 use serde::Serialize;
 
 /// A warning on a ranked candidate.
@@ -58,6 +59,18 @@ pub enum RankWarning {
         far: usize,
         /// Folds refitted.
         folds: usize,
+    },
+    /// Effects of the set whose every parameter sits at its off value
+    /// within its standard error
+    /// ([`crate::diagnose::verdict::rules::contributes_nothing`]): they
+    /// contribute nothing, cannot be named, and the set reduces to the
+    /// others (whatever it gains over them comes from its axles refitted,
+    /// not from those effects).
+    ContributesNothing {
+        /// The effects that contribute nothing.
+        effects: Vec<EffectKind>,
+        /// The set it reduces to (empty: the base model).
+        reduces_to: Vec<EffectKind>,
     },
     /// Fold refits that did not converge.
     FoldsNotConverged {

@@ -356,6 +356,10 @@ pub struct SteadyOffset {
     /// The share of the channel's mean square residual the offset
     /// carries, `mean²/RMS²`.
     pub share: f64,
+    /// The standard error of `mean`: the runs' mean residuals' spread
+    /// over `√runs` (each run one sample of the offset and of what the
+    /// model leaves in it).
+    pub std_error: f64,
 }
 
 /// Runs a steady offset needs.
@@ -394,12 +398,14 @@ impl SteadyOffset {
         let steady = same_sign as f64 >= OFFSET_SAME_SIGN * runs as f64
             && floors >= OFFSET_FLOORS
             && share >= OFFSET_SHARE;
+        let spread = biases.iter().map(|b| (b - mean).powi(2)).sum::<f64>() / (runs - 1) as f64;
         steady.then_some(Self {
             mean,
             same_sign,
             runs,
             floors,
             share,
+            std_error: (spread / runs as f64).sqrt(),
         })
     }
 }

@@ -33,7 +33,10 @@ use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
 pub use rank::{rank_warning, rank_warnings};
 pub use table::{added, channel_change, channels_alone, reduction, rms, unchanged, within_noise};
-pub use trust::{assumed_floor, channel_trust, channels_trusted, channels_trusted_for, Reader};
+pub use trust::{
+    assumed_floor, channel_change_judged, channel_trust, channels_trusted, channels_trusted_for,
+    judged_apart, Reader,
+};
 pub use warnings::{effect_parameters_on_bound, verdict_warning};
 
 use crate::diagnose::effects::{joined, EffectKind};
@@ -290,6 +293,40 @@ pub fn verdict_warnings(v: &Verdict) -> Vec<String> {
     }
 }
 
+/// The note on a channel whose stated uncertainty `stated` lies below its
+/// `scatter`: the weight the fits give it (`weighted`) and the floor its
+/// gap is still judged against.
+fn below_scatter(
+    channel: crate::diagnose::model::channels::Channel,
+    stated: f64,
+    scatter: f64,
+    weighted: f64,
+) -> String {
+    let u = channel.unit();
+    // A scale floored by the signal's share is not what is stated:
+    // the note must not say the weight it does not use.
+    let weight = if weighted > stated * (1.0 + 1e-9) {
+        format!(
+                "it is weighted by {} {u} instead, {} % of the channel's RMS signal (the least any channel is weighted by)",
+                crate::format::rounded(weighted, 2),
+                crate::diagnose::model::scale::SIGNAL_SHARE * 100.0
+            )
+    } else {
+        "it is weighted as stated and may dominate every fit".into()
+    };
+    // The weight is the fits'; the stated value still judges the
+    // gap, and the note must not let the one read as the other.
+    format!(
+            "[channels] {} = {} {u}: the channel scatters by {} {u} from sample to sample, {} times what is stated; {weight}; its gap is judged against the stated {} {u} all the same, so its noise floors count {} times what its scatter would (state at least its scatter, or leave the key out for the tool's estimate)",
+            channel.name(),
+            crate::error::Num(stated),
+            crate::format::rounded(scatter, 2),
+            crate::format::rounded(scatter / stated, 2),
+            crate::error::Num(stated),
+            crate::format::rounded(scatter / stated, 2),
+        )
+}
+
 /// A note on the inputs.
 pub fn note(n: &Note) -> String {
     match n {
@@ -315,27 +352,7 @@ pub fn note(n: &Note) -> String {
             stated,
             scatter,
             weighted,
-        } => {
-            let u = channel.unit();
-            // A scale floored by the signal's share is not what is stated:
-            // the note must not say the weight it does not use.
-            let weight = if *weighted > stated * (1.0 + 1e-9) {
-                format!(
-                    "it is weighted by {} {u} instead, {} % of the channel's RMS signal (the least any channel is weighted by)",
-                    crate::format::rounded(*weighted, 2),
-                    crate::diagnose::model::scale::SIGNAL_SHARE * 100.0
-                )
-            } else {
-                "it is weighted as stated and may dominate every fit".into()
-            };
-            format!(
-                "[channels] {} = {} {u}: the channel scatters by {} {u} from sample to sample, {} times what is stated; {weight} (state at least its scatter, or leave the key out for the tool's estimate)",
-                channel.name(),
-                crate::error::Num(*stated),
-                crate::format::rounded(*scatter, 2),
-                crate::format::rounded(scatter / stated, 2),
-            )
-        }
+        } => below_scatter(*channel, *stated, *scatter, *weighted),
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),

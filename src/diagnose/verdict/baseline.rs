@@ -105,6 +105,7 @@ impl Baseline {
             idle: idle(sc, &self.layout(&sc.kinds)),
             degenerate: self.degenerate(sc),
             pressed: pressed(sc, &self.layout(&sc.kinds)),
+            inert: !inert(sc, &self.layout(&sc.kinds)).is_empty(),
         }
     }
 
@@ -234,6 +235,14 @@ impl Baseline {
         if !no_tyre.is_empty() {
             warnings.push(RankWarning::AxlesNoTyre { no_tyre });
         }
+        let effects = inert(sc, &self.layout(&sc.kinds));
+        if !effects.is_empty() {
+            let reduces_to = sc.kinds.iter().filter(|k| !effects.contains(k));
+            warnings.push(RankWarning::ContributesNothing {
+                reduces_to: reduces_to.copied().collect(),
+                effects,
+            });
+        }
         if sc.folds_converged < folds {
             warnings.push(RankWarning::FoldsNotConverged {
                 failed: folds - sc.folds_converged,
@@ -352,6 +361,39 @@ fn named_idle(idle: &[(Option<usize>, f64)]) -> Vec<bool> {
                 .filter(|(e, _)| *e == effect)
                 .all(|&(_, other)| d <= other)
         })
+        .collect()
+}
+
+/// The effects of a set that contribute nothing
+/// ([`rules::contributes_nothing`]: every parameter at its off value
+/// within its standard error), in the set's order; none of a single,
+/// which the parsimony rule reads ([`idle`]). A parameter no measured
+/// channel responds to is held, not found off: it reads as on.
+pub(crate) fn inert(sc: &Scored, layout: &Layout) -> Vec<EffectKind> {
+    if sc.kinds.len() < 2 {
+        return Vec::new();
+    }
+    let readings: Vec<Vec<rules::OffReading>> = (0..sc.kinds.len())
+        .map(|k| {
+            let params = sc.kinds[k].parameters().iter();
+            params
+                .zip(layout.effect(k))
+                .map(|(q, i)| rules::OffReading {
+                    value: sc.full.params[i],
+                    off: if sc.full.is_unseen(i) {
+                        f64::NAN
+                    } else {
+                        q.off
+                    },
+                    std_error: sc.full.std_errors[i],
+                    range: q.bounds.1 - q.bounds.0,
+                })
+                .collect()
+        })
+        .collect();
+    rules::inert_effects(&readings)
+        .into_iter()
+        .map(|k| sc.kinds[k])
         .collect()
 }
 

@@ -13,7 +13,10 @@ use crate::constants::G;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::CALIBRATION_AGREES;
-use crate::diagnose::report::{CalibrationSource, Evidence, ParameterValue, ThroughBank};
+use crate::diagnose::report::{
+    CalibrationSource, Evidence, GapFinding, NotIdentifiable, OffsetMatch, OutsideLibrary,
+    ParameterValue, ThroughBank, Verdict,
+};
 use crate::diagnose::verdict::score::Calibrated;
 
 /// The sensor offsets among a verdict's `parameters` against the ones the
@@ -60,6 +63,56 @@ pub(crate) fn calibration_evidence(
             })
         })
         .collect()
+}
+
+/// Where a verdict names the candidates a campaign narrowed the library
+/// to and `sensor_bias` is not among them, the channels whose gap's steady
+/// offset (`findings`) matches the offset the runs measured
+/// (`calibrated`; [`OffsetMatch::matches`]): the words name `sensor_bias`
+/// to add. Round 43's logc3 (truth: logger offsets) printed the
+/// standstills' ay offset 0.2028 ± 0.0018 m/s² and the gap's steady
+/// offset −0.1917 m/s², and advised trying every effect.
+pub(crate) fn offsets_matched(
+    verdict: &mut Verdict,
+    findings: &[GapFinding],
+    calibrated: &Calibrated,
+) {
+    let (Verdict::OutsideLibrary(OutsideLibrary {
+        narrowed: Some(n), ..
+    })
+    | Verdict::NotIdentifiable(NotIdentifiable {
+        narrowed: Some(n), ..
+    })) = verdict
+    else {
+        return;
+    };
+    if n.tried.contains(&EffectKind::SensorBias) {
+        return;
+    }
+    n.offsets = findings
+        .iter()
+        .filter_map(|f| match f {
+            GapFinding::Channel {
+                channel,
+                offset: Some(o),
+                ..
+            } => {
+                let (measured, measured_std_error, measured_on, _) = calibrated[channel.index()]?;
+                let residual = (o.mean, o.std_error);
+                OffsetMatch::matches(residual, (measured, measured_std_error)).then_some(
+                    OffsetMatch {
+                        channel: *channel,
+                        residual: o.mean,
+                        residual_std_error: o.std_error,
+                        measured,
+                        measured_std_error,
+                        measured_on,
+                    },
+                )
+            }
+            _ => None,
+        })
+        .collect();
 }
 
 /// The uncertainty of a fitted value the report trusts: its standard

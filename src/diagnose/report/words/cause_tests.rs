@@ -78,6 +78,7 @@ fn another_cause_points_to_the_channels_steady_offset() {
         runs: 8,
         floors: 2.2,
         share: 0.79,
+        std_error: 0.0,
     });
     let w = left(0.0147, 0.0132, 14.0, vec![offset.clone()]);
     assert!(

@@ -2,13 +2,33 @@
 //! ([`ClassMismatch`]): the campaign's `[tyres] class` to check, in place of
 //! "outside the library". Cornering coefficients in 1/rad.
 
-use crate::diagnose::effects::joined;
-use crate::diagnose::report::narrowed::Narrowed;
+use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::report::narrowed::{Narrowed, OffsetMatch};
 use crate::diagnose::report::tyre_class::ClassMismatch;
+use crate::diagnose::report::CalibrationSource;
 use crate::format::rounded;
 
 /// The clause naming the class whose ranges hold the axles.
 pub fn class_mismatch(c: &ClassMismatch) -> String {
+    format!(
+        "{}: the stated tyre class, not a model-form error outside the library, is what to check first",
+        placed(c)
+    )
+}
+
+/// The warning under an explained verdict whose axles another class's
+/// ranges hold: the class to check, the effects fitted beside axles the
+/// stated class's prior pulled.
+pub fn class_to_check(c: &ClassMismatch) -> String {
+    format!(
+        "{}: check the stated tyre class, whose prior pulled the axles the effects were fitted beside",
+        placed(c)
+    )
+}
+
+/// Whose axles lie where: outside the stated class's prior, inside the
+/// classes that hold them.
+fn placed(c: &ClassMismatch) -> String {
     let whose = if c.effects.is_empty() {
         "the base model's axles".to_string()
     } else {
@@ -23,7 +43,7 @@ pub fn class_mismatch(c: &ClassMismatch) -> String {
     let range = |r: [f64; 2]| format!("{}–{} 1/rad", rounded(r[0], 3), rounded(r[1], 3));
     let names: Vec<&str> = c.holding.iter().map(|k| k.name()).collect();
     format!(
-        "{whose}, front {} and rear {} 1/rad, lie outside the prior of `[tyres] class = \"{}\"` (cornering coefficient {}) but inside the ranges of {} (nearest: {}, {}): the stated tyre class, not a model-form error outside the library, is what to check first",
+        "{whose}, front {} and rear {} 1/rad, lie outside the prior of `[tyres] class = \"{}\"` (cornering coefficient {}) but inside the ranges of {} (nearest: {}, {})",
         rounded(c.cornering[0], 3),
         rounded(c.cornering[1], 3),
         c.stated.name(),
@@ -40,13 +60,48 @@ pub(super) const OUTSIDE: &str = " — a model-form error outside the library";
 pub(super) const NO_VERDICT: &str = " — no verdict from the library";
 
 /// The clause of a verdict on candidates a campaign narrowed: which
-/// were tried, how many of the library's were not, and how to try them.
+/// were tried, how many of the library's were not, and how to try them;
+/// where the gap's steady offsets match the offsets the runs measured,
+/// the untried `sensor_bias` to add ([`offsets_point_at_bias`]).
 pub(super) fn untried(n: &Narrowed) -> String {
     format!(
-        " — no verdict on the library: only the campaign's `[diagnose] effects` were tried ({}), and {} of the library's {} effects were not: leave `effects` out under [diagnose] to try them all",
+        " — no verdict on the library: only the campaign's `[diagnose] effects` were tried ({}), and {} of the library's {} effects were not: leave `effects` out under [diagnose] to try them all{}",
         joined(&n.tried, ", "),
         n.untried.len(),
         n.tried.len() + n.untried.len(),
+        offsets_point_at_bias(&n.offsets),
+    )
+}
+
+/// The clause naming `sensor_bias` to add where the gap's steady offsets
+/// match the offsets the standstills or straights measured (a sensor
+/// offset reads as a residual of the opposite sign); empty without one.
+pub fn offsets_point_at_bias(offsets: &[OffsetMatch]) -> String {
+    if offsets.is_empty() {
+        return String::new();
+    }
+    let each: Vec<String> = offsets
+        .iter()
+        .map(|o| {
+            let u = o.channel.unit();
+            let on = match o.measured_on {
+                CalibrationSource::Standstills => "standstills",
+                CalibrationSource::Straights => "straights",
+            };
+            format!(
+                "the {c} gap's steady offset {} ± {} {u} matches the {on}' {c} offset {} ± {} {u}",
+                rounded(o.residual, 3),
+                rounded(o.residual_std_error, 2),
+                rounded(o.measured, 3),
+                rounded(o.measured_std_error, 2),
+                c = o.channel.name(),
+            )
+        })
+        .collect();
+    format!(
+        "; {} (a sensor's offset reads as a residual of the opposite sign): add {} to [diagnose] effects",
+        each.join(", and "),
+        EffectKind::SensorBias.name()
     )
 }
 
@@ -145,5 +200,26 @@ mod tests {
             s.ends_with("to try them all") && !s.contains(NO_VERDICT),
             "{s}"
         );
+    }
+
+    #[test]
+    fn a_narrowed_verdict_whose_gap_offsets_match_the_standstills_names_sensor_bias() {
+        use crate::diagnose::model::channels::Channel;
+        let mut n = Narrowed::of(Some(&[EffectKind::SensorDelay])).unwrap();
+        n.offsets = vec![OffsetMatch {
+            channel: Channel::Ay,
+            residual: -0.1917,
+            residual_std_error: 0.0072,
+            measured: 0.2028,
+            measured_std_error: 0.0018,
+            measured_on: CalibrationSource::Standstills,
+        }];
+        let s = untried(&n);
+        assert!(
+            s.ends_with("to try them all; the ay gap's steady offset -0.192 ± 0.0072 m/s² matches the standstills' ay offset 0.203 ± 0.0018 m/s² (a sensor's offset reads as a residual of the opposite sign): add sensor_bias to [diagnose] effects"),
+            "{s}"
+        );
+        n.offsets.clear();
+        assert!(untried(&n).ends_with("to try them all"));
     }
 }

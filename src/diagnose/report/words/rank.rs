@@ -67,6 +67,22 @@ pub fn rank_warning(w: &RankWarning) -> String {
         } => format!(
             "it fits the runs worse than {subset}, which it contains (in-sample error {error:.3} against {subset_error:.3}): its fit stopped short of that optimum or holds a parameter {subset} fits, so its scores understate the set"
         ),
+        RankWarning::ContributesNothing {
+            effects,
+            reduces_to,
+        } => {
+            let to = if reduces_to.is_empty() {
+                "the base model".to_string()
+            } else {
+                crate::diagnose::effects::joined(reduces_to, "+")
+            };
+            format!(
+                "{} contribute{} nothing (every parameter at its off value, within its standard error): the set reduces to {to}, and what it gains over that comes from the axles refitted, not from {}; it cannot be a verdict",
+                crate::diagnose::effects::joined(effects, "+"),
+                if effects.len() == 1 { "s" } else { "" },
+                if effects.len() == 1 { "it" } else { "them" },
+            )
+        }
         RankWarning::FoldsNotConverged { failed, folds } => {
             format!("{failed} of {folds} fold refits did not converge")
         }

@@ -71,9 +71,11 @@ fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_unit
             stated_excess: None,
         })
     };
+    // Stated below its scatter: what judges the gap is said where the
+    // floor is (round 43: a note's "weighted by … instead" read as it).
     assert_eq!(
         trust(1e-6, ScaleSource::Stated, 2e-4),
-        "beta 1e-6 rad (stated)"
+        "beta 1e-6 rad (stated), below its scatter 0.00020 rad: its gap is judged against the stated 1e-6 rad, the fits weigh it by that too"
     );
     assert_eq!(
         trust(0.004, ScaleSource::Stated, 2e-4),

@@ -8,7 +8,7 @@ use super::{rms, std_error, value};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
 use crate::diagnose::report::outcome::AssumedFloor;
-use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource};
+use crate::diagnose::report::{ChannelNoise, FarFromOff, NoSignificantGap, ScaleSource, Shrinkage};
 
 /// Who reads the channels' trust, for what a user can do where a
 /// channel's reading lies near the line between a sensor and an
@@ -63,10 +63,38 @@ fn trust_for(n: &ChannelNoise, reader: Reader) -> String {
         .map(|share| near_line(n, share, reader))
         .unwrap_or_default();
     format!(
-        "{} {} {u} ({why}{near})",
+        "{} {} {u} ({why}{near}){}",
         n.channel.name(),
-        rms(n.noise_floor)
+        rms(n.noise_floor),
+        judged_apart(n).map_or_else(String::new, |j| format!(", {j}"))
     )
+}
+
+/// Where a channel's stated uncertainty lies below its own scatter, what
+/// judges its gap and what weighs it in the fits, which then differ: the
+/// gap is judged against the stated floor (its noise floors, every
+/// significance), the fits weigh the channel by their scale, at least
+/// [`crate::diagnose::model::scale::SIGNAL_SHARE`] of its RMS signal. None
+/// for a channel trusted to its stated value at or above its scatter, or
+/// to what the tool measured. Said where the floor is shown (the trust
+/// line, the before → after rows), so that the note's "weighted by …
+/// instead" is not read as the floor.
+pub fn judged_apart(n: &ChannelNoise) -> Option<String> {
+    let apart = |a: f64, b: f64| a > b * (1.0 + 1e-9);
+    if n.source != ScaleSource::Stated || !apart(n.scatter, n.noise_floor) {
+        return None;
+    }
+    let u = n.unit;
+    let weighed = if apart(n.scale, n.noise_floor) {
+        format!("the fits weigh it by {} {u}", rms(n.scale))
+    } else {
+        "the fits weigh it by that too".to_string()
+    };
+    Some(format!(
+        "below its scatter {} {u}: its gap is judged against the stated {} {u}, {weighed}",
+        rms(n.scatter),
+        rms(n.noise_floor)
+    ))
 }
 
 /// Why a sensor channel quieter than a sideslip would be read as an
@@ -255,4 +283,24 @@ fn far_from_off(f: &FarFromOff, threshold: f64) -> String {
         f.heldout_error_after,
         signatures.join("; ")
     )
+}
+
+/// [`super::channel_change`] with, where the channel's stated floor lies below
+/// its scatter ([`super::judged_apart`]: the fits weigh it by another
+/// value), that said beside the floor: one value judges significance,
+/// and the row names it.
+pub fn channel_change_judged(s: &Shrinkage, noise: &[ChannelNoise]) -> String {
+    let line = super::channel_change(s);
+    let judged = noise
+        .iter()
+        .find(|n| n.channel == s.channel)
+        .and_then(judged_apart);
+    match judged {
+        Some(j) => {
+            let floor = format!("(noise floor {})", rms(s.noise_floor));
+            let said = format!("(noise floor {}, stated, {j})", rms(s.noise_floor));
+            line.replacen(&floor, &said, 1)
+        }
+        None => line,
+    }
 }

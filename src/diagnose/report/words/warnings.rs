@@ -70,6 +70,7 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
                 each.join(", ")
             )
         }
+        VerdictWarning::TyreClass(c) => super::class::class_to_check(c),
         VerdictWarning::GapRemains {
             heldout_error_after,
             noise_level,

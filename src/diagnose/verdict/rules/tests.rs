@@ -129,6 +129,7 @@ fn cand(heldout: f64, parameters: usize, idle: bool, degenerate: bool) -> Candid
         idle,
         degenerate,
         pressed: false,
+        inert: false,
     }
 }
 
@@ -492,4 +493,70 @@ fn a_better_single_refused_for_its_axles_leads_a_search_of_its_own() {
         cand(5.0, 3, false, false),
     ];
     assert_eq!(degenerate_lead(&two, 3), Some(1));
+}
+
+fn reading(value: f64, off: f64, std_error: f64) -> OffReading {
+    OffReading {
+        value,
+        off,
+        std_error,
+        range: 0.3,
+    }
+}
+
+/// Round 43's truck-prior campaign: sensor_delay.delay = 0.0000 s on its
+/// physical limit (its off value, no standard error) beside
+/// sensor_bias's three offsets, each many standard errors from off.
+#[test]
+fn an_effect_whose_every_parameter_sits_off_contributes_nothing() {
+    let delay = [reading(0.0, 0.0, f64::NAN)];
+    let bias = vec![
+        reading(0.009027, 0.0, 0.000925),
+        reading(0.2336, 0.0, 0.0261),
+        reading(0.005235, 0.0, 0.000776),
+    ];
+    assert!(contributes_nothing(&delay));
+    assert!(!contributes_nothing(&bias));
+    assert_eq!(inert_effects(&[bias.clone(), delay.to_vec()]), [1]);
+    // Within one standard error of off, not beyond it.
+    assert!(contributes_nothing(&[reading(0.0009, 0.0, 0.001)]));
+    assert!(!contributes_nothing(&[reading(0.0011, 0.0, 0.001)]));
+    // Off the bound without a standard error: not read as off.
+    assert!(!contributes_nothing(&[reading(0.0011, 0.0, f64::NAN)]));
+    // Two parameters each within a standard error of off, neither
+    // exactly (a steer path's delay and lag that trade): not read as off.
+    assert!(!contributes_nothing(&[
+        reading(0.0496, 0.0, 0.0621),
+        reading(6.4e-5, 0.0, 0.0622)
+    ]));
+    assert!(contributes_nothing(&[
+        reading(0.0496, 0.0, 0.0621),
+        reading(0.0, 0.0, f64::NAN)
+    ]));
+    // One parameter off and one on: the effect contributes.
+    assert!(!contributes_nothing(&[
+        reading(0.0, 0.0, f64::NAN),
+        reading(0.05, 0.0, 0.01)
+    ]));
+    // A parameter without an off value is never off; no parameter, none.
+    assert!(!contributes_nothing(&[reading(0.0, f64::NAN, 1.0)]));
+    assert!(!contributes_nothing(&[]));
+    // An off value other than zero (a scale's 1).
+    assert!(contributes_nothing(&[reading(1.02, 1.0, 0.03)]));
+}
+
+#[test]
+fn a_set_with_an_inert_effect_is_never_taken_and_the_next_is() {
+    let inert = |c: Candidate| Candidate { inert: true, ..c };
+    // The pair (2.789) with its delay at off, then the bias alone (4.717).
+    let ranked = [
+        inert(cand(2.789, 7, true, false)),
+        cand(4.717, 6, false, false),
+    ];
+    assert_eq!(pick(&ranked, 0.92), Some(1));
+    // Nothing else: nothing taken.
+    assert_eq!(pick(&ranked[..1], 0.92), None);
+    // Without the flag the pair is taken: the flag alone moves it.
+    let plain = [cand(2.789, 7, false, false), cand(4.717, 6, false, false)];
+    assert_eq!(pick(&plain, 0.92), Some(0));
 }

@@ -33,13 +33,13 @@ pub struct RebasedClock {
 }
 
 impl RebasedClock {
-    /// Lists `run`'s clock in `clocks` where its reader rebased it (once
-    /// per file: its pieces and segments share it).
-    pub(crate) fn note(clocks: &mut Vec<RebasedClock>, run: &MeasuredRun) {
-        let Some(origin) = run.clock else {
+    /// Lists the clock of the run file `file` in `clocks` where its reader
+    /// rebased it to `origin` (once per file: its pieces and segments
+    /// share it).
+    pub(crate) fn note(clocks: &mut Vec<RebasedClock>, file: String, origin: Option<f64>) {
+        let Some(origin) = origin else {
             return;
         };
-        let file = super::clean::source_file(&run.path);
         if !clocks.iter().any(|c| c.run == file) {
             clocks.push(RebasedClock { run: file, origin });
         }

@@ -216,7 +216,9 @@ mod tests {
         );
         // The same clock, a channel jumping at the fall: a new recording.
         let mut jump = ramp.clone();
-        jump[20] = 100.0;
+        for x in &mut jump[20..] {
+            *x += 100.0;
+        }
         assert_eq!(fall_of(&t, 20, &[&jump]), ClockFall::Restart);
         // The same rows again: a steady channel that steps back.
         let twice: Vec<f64> = ramp[..20].iter().chain(&ramp[..20]).copied().collect();

@@ -31,6 +31,7 @@ fn long_log(n: usize) -> MeasuredRun {
         bank: None,
         ax: None,
         masked: Vec::new(),
+        clock: None,
     };
     long_log_rows(n, |[t, speed, steer, r, ay, beta]| {
         run.t.push(t);

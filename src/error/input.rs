@@ -32,6 +32,9 @@ pub enum CellProblem {
     NotANumber,
     /// It is NaN or infinite.
     NotFinite,
+    /// NaN or empty in a measured channel of a run (not its time): a
+    /// logger's dropout, which `FORMATS.md` makes an error.
+    Dropout,
     /// The first row under the header holds no number in any column
     /// read (the cell is the row's cells, joined): a row of units, as
     /// loggers and spreadsheets write one.
@@ -59,6 +62,7 @@ impl CellProblem {
                 None => format!("`{cell}` is not a number"),
             },
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
+            CellProblem::Dropout => format!("{} is a logger's dropout, which FORMATS.md makes an error in a run (a NaN or a cell without a number is refused, never masked or guessed); mark a dropout by leaving its rows out of the file: the hole in time is read as one (run across where short, the run split at it where long) and said", if cell.is_empty() { "an empty cell".to_string() } else { format!("`{cell}`") }),
             CellProblem::UnitsRow => format!("no cell of this row is a number (`{cell}`): a row of units under the header? Delete it: the columns hold numbers in the units FORMATS.md gives them"),
             CellProblem::HeaderAgain { header } => format!("this row repeats the header of line {header} (`{cell}`): a second header mid-file, as a logger writes where it restarts or where two logs were joined? Delete it, and check that the rows after it are of the same test"),
             CellProblem::NotUtf8 { byte } => InputProblem::NotUtf8 { byte }.to_string(),

@@ -179,12 +179,14 @@ pub enum InputProblem {
         detail: String,
     },
     /// A time that does not follow the previous one.
-    #[error("column `t`: {} does not follow {} (time must be strictly increasing{})", Num(*value), Num(*previous), if value < previous { ": the clock goes back, as where a logger starts a new recording in the same file; split the file at this line into two runs" } else { ": a time repeated, a row logged twice?" })]
+    #[error("column `t`: {} does not follow {} (time must be strictly increasing{fall})", Num(*value), Num(*previous))]
     TimeNotIncreasing {
         /// The time, s.
         value: f64,
         /// The previous row's time, s.
         previous: f64,
+        /// How it fails to follow, with what to do.
+        fall: super::ClockFall,
     },
     /// A run with fewer than two samples.
     #[error("a run needs at least two samples")]

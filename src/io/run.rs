@@ -13,7 +13,8 @@ use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
     check_speed_by_ax, check_time_step, check_yaw_rate,
 };
-use crate::error::{InputError, InputProblem};
+use crate::error::{CellProblem, InputError, InputProblem};
+use crate::measured::clock::fall_of;
 use crate::measured::MeasuredRun;
 use std::path::Path;
 
@@ -176,7 +177,8 @@ fn read_run_lacking(
         also_read: Some(&others),
     };
     let names: Vec<&str> = declared_by.0.iter().map(|a| a.name()).collect();
-    let (mut c, slips) = read_columns_with_slips(path, layout, (declared_by.1, &names))?;
+    let (mut c, slips) =
+        read_columns_with_slips(path, layout, (declared_by.1, &names)).map_err(dropouts)?;
     let (declared, absent) = declared_columns(path, &c, declared_by, optional, lacking)?;
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()
@@ -185,8 +187,11 @@ fn read_run_lacking(
     for a in &declared {
         c.scale(a.name(), std::f64::consts::PI / 180.0);
     }
-    let t = c.take("t");
+    let mut t = c.take("t");
     check_times(path, &c, &t)?;
+    // After the checks of the clock as logged, whose refusals name its
+    // times as the file writes them.
+    let clock = crate::measured::clock::rebase(&mut t);
     let steer = c.take("steer");
     check_steer(path, &c, &steer, declared_by.1)?;
     let (speed, yaw_rate) = (c.take("speed"), c.take("yaw_rate"));
@@ -196,6 +201,7 @@ fn read_run_lacking(
         .with_roll(c.take_optional("roll"))
         .with_bank(c.take_optional("bank"))
         .with_beta(c.take_optional("beta"));
+    let run = MeasuredRun { clock, ..run };
     // The checks read the columns' positions and lines only, not their
     // values: every channel is taken first and checked on the run.
     check_speed_and_rates(path, &c, &run, declared_by.1)?;
@@ -260,9 +266,60 @@ fn declared_columns(
     Ok((declared, absent))
 }
 
+/// A run's cells refused as NaN or empty in a measured channel (not `t`)
+/// said as a logger's dropout, with how `FORMATS.md` has one marked.
+fn dropouts(e: InputError) -> InputError {
+    match e {
+        InputError::Several {
+            path,
+            errors,
+            more,
+            counted,
+        } => InputError::Several {
+            path,
+            errors: errors.into_iter().map(|(e, n)| (dropouts(e), n)).collect(),
+            more,
+            counted,
+        },
+        InputError::Cell {
+            path,
+            line,
+            column,
+            name,
+            cell,
+            problem,
+        } if name != "t" && dropout(&cell, problem) => InputError::Cell {
+            path,
+            line,
+            column,
+            name,
+            cell,
+            problem: CellProblem::Dropout,
+        },
+        e => e,
+    }
+}
+
+/// Whether a cell refused for `problem` is a dropout: NaN, or empty.
+fn dropout(cell: &str, problem: CellProblem) -> bool {
+    match problem {
+        CellProblem::NotFinite => cell
+            .trim_start_matches(['-', '+'])
+            .eq_ignore_ascii_case("nan"),
+        CellProblem::NotANumber => cell.is_empty(),
+        _ => false,
+    }
+}
+
 /// Times strictly increasing, at least two of them, at a step that is a
 /// time in seconds.
 fn check_times(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
+    // The required channels, which run on across a wrapped clock and jump
+    // where a new recording starts.
+    let channels: Vec<&[f64]> = ["speed", "steer", "yaw_rate"]
+        .into_iter()
+        .filter_map(|n| c.get(n))
+        .collect();
     for i in 1..t.len() {
         if t[i] <= t[i - 1] {
             return Err(c.error_at(
@@ -272,6 +329,7 @@ fn check_times(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
                 InputProblem::TimeNotIncreasing {
                     value: t[i],
                     previous: t[i - 1],
+                    fall: fall_of(t, i, &channels),
                 },
             ));
         }

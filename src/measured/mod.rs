@@ -4,13 +4,15 @@
 //! ([`calibration`], on the raw run), its cleaning ([`clean`]: standstills,
 //! crawling and logger glitches found, repaired, masked and reported) and its
 //! longitudinal acceleration ([`derivative`]: `ax`, else the speed's
-//! smoothed derivative). SI units,
+//! smoothed derivative) and its clock ([`clock`]: a wall clock rebased
+//! to the run's first sample, a wrap told from a new recording). SI units,
 //! radians, ISO 8855 signs. `io` reads files into these; nothing here reads
 //! a file.
 
 pub mod ax_agreement;
 pub mod calibration;
 pub mod clean;
+pub mod clock;
 pub(crate) mod derivative;
 pub(crate) mod road;
 mod road_apart;
@@ -45,6 +47,9 @@ pub struct MeasuredRun {
     /// Samples whose response channels (yaw rate, ay, beta) are left out of
     /// fits and scores (logger glitches, see [`clean`]), ascending.
     pub masked: Vec<usize>,
+    /// The log's clock at its first sample, s, where the reader rebased
+    /// `t` to that sample (a wall clock, [`clock::rebase`]).
+    pub clock: Option<f64>,
 }
 
 /// A response channel of a run that holds one value throughout: a dead or
@@ -97,6 +102,7 @@ impl MeasuredRun {
             bank: None,
             ax: None,
             masked: Vec::new(),
+            clock: None,
         }
     }
 

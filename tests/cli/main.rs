@@ -966,6 +966,7 @@ mod trips_s109_lead;
 mod trips_s109_loadlevels41;
 mod trips_s109_perf40f;
 mod trips_s109_simwords41;
+mod trips_s110_epoch43;
 mod trips_s110_lead;
 mod trips_s110_metrics42;
 mod trips_s110_studyeq42;

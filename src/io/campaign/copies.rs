@@ -26,6 +26,7 @@ pub(super) fn same_samples(a: &MeasuredRun, b: &MeasuredRun) -> bool {
         bank,
         ax,
         masked,
+        clock,
     } = a;
     // The times first: runs of other lengths or rates differ there.
     *t == b.t
@@ -38,6 +39,8 @@ pub(super) fn same_samples(a: &MeasuredRun, b: &MeasuredRun) -> bool {
         && *bank == b.bank
         && *ax == b.ax
         && *masked == b.masked
+        // A wall clock rebased: two runs logged at other times are no copy.
+        && *clock == b.clock
 }
 
 /// The earlier run of `read` whose samples `run` repeats, if any.

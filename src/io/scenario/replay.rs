@@ -63,8 +63,9 @@ pub(super) fn resolve(
     let settings = CleanSettings::single(r.min_speed);
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
-    let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)
+    let mut read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)
         .map_err(|e| at_degrees(src, r, e))?;
+    crate::measured::clock::on_logs_clock(&mut read);
     if let Some(p) = dead_steer(&read, wheelbase, r.min_speed) {
         return Err(InputError::problem(run_path, p));
     }

@@ -92,6 +92,7 @@ pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRu
                 .map(|&i| i - lo)
                 .collect()
         },
+        clock: run.clock,
     }
 }
 
@@ -177,6 +178,8 @@ pub fn clean_run(
     report: &mut CleaningReport,
 ) -> Vec<MeasuredRun> {
     report.samples_read += run.t.len();
+    let file = source_file(&run.path);
+    crate::measured::clock::RebasedClock::note(&mut report.clocks, file, run.clock);
     let parts = split_times(&run, report);
     let mut moving: Vec<MeasuredRun> = Vec::new();
     let name = run.path.display().to_string();

@@ -377,6 +377,8 @@ pub struct CleaningReport {
     /// What reads the runs across those holes (said in their line).
     #[serde(skip)]
     pub read_across: super::missing::ReadAcross,
+    /// Runs whose wall clock was rebased to their first sample.
+    pub clocks: Vec<crate::measured::clock::RebasedClock>,
     /// Every glitch, in run and time order.
     pub glitches: Vec<Glitch>,
     /// Spans excluded for low speed.
@@ -495,6 +497,7 @@ impl CleaningReport {
     /// first few glitches, the slow spans and the pieces.
     pub fn summary(&self, first: usize) -> Vec<String> {
         let mut out = vec![self.counts_line()];
+        out.extend(crate::measured::clock::RebasedClock::line(&self.clocks));
         out.extend(self.missing_rows.iter().map(|m| m.line(self.read_across)));
         for h in &self.held {
             if h.log_rate_changes {

@@ -138,6 +138,7 @@ fn on_grid(p: &MeasuredRun, dt: f64) -> MeasuredRun {
         ax: opt(&p.ax),
         // The masked samples were filled before.
         masked: Vec::new(),
+        clock: p.clock,
         t: grid,
     }
 }

@@ -40,6 +40,7 @@ mod output;
 mod param;
 mod path_found;
 mod piece;
+mod points_unit;
 mod problem;
 mod problem_name;
 mod reason;
@@ -103,6 +104,7 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use path_found::PathFound;
 pub use piece::{GapAt, PieceRefusal, RefusedPiece};
+pub use points_unit::{unit_factor, PointsUnit};
 pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{

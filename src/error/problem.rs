@@ -522,6 +522,9 @@ pub enum InputProblem {
     /// A column in another unit than FORMATS.md's.
     #[error(transparent)]
     UnitSlip(#[from] UnitSlip),
+    /// A `tyre-eval` points column in another unit (`points_unit.rs`).
+    #[error(transparent)]
+    PointsUnit(#[from] super::points_unit::PointsUnit),
     /// A run too short to show a response.
     #[error("the run is {span:.2} s long with {}: a run needs at least {} s and {min_samples} samples to show a response", plural(*samples, "sample", "samples"), Num(*min_span))]
     RunTooShort {

@@ -71,6 +71,7 @@ impl InputProblem {
             InputProblem::DegreesColumnAbsent { .. } => "DegreesColumnAbsent",
             InputProblem::DegreesColumnUnread { .. } => "DegreesColumnUnread",
             InputProblem::UnitSlip(_) => "UnitSlip",
+            InputProblem::PointsUnit(_) => "PointsUnit",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
             InputProblem::BetaUnchecked(_) => "BetaUnchecked",

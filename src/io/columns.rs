@@ -7,6 +7,7 @@ mod aliases;
 mod bytes;
 mod records;
 mod units;
+pub(crate) use units::unit_of;
 
 use bytes::{header_further_down, not_utf8};
 
@@ -29,6 +30,10 @@ pub struct Columns {
     /// The header's names, in the file's order: what a reader left unread
     /// is named from it.
     pub header: Vec<String>,
+    /// The columns whose header states their own SI unit (`alpha [rad]`):
+    /// the user's word that the values are in it, which a reader's guess
+    /// of another unit from the values gives way to.
+    pub stated_si: Vec<String>,
 }
 
 impl Columns {
@@ -376,6 +381,7 @@ fn read_layout(
     let (named, units) = units::canonical(&headers, &checked, known, (by, declared));
     let mut out = Columns {
         header: named.iter().map(str::to_string).collect(),
+        stated_si: units::stated_si(&headers, &named, &checked),
         header_line: headers.position().map_or(0, |p| line_of(&bytes, p)).max(1),
         ..Columns::default()
     };

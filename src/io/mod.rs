@@ -37,7 +37,7 @@ mod toml_file;
 
 pub use crate::measured::MeasuredRun;
 pub use columns::{read_columns, Columns, Slip};
-pub(crate) use columns::{read_columns_with_bad_cells, Layout};
+pub(crate) use columns::{read_columns_with_bad_cells, unit_of, Layout};
 pub use run::{
     read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
     DeclaredBy, RunHeader, OPTIONAL_CHANNELS,

@@ -970,4 +970,5 @@ mod trips_s110_epoch43;
 mod trips_s110_lead;
 mod trips_s110_metrics42;
 mod trips_s110_studyeq42;
+mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;

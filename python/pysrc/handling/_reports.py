@@ -88,9 +88,12 @@ class StepMetrics:
     """The verdict on each channel's steady window (``yaw_rate``, ``ay``,
     ``beta``; None for a channel not recorded): ``{"verdict": "settled"}``,
     ``"not_settled"`` with its spread, ``"drifting"`` with where its
-    trend heads (``heads``, share of the step) and whether it slows
-    (``converging``), or ``"not_judged"`` where the channel's step is
-    within a few noise deviations."""
+    trend heads (``heads``, share of the step), whether it slows
+    (``converging``) and whether it heads above the window's mean on the
+    step's scale (``rising``: False for a sliding car's falling ``ay``),
+    ``"approaching"`` (settled, its trend still heading ``heads`` beyond
+    the mean, ``rising`` as above), or ``"not_judged"`` where the
+    channel's step is within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""
     ay_noise: Optional[float]
@@ -290,6 +293,16 @@ class EquilibriaSummary(_Report):
     """Conditions where the swarm search and continuation agree."""
     agreement_percent: float
     """Their share, %."""
+    misses: List[Dict[str, Any]]
+    """Each condition where the two disagree or the swarm's index sum falls
+    short of the winding number (Poincaré–Hopf), in the sweep's order:
+    its ``condition`` (``steer`` rad, ``friction``, ``speed`` m/s), the
+    equilibria only the exact solver found (``exact_only``) and only the
+    swarm found (``pso_only``), each with ``beta`` (rad), ``yaw_rate``
+    (rad/s) and ``kind``; the swarm's ``index_sum``, the
+    ``winding_number`` (None where not taken) and the ``certificate``
+    (``"holds"``, ``"falls_short"``, ``"not_asked"``, …). Empty where they
+    agree."""
     max_residual: float
     """Largest equation residual of an equilibrium found."""
     seed: int

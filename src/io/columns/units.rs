@@ -205,6 +205,44 @@ pub(super) fn canonical(
     (csv::StringRecord::from(names), refused)
 }
 
+/// The columns of `checked` whose header (`headers`, read as `named`)
+/// states the column's own SI unit under its exact name (`alpha [rad]`,
+/// `kappa [-]`): renamed to the column, and not refused (a refused one
+/// ends the reading).
+pub(super) fn stated_si(
+    headers: &csv::StringRecord,
+    named: &csv::StringRecord,
+    checked: &[&str],
+) -> Vec<String> {
+    headers
+        .iter()
+        .zip(named.iter())
+        .filter(|(h, n)| h != n && checked.contains(n))
+        .filter(|(h, _)| {
+            matches!(
+                reading(h, (checked, &[]), None, &[]),
+                Some(Reading::Accept(_))
+            )
+        })
+        .map(|(_, n)| n.to_string())
+        .collect()
+}
+
+/// The unit the header column `h` states for `column` (`sa_deg`,
+/// `SA [deg]`, `alpha [rad]` for `alpha`), where it names that column with
+/// a known unit of its quantity; `None` otherwise (the column's bare name
+/// included: it states no unit).
+pub(crate) fn unit_of(h: &str, column: &str) -> Option<Unit> {
+    let (_, quantity) = quantity_of(column)?;
+    match reading(h, (&[column], &[]), None, &[])? {
+        Reading::Accept(_) => Some(quantity.si()),
+        Reading::Refuse(r) => match r.stated {
+            Stated::Known(u) if u.quantity() == quantity => Some(u),
+            _ => None,
+        },
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -282,6 +320,23 @@ mod tests {
         assert_eq!(named.iter().collect::<Vec<_>>(), ["fz", "alpha"]);
         assert_eq!(refused.len(), 1);
         assert_eq!(refused[0].0, 2);
+    }
+
+    /// `sa_deg`, `SA [deg]` and `alpha [rad]` state a unit of `alpha`;
+    /// `alpha` itself, `sa_kn` (no angle) and `speed [deg]` state none.
+    #[test]
+    fn the_unit_a_header_states_for_a_column_is_found_by_its_name() {
+        assert_eq!(unit_of("sa_deg", "alpha"), Some(Unit::Degree));
+        assert_eq!(unit_of("SA [deg]", "alpha"), Some(Unit::Degree));
+        assert_eq!(unit_of("alpha [rad]", "alpha"), Some(Unit::Radian));
+        assert_eq!(unit_of("kappa [%]", "kappa"), Some(Unit::Percent));
+        assert_eq!(unit_of("alpha", "alpha"), None);
+        assert_eq!(unit_of("sa_kn", "alpha"), None);
+        assert_eq!(unit_of("speed [deg]", "alpha"), None);
+        let header = csv::StringRecord::from(vec!["fz", "alpha [rad]", "kappa"]);
+        let checked = ["fz", "alpha", "kappa"];
+        let (named, _) = canonical(&header, &checked, &[], (None, &[]));
+        assert_eq!(stated_si(&header, &named, &checked), ["alpha"]);
     }
 
     #[test]

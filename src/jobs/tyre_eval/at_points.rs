@@ -65,7 +65,7 @@ pub fn refused_points(tyre: &Tyre, inputs: [&[f64]; 5], pressure: &[f64]) -> Vec
         };
         let non_finite = (0..values.len()).filter(|&i| !values[i].is_finite());
         refused.extend(non_finite.map(|i| at(i, None)));
-        let physical = physical::not_physical(argument, values).into_iter();
+        let physical = physical::not_physical(argument, values, false).into_iter();
         // A pressure at or below 0 is said as such, as the CLI says it.
         let physical = physical.filter(|(i, _)| argument != "pressure" || values[*i] > 0.0);
         refused.extend(physical.map(|(i, p)| at(i, Some(p))));

@@ -24,7 +24,13 @@
 //! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
 //! forwards, so the speed is its size (a Magic Formula's own sign of the
 //! speed, which flips its `fy` and `my`, stays inside its model), and a
-//! pressure of a few Pa, written in kPa, bar or psi (`pressure.rs`). A
+//! pressure of a few Pa, written in kPa, bar or psi (`pressure.rs`); a
+//! slip-angle column written in degrees, told by one rule with the
+//! camber's (`other_unit.rs`: round numbers of degrees, reaching where no
+//! rig sweeps, without the small slips of a sweep in radians), unless the
+//! header states radians (`alpha [rad]`); and a
+//! column beside an input stating its own unit (`sa_deg`) that disagrees
+//! with it on a row (`beside.rs`). A
 //! model that still gives a non-finite force or moment at a point is
 //! refused at that point: the output never holds a non-finite value.
 //!
@@ -48,6 +54,7 @@
 //! refused at its row in every mode (`bottoming.rs`).
 
 mod at_points;
+mod beside;
 mod bottoming;
 pub use at_points::{refused_points, slip_past_lock, PointRefused};
 pub use slip_ratio::SlipPastLock;
@@ -70,6 +77,7 @@ mod model_loads;
 mod not_carried;
 mod opposed;
 mod order;
+mod other_unit;
 mod past_fzmax;
 mod physical;
 mod points;

@@ -20,13 +20,15 @@
 //! `CAMMIN`/`CAMMAX` with a warning as MFeval does (`ranges.rs`), a model
 //! with no camber range saying them (`camber.rs`).
 //!
-//! A slip angle is not asked by that rule: `tyre-eval` is asked for points,
-//! and points only in the sliding range (30–80°, where a curvature makes
-//! the force reverse) are a tyre's state as much as a sweep through 0 is.
+//! That camber rule is one row of the rule a column read in another unit
+//! is told by (`other_unit.rs`), whose header stating radians (`camber
+//! [rad]`) reads it as written. A slip angle is not asked by the camber's
+//! row: points only in the sliding range (30–80°, where a curvature makes
+//! the force reverse) are a tyre's state as much as a sweep through 0 is;
+//! its own row asks a round sweep in degrees (`other_unit.rs`).
 
 use crate::constants::MOST_PRESSURE;
 use crate::error::{InputProblem, MOST_CAMBER, STEEP_CAMBER};
-use crate::io::camber_in_degrees;
 use std::f64::consts::FRAC_PI_2;
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
@@ -70,10 +72,16 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
 ];
 
+/// The low and high ends of column `name`'s [`PHYSICAL`] range.
+pub(super) fn range_of(name: &str) -> Option<(f64, f64)> {
+    PHYSICAL.iter().find(|p| p.0 == name).map(|p| (p.1, p.2))
+}
+
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
 /// range, a speed within it below 0, and every negative load: its row
-/// and the problem.
-pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
+/// and the problem. A camber column whose header `stated` radians is not
+/// asked as degrees within ±45°.
+pub(super) fn not_physical(name: &str, values: &[f64], stated: bool) -> Vec<(usize, InputProblem)> {
     let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
         return Vec::new();
     };
@@ -83,7 +91,7 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
     // `identify` says it of a rig file (`io/rig.rs`).
     let finite = || values.iter().filter(|v| v.is_finite());
     let every = name == "fz" && finite().count() > 0 && finite().all(|v| *v < 0.0);
-    let camber_degrees = name == "camber" && camber_in_degrees(values);
+    let camber_degrees = name == "camber" && !stated && steep_only(values);
     let refused = |(i, &value): (usize, &f64)| {
         let problem = if name == "speed" && value < 0.0 {
             // A slip angle within ±90° already says the wheel rolls
@@ -129,6 +137,14 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
         .collect()
 }
 
+/// Whether a camber column reads as degrees by its row of the rule
+/// (`other_unit.rs`: every tilt other than 0 steeper than 20°, as
+/// `identify`'s `camber_in_degrees`), its finite values judged.
+fn steep_only(values: &[f64]) -> bool {
+    let finite: Vec<f64> = values.iter().copied().filter(|v| v.is_finite()).collect();
+    super::other_unit::rule_of("camber").is_some_and(|r| r.reads_other(&finite))
+}
+
 /// Whether an angle beyond `limit` (rad) reads as one in degrees: more
 /// than 1° past it (a hair past 90° is 90° rounded, said as such) and
 /// within it in degrees, as `identify` says of its rig files.
@@ -146,16 +162,18 @@ mod tests {
     /// a `.tir`'s range) alone, too.
     #[test]
     fn a_camber_column_reads_as_degrees_only_where_no_camber_is_a_cars() {
-        let asked = not_physical("camber", &[0.0, 0.5, -0.4]);
+        let asked = not_physical("camber", &[0.0, 0.5, -0.4], false);
         assert_eq!(asked.len(), 2, "{asked:?}");
         assert!(matches!(
             asked[0],
             (1, InputProblem::AngleInDegrees { value: 0.5, .. })
         ));
-        assert!(not_physical("camber", &[0.1, 0.5, -0.4]).is_empty());
-        assert!(not_physical("camber", &[0.0, 0.3, -0.3]).is_empty());
-        assert!(not_physical("camber", &[0.0, 0.0]).is_empty());
+        assert!(not_physical("camber", &[0.1, 0.5, -0.4], false).is_empty());
+        assert!(not_physical("camber", &[0.0, 0.3, -0.3], false).is_empty());
+        assert!(not_physical("camber", &[0.0, 0.0], false).is_empty());
+        // Stated in radians (`camber [rad]`): read as written.
+        assert!(not_physical("camber", &[0.0, 0.5, -0.4], true).is_empty());
         // A slip angle is not asked by the camber's rule: points past 20° are read.
-        assert!(not_physical("alpha", &[0.0, 0.05, 0.5]).is_empty());
+        assert!(not_physical("alpha", &[0.0, 0.05, 0.5], false).is_empty());
     }
 }

@@ -2,7 +2,9 @@
 //! evaluated: its five input columns and optional `pressure`, every value
 //! no tyre is evaluated at refused at its cell in one run (`physical.rs`),
 //! a pressure not in Pa (each implausible cell with the unit it likely
-//! reads in: `pressure.rs`) and loads in kN.
+//! reads in: `pressure.rs`), loads in kN, a slip angle in degrees
+//! (`other_unit.rs`) and a column beside an input
+//! stating its own unit that disagrees with it (`beside.rs`).
 
 use super::{physical, pressure};
 use crate::error::{Error, InputProblem};
@@ -54,7 +56,15 @@ pub(super) fn read_points(
         .into_iter()
         .map(|n| (n, c.take(n)))
         .collect();
-    let mut errors = not_physical(points, &c, &inputs, pressure.as_deref());
+    // A column whose header states its SI unit, or beside which a column
+    // stating its own unit agrees on every row, is read as written.
+    let besides = super::beside::check(points, &c, &inputs);
+    let mut stated: Vec<&str> = c.stated_si.iter().map(String::as_str).collect();
+    stated.extend(besides.confirmed.iter().copied());
+    let mut errors = not_physical(points, &c, &inputs, (pressure.as_deref(), &stated));
+    let other = super::other_unit::refusals(&inputs, &stated, physical::range_of).into_iter();
+    errors.extend(other.map(|(i, name, p)| c.error_at(points, i, name, p)));
+    errors.extend(besides.refused);
     errors.extend(bad_cells);
     // Pressures in another unit are said with the rest, in one run: a
     // file with 2.6, 260 and -1 was refused at -1 alone, and at the two
@@ -78,12 +88,13 @@ pub(super) fn read_points(
 /// Every point no tyre is evaluated at (`physical.rs`), in row order
 /// (then column), each as the error at its cell of `c` (read from
 /// `points`): the five `inputs` and the `pressure` where given, a
-/// pressure at or below zero said as such, with the rest.
+/// pressure at or below zero said as such, with the rest; the columns
+/// `stated` in SI not asked as in degrees.
 fn not_physical(
     points: &Path,
     c: &crate::io::Columns,
     inputs: &[(&'static str, Vec<f64>)],
-    pressure: Option<&[f64]>,
+    (pressure, stated): (Option<&[f64]>, &[&str]),
 ) -> Vec<crate::error::InputError> {
     let given = inputs
         .iter()
@@ -92,7 +103,7 @@ fn not_physical(
     let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
         .enumerate()
         .flat_map(|(k, (name, values))| {
-            physical::not_physical(name, values)
+            physical::not_physical(name, values, stated.contains(&name))
                 .into_iter()
                 .map(move |(i, problem)| (i, k, name, problem))
         })

@@ -1,4 +1,4 @@
-//! Round 43 (issue 41, finding 8c): `identify --model pac89 --hold
+//! Round 43: `identify --model pac89 --hold
 //! a7=abc` is refused with an example of the chosen model's own
 //! parameters, not a Magic Formula name (it said "e.g. PKY4=2", a name a
 //! pac89 fit refuses). The `--hold` argument is read with the model

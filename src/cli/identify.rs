@@ -69,8 +69,8 @@ pub struct IdentifyArgs {
     /// said so); for the other models one of the parameters of the tyre
     /// file it writes, in its units, e.g. --hold a1=-22.1 for pac89
     /// (PAC89's two-stage identification is then not run).
-    #[arg(long, value_parser = hold_value)]
-    hold: Vec<(String, f64)>,
+    #[arg(long)]
+    hold: Vec<String>,
 }
 
 /// The options given that only some fits read, in the order of
@@ -93,18 +93,13 @@ fn given(a: &IdentifyArgs) -> Vec<FitOption> {
     .collect()
 }
 
-/// `NAME=VALUE` of `--hold`.
-fn hold_value(s: &str) -> Result<(String, f64), String> {
-    s.split_once('=')
-        .and_then(|(k, v)| Some((k.trim().to_string(), v.trim().parse::<f64>().ok()?)))
-        .filter(|(k, _)| !k.is_empty())
-        .ok_or_else(|| handling::error::OptionsError::HoldSyntax { given: s.into() }.to_string())
-}
-
 /// `handling identify`.
 pub fn identify(a: IdentifyArgs) -> Result<()> {
-    let hold = a.hold.clone();
     identify::check_given(a.model, &given(&a))?;
+    // Read with the model known: its error's example is one of its names.
+    let hold = (a.hold.iter())
+        .map(|s| identify::parse_hold(s, a.model))
+        .collect::<Result<Vec<_>, _>>()?;
     let r = identify::run(&Options {
         data: a.data,
         model: a.model,
@@ -119,7 +114,7 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
         start: a.start.unwrap_or(StartArg::Data),
         template: a.template,
         max_iterations: a.max_iterations,
-        hold: a.hold,
+        hold: hold.clone(),
     })
     .map_err(|e| named_hold(e, &hold))?;
     for w in r.warnings() {

@@ -308,10 +308,12 @@ pub enum OptionsError {
         known: Vec<String>,
     },
     /// A `--hold` that is not `NAME=VALUE` with a number.
-    #[error("--hold `{given}`: expected NAME=VALUE with a number, e.g. PKY4=2")]
+    #[error("--hold `{given}`: expected NAME=VALUE with a number, e.g. {example}")]
     HoldSyntax {
         /// The argument given.
         given: String,
+        /// A hold of the model chosen (`a0=1.65` for pac89).
+        example: String,
     },
     /// A parameter held twice (the last value would be taken silently).
     #[error("--hold {name} is given twice ({first} and {second}): hold each parameter once")]

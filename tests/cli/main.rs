@@ -969,6 +969,7 @@ mod trips_s109_simwords41;
 mod trips_s110_epoch43;
 mod trips_s110_lead;
 mod trips_s110_metrics42;
+mod trips_s110_pac89se43;
 mod trips_s110_studyeq42;
 mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;

@@ -13,6 +13,42 @@ use crate::tyre::mf::{MagicFormula, MfCoefficients, MfOptions, MfVersion, TyreSi
 use crate::tyre::{ModelName, Tyre};
 use serde::Serialize;
 
+/// `NAME=VALUE` of `--hold`, read for `model`: the error's example is a
+/// parameter of that model (`a0=1.65` for pac89; a `.tir` coefficient,
+/// `PKY4=2`, for mf61/mf62), not another model's (a pac89 fit once was
+/// told "e.g. PKY4=2", a Magic Formula name it refuses).
+pub fn parse_hold(s: &str, model: super::IdentifyModel) -> Result<(String, f64), Error> {
+    s.split_once('=')
+        .and_then(|(k, v)| Some((k.trim().to_string(), v.trim().parse::<f64>().ok()?)))
+        .filter(|(k, _)| !k.is_empty())
+        .ok_or_else(|| {
+            crate::error::OptionsError::HoldSyntax {
+                given: s.into(),
+                example: hold_example(model),
+            }
+            .into()
+        })
+}
+
+/// A `--hold` of `model` as an example: its first fitted parameter at its
+/// start value at 4000 N, or `PKY4=2` for the staged Magic Formula fits.
+fn hold_example(model: super::IdentifyModel) -> String {
+    let start = model
+        .swarm_model()
+        .and_then(|m| crate::identify::start_tyre_of(m, 4000.0).ok());
+    let Some(t) = start else {
+        return "PKY4=2".into();
+    };
+    let names = crate::identify::fitted_names(&t);
+    match (
+        names.first(),
+        crate::tyre::Parameterised::parameters(&t).first(),
+    ) {
+        (Some(n), Some(v)) => format!("{n}={}", crate::format::readable(*v, 3)),
+        _ => "PKY4=2".into(),
+    }
+}
+
 /// A parameter held with `--hold`: its name, the value given (the tyre
 /// file's units) and whether a fit it belongs to ran (a parameter of a
 /// block the data do not fit, such as an aligning one without `mz`, is

@@ -39,7 +39,7 @@ mod force_scale;
 mod further;
 mod hold_rules;
 mod holds;
-pub use holds::Held;
+pub use holds::{parse_hold, Held};
 mod staged;
 mod standstill;
 mod taken;

@@ -965,3 +965,4 @@ mod trips_s109_lead;
 mod trips_s109_loadlevels41;
 mod trips_s109_perf40f;
 mod trips_s109_simwords41;
+mod trips_s110_simulate42;

@@ -123,7 +123,7 @@ pub(super) fn on_curve(
     let Some(peak) = axle_peak(tyre, &loads, mu, speed) else {
         return (OnCurve::NoPeak, loads);
     };
-    let a = super::limits::wrapped(alpha).abs();
+    let a = alpha.abs();
     let share = axle_force(tyre, &loads, a, mu, speed) / peak.force;
     let on = match a > peak.slip + AT_PEAK {
         true => OnCurve::Past { peak, share },
@@ -173,7 +173,7 @@ fn lighter_wheel(sc: &Scenario, h: &TimeHistory, axle: usize, k: usize, loads: [
     let light = loads[0].min(loads[1]);
     let mu = sc.integrator.friction;
     match axle_peak(tyre, &[light], mu, h.speed[k]) {
-        Some(p) if super::limits::wrapped(alpha).abs() > p.slip + AT_PEAK => format!(
+        Some(p) if alpha.abs() > p.slip + AT_PEAK => format!(
             ", though its lighter wheel ({} kN) is past its own peak at {:.1}°",
             crate::format::fixed(light / 1000.0, 2),
             p.slip.to_degrees()
@@ -220,7 +220,7 @@ pub(super) fn steady_sideslip(
         let alpha = [h.alpha_front[last], h.alpha_rear[last]][n];
         format!(
             "the {name} at {:.1}°, {}",
-            super::limits::wrapped(alpha).to_degrees(),
+            alpha.to_degrees(),
             curve_words(sc, h, n, last).1
         )
     };

@@ -1,5 +1,5 @@
 //! Each axle judged against its own tyres' curve, not against the 15° any
-//! tyre's peak lies below ([`super::limits::SLIDING_SLIP`]): the axle's
+//! tyre's peak lies below (the `SLIDING_SLIP` `simulate` said it by): the axle's
 //! lateral force `Σ Fy(α, Fz_w)` over its two wheels at one row's wheel
 //! loads (the road's friction scale and the row's speed, no camber and no
 //! longitudinal slip, as the 2-DOF model evaluates them), scanned in slip

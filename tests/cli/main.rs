@@ -970,6 +970,7 @@ mod trips_s110_epoch43;
 mod trips_s110_lead;
 mod trips_s110_metrics42;
 mod trips_s110_pac89se43;
+mod trips_s110_simulate42;
 mod trips_s110_studyeq42;
 mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;

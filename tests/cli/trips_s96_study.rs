@@ -264,6 +264,13 @@ fn a_run_that_has_not_settled_is_not_said_to_settle_at_its_mean() {
         said.contains("but the run has not settled: its lateral acceleration averages 8.27 m/s² (-3 %) over the steady window and is still moving"),
         "{said}"
     );
+    // Still approaching the stable steady state it was solved from
+    // (session 110): it ends before it settles, not on another branch.
+    assert!(
+        said.contains("the run ends before the car settles, still approaching the steady state its steer was solved from: at t = 6.00 s"),
+        "{said}"
+    );
+    assert!(!said.contains("is not the one the step reaches"), "{said}");
 }
 
 /// The tester's `lin/rk4_20.toml`: the linear car stepped by 0.01 rad at

@@ -81,7 +81,7 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
             .extend(steady_at_limit(h, mu, sc.integrator.friction));
     }
     said.warnings
-        .extend(super::limits::axle_sliding(h, static_friction(sc)));
+        .extend(super::limits::axle_sliding(sc, h, static_friction(sc)));
     said.warnings.extend(super::limits::beyond_any_tyre(sc, h));
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
@@ -149,6 +149,10 @@ pub(crate) fn per_axle_tir(front: Option<String>, rear: Option<String>) -> Vec<S
 /// and the metrics' averaging stay far inside it.
 pub(super) const ASKED_AY_MISS: f64 = 0.02;
 
+/// Why a step misses its asked ay, where its run does not show it nearing
+/// the state solved for ([`super::approach`] says where it does).
+pub(super) const ANOTHER_STATE: &str = "the steady state its steer was solved from is not the one the step reaches (an unstable one past an axle's peak, where the car settles on another, or a slide)";
+
 /// A step steer sized for a steady lateral acceleration `asked` (m/s²)
 /// whose run ends beyond [`ASKED_AY_MISS`] of it (the metrics' steady
 /// change, `m.ay_steady`): the steady state its steer was solved from is
@@ -167,7 +171,7 @@ pub(super) fn asked_ay_missed(
     if miss.abs() <= ASKED_AY_MISS {
         return None;
     }
-    let why = "the steady state its steer was solved from is not the one the step reaches (an unstable one past an axle's peak, where the car settles on another, or a slide)";
+    let why = ANOTHER_STATE;
     let (asked_text, reached_text, miss_text) = (
         crate::format::exact(asked),
         crate::format::fixed(reached, 2),

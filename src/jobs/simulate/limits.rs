@@ -1,8 +1,11 @@
 //! What no tyre gives, said by `simulate` of the run: an axle's slip angle
-//! beyond [`SLIDING_SLIP`] (15°), past the peak of any road or racing
-//! tyre's curve, said as a slide on a tyre with a friction limit and as
-//! beyond the range of validity on a linear tyre (whose `C_α·α` has no
-//! peak and never slides, but holds only at small slip angles); and a
+//! beyond [`SLIDING_SLIP`] (15°), past the peak of most road and racing
+//! tyres' curves (3–10°), judged against the axle's own tyres' peak at
+//! that row's wheel loads ([`super::own_peak`]) and said as a slide only
+//! past it (a soft Gim tyre at 4.5 kN peaks at 25°), past "the peak of any
+//! tyre's curve" only where no peak of its own is found; on a linear tyre
+//! (whose `C_α·α` has no peak and never slides, but holds only at small
+//! slip angles) as beyond its range of validity; and a
 //! lateral acceleration beyond [`ANY_TYRE_AY`] g of the car's weight plus
 //! its down-force (a racing slick on a dry road reaches about 1.5 g
 //! without down-force), which a linear tyre gives at any steer. Slip
@@ -54,14 +57,16 @@ fn slip_words(a: f64) -> String {
 }
 
 /// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest
-/// (as the history holds it), when, and from when; `friction` is each
-/// axle's peak friction coefficient, infinite for a tyre with no limit
-/// (linear).
-pub(super) fn axle_sliding(h: &TimeHistory, friction: [f64; 2]) -> Vec<String> {
+/// (as the history holds it), when, and from when, judged against its own
+/// tyres' peak there and at the run's end ([`super::own_peak`]);
+/// `friction` is each axle's peak friction coefficient, infinite for a
+/// tyre with no limit (linear).
+pub(super) fn axle_sliding(sc: &Scenario, h: &TimeHistory, friction: [f64; 2]) -> Vec<String> {
     [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
         .into_iter()
         .zip(friction)
-        .filter_map(|((axle, alpha), mu)| {
+        .enumerate()
+        .filter_map(|(n, ((axle, alpha), mu))| {
             let from = alpha.iter().position(|v| v.abs() > SLIDING_SLIP)?;
             let (i, a) = alpha
                 .iter()
@@ -75,15 +80,45 @@ pub(super) fn axle_sliding(h: &TimeHistory, friction: [f64; 2]) -> Vec<String> {
                 h.t[from]
             );
             Some(match mu.is_finite() {
-                true => format!(
-                    "{reach}, past the peak of any tyre's curve: the {axle} axle slides, and the response is no handling response"
-                ),
+                true => own_curve(sc, h, (n, axle), &reach, i),
                 false => format!(
                     "{reach}: its tyres are linear, with no peak, and never slide, but a linear tyre's force C_α·α holds at small slip angles only (a real tyre's peaks at 3–10°): the {axle} axle runs beyond the linear tyre's range of validity, and the response there is no car's"
                 ),
             })
         })
         .collect()
+}
+
+/// An axle's largest slip `reach` (at row `i`) against its own tyres'
+/// peak, and at the run's last row where that is another: "slides" only
+/// where it is past that peak (or none is found).
+fn own_curve(
+    sc: &Scenario,
+    h: &TimeHistory,
+    (n, axle): (usize, &str),
+    reach: &str,
+    i: usize,
+) -> String {
+    let last = h.len() - 1;
+    let (past, there) = super::own_peak::curve_words(sc, h, n, i);
+    let end = (last != i).then(|| super::own_peak::curve_words(sc, h, n, last));
+    let end_past = end.as_ref().is_some_and(|e| e.0);
+    let alpha = [&h.alpha_front, &h.alpha_rear][n];
+    let at_end = end.map_or_else(String::new, |(_, w)| {
+        format!(
+            "; at the end of the run (t = {:.2} s) it is at {}, {w}",
+            h.t[last],
+            slip_words(alpha[last])
+        )
+    });
+    let verdict = match (past, end_past) {
+        (false, false) => format!("the {axle} axle does not slide past its tyres' peak"),
+        (true, false) if last != i => {
+            format!("the {axle} axle slides there, and the response there is no handling response")
+        }
+        _ => format!("the {axle} axle slides, and the response is no handling response"),
+    };
+    format!("{reach}, {there}{at_end}: {verdict}")
 }
 
 /// The largest |ay| of the run where it is beyond [`ANY_TYRE_AY`] g of the

@@ -4,6 +4,7 @@
 //! the run disagree (`gap.json`) out; beside them, what the run is that
 //! the scenario's words do not say ([`checks`]).
 
+mod approach;
 mod ay_ceiling;
 pub(crate) mod checks;
 pub(crate) mod critical;
@@ -12,6 +13,7 @@ mod idle_effects;
 mod layout;
 mod limits;
 pub(crate) mod nominal_load;
+mod own_peak;
 mod stall;
 mod straight;
 mod transient;
@@ -173,7 +175,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     let metrics = metrics.filter(|_| unstable.is_none());
     let mut warnings = applicability(&sc, h, metrics.as_ref());
     warnings.extend(unstable.map(|u| u.to_string()));
-    warnings.extend(step_warnings(&sc, metrics.as_ref()));
+    warnings.extend(step_warnings(&sc, h, metrics.as_ref()));
     let said = run_checks(&sc, h, &mut warnings);
     let replay = sc.measured.as_ref().map(|run| replay_gap(&sc, run, h));
     // The files this run writes: the history and figure always, the
@@ -230,16 +232,28 @@ fn applicability(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) 
     // it is a lightly damped response, not a spin.
     let peak_share = friction.map(|mu| checks::peak_grip_used(h, mu));
     metrics.map_or_else(Vec::new, |m| {
-        applicability_with_grip(
-            m,
-            Some(sc.manoeuvre.speed(0.0)),
-            grip.map(Grip::Tyres),
-            match peak_share {
-                Some(share) => Some(Overshoot::GripUsed(share)),
-                // Linear tyres are judged by their largest slip angles.
-                None => checks::gripless(sc).then(|| Overshoot::LinearSlip(largest_slip(h))),
+        // A sideslip beyond 10° with both axles short of their own peaks
+        // is no slide: said so here, in place of the metrics' slide.
+        let own = own_peak::steady_sideslip(sc, h, m, grip);
+        let m = match &own {
+            Some(_) => StepMetrics {
+                beta_steady: None,
+                ..*m
             },
-        )
+            None => *m,
+        };
+        own.into_iter()
+            .chain(applicability_with_grip(
+                &m,
+                Some(sc.manoeuvre.speed(0.0)),
+                grip.map(Grip::Tyres),
+                match peak_share {
+                    Some(share) => Some(Overshoot::GripUsed(share)),
+                    // Linear tyres are judged by their largest slip angles.
+                    None => checks::gripless(sc).then(|| Overshoot::LinearSlip(largest_slip(h))),
+                },
+            ))
+            .collect()
     })
 }
 
@@ -251,7 +265,7 @@ fn largest_slip(h: &TimeHistory) -> [f64; 2] {
 /// What the manoeuvre and its metrics say of themselves: a step still
 /// settling, a filter that measures itself, a step no steering drives, a
 /// steady ay asked and missed, a schedule no car on this road drives.
-fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
+fn step_warnings(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) -> Vec<String> {
     // Where the lateral acceleration heads, bounded by what this car can
     // reach on this road.
     let mut warnings: Vec<String> = metrics
@@ -281,7 +295,7 @@ fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
     // another, or settles nowhere within the run.
     if let (Some(asked), Some(m)) = (sc.asked_ay, metrics) {
         let ceiling = m.ay_steady.map(|ay| ay_ceiling::ceiling(sc, ay));
-        warnings.extend(checks::asked_ay_missed(asked, m, ceiling.as_ref()));
+        warnings.extend(approach::asked_ay_words(sc, h, asked, m, ceiling.as_ref()));
     }
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

@@ -191,35 +191,7 @@ impl ChannelSettling {
         let named = self.named();
         let failed: Vec<String> = named
             .iter()
-            .filter_map(|(name, _, s)| match s {
-                Settling::NotSettled { beyond } => Some(format!(
-                    "the {name} spreads by {} % of its step beyond its noise",
-                    crate::format::significant(100.0 * beyond, 2)
-                )),
-                Settling::Drifting {
-                    heads,
-                    converging,
-                    rising,
-                } => Some(format!(
-                    "the {name} is still {}: the trend across its steady window {}",
-                    if *converging { "settling" } else { "drifting" },
-                    limit::trend_words(
-                        name,
-                        (*heads, *rising),
-                        ceiling,
-                        // A drift that does not slow has no steady value
-                        // to head beyond: its window's mean is the level.
-                        (
-                            limit::Verb::Finite,
-                            match converging {
-                                true => "its steady value",
-                                false => "its window's mean",
-                            }
-                        )
-                    ),
-                )),
-                _ => None,
-            })
+            .filter_map(|(name, _, s)| unsettled_words(name, s, ceiling))
             .collect();
         if failed.is_empty() {
             return None;
@@ -336,6 +308,40 @@ impl ChannelSettling {
                 _ => None,
             })
             .collect()
+    }
+}
+
+/// The words of one channel `name` that has not settled (`s`), none where
+/// it has; where its trend heads is said as the `limit` module says it.
+fn unsettled_words(name: &str, s: &Settling, ceiling: Option<&Ceiling>) -> Option<String> {
+    match s {
+        Settling::NotSettled { beyond } => Some(format!(
+            "the {name} spreads by {} % of its step beyond its noise",
+            crate::format::significant(100.0 * beyond, 2)
+        )),
+        Settling::Drifting {
+            heads,
+            converging,
+            rising,
+        } => Some(format!(
+            "the {name} is still {}: the trend across its steady window {}",
+            if *converging { "settling" } else { "drifting" },
+            limit::trend_words(
+                name,
+                (*heads, *rising),
+                ceiling,
+                // A drift that does not slow has no steady value to head
+                // beyond: its window's mean is the level.
+                (
+                    limit::Verb::Finite,
+                    match converging {
+                        true => "its steady value",
+                        false => "its window's mean",
+                    }
+                )
+            ),
+        )),
+        _ => None,
     }
 }
 

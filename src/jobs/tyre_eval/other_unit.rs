@@ -11,7 +11,10 @@
 //!    degrees such a value is finer than any sweep's step (0.05°);
 //! 3. where the far values are a state a tyre reaches (a sliding tyre's
 //!    slip angle), every value is a round number of degrees, a multiple
-//!    of 0.05 (the steps people sweep by: 0.1, 0.25, 0.5, 1). A camber
+//!    of 0.05 (the steps people sweep by: 0.1, 0.25, 0.5, 1), and more
+//!    than half of the non-zero ones lie past 20° (0.35 rad), where every
+//!    tyre has peaked: points in radians ask most of their slips short of
+//!    it (MFeval's reference points 0, 0.1, −0.35, 1.2 rad). A camber
 //!    past 20° is no car's state: a column of them all is degrees, round
 //!    or not.
 //!
@@ -75,6 +78,20 @@ pub(super) fn rule_of(column: &str) -> Option<&'static Rule> {
     RULES.iter().find(|r| r.column == column)
 }
 
+/// The slip angle, rad (20°), past which every tyre's lateral force has
+/// peaked: a set of points in radians asks most of its slips short of it
+/// (MFeval's reference points 0, 0.1, −0.35 and 1.2 rad: one of three
+/// non-zero past it), a sweep in degrees read in radians lies mostly past
+/// it (−1.5 to 1.5 by 0.1: 24 of 30).
+const PEAKED: f64 = 0.35;
+
+/// Whether more than half of the non-zero `values` lie past [`PEAKED`].
+fn mostly_peaked(values: &[f64]) -> bool {
+    let nonzero = values.iter().filter(|v| **v != 0.0).count();
+    let past = values.iter().filter(|v| v.abs() > PEAKED).count();
+    2 * past > nonzero
+}
+
 /// Whether `v` is a multiple of [`ROUND_STEP`], to the rounding of a
 /// decimal text read into binary (0.30000000000000004 is 0.3).
 fn round(v: f64) -> bool {
@@ -88,7 +105,9 @@ impl Rule {
     pub(super) fn reads_other(&self, values: &[f64]) -> bool {
         let beyond = values.iter().any(|v| v.abs() > self.reach);
         let small = values.iter().any(|v| *v != 0.0 && v.abs() <= self.small);
-        beyond && !small && (!self.round || values.iter().all(|v| round(*v)))
+        beyond
+            && !small
+            && (!self.round || (values.iter().all(|v| round(*v)) && mostly_peaked(values)))
     }
 
     /// The refusal of a column of `values` (at rows `rows` of the file)
@@ -172,6 +191,10 @@ mod tests {
         assert!(!alpha().reads_other(&[0.0, 0.1, 0.2, 0.3, 0.5, -0.5]));
         // One value off the round steps (0.33) is no sweep in degrees.
         assert!(!alpha().reads_other(&[0.0, 0.33, 1.0]));
+        // MFeval's reference points past the limits, in radians: one of
+        // three non-zero slips past 20°.
+        assert!(!alpha().reads_other(&[0.0, 0.1, -0.35, 1.2]));
+        assert!(!alpha().reads_other(&[0.0, -0.1, 0.35, -1.2]));
         let (row, problem) = alpha()
             .refusal(&sweep, &(0..31).collect::<Vec<_>>())
             .unwrap();

@@ -197,8 +197,18 @@ impl ChannelSettling {
             return None;
         }
         let held = |s: &Settling| matches!(s, Settling::Settled);
-        let grip = matches!(self.beta, Some(Settling::NotSettled { .. }))
-            && held(&self.yaw_rate)
+        // A sideslip that spreads, or drifts without slowing, beside a
+        // yaw rate and ay that hold: a grip limit's slide.
+        let grip = matches!(
+            self.beta,
+            Some(
+                Settling::NotSettled { .. }
+                    | Settling::Drifting {
+                        converging: false,
+                        ..
+                    }
+            )
+        ) && held(&self.yaw_rate)
             && self.ay.iter().all(held);
         let grip = match grip {
             true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while the magnitude of its sideslip |β| grows",

@@ -154,7 +154,7 @@ fn a_trend_past_the_limit_climbs_toward_it_and_one_within_it_heads_there() {
         .not_settled_warning_within(1.0, Some(&ceiling))
         .unwrap();
     assert!(
-        said.contains("the lateral acceleration is still drifting: the trend across its steady window climbs toward the 9.81 m/s² the tyres can give on this road (their peak lateral forces at static load over the mass), 4.4 % of its step above its steady value (a line through the window would pass it, where no car on this road goes), more than 2 %"),
+        said.contains("the lateral acceleration is still drifting: the trend across its steady window climbs toward the 9.81 m/s² the tyres can give on this road (their peak lateral forces at static load over the mass), 4.4 % of its step above its window's mean (a line through the window would pass it, where no car on this road goes), more than 2 %"),
         "{said}"
     );
     assert!(!said.contains("6.7 %"), "{said}");
@@ -163,7 +163,7 @@ fn a_trend_past_the_limit_climbs_toward_it_and_one_within_it_heads_there() {
         .not_settled_warning_within(1.0, Some(&ceiling))
         .unwrap();
     assert!(
-        said.contains("the trend across its steady window heads 3.0 % of its step beyond its steady value, more than 2 %"),
+        said.contains("the trend across its steady window heads 3.0 % of its step beyond its window's mean, more than 2 %"),
         "{said}"
     );
     // Falling back: back below, whatever the limit.
@@ -171,13 +171,13 @@ fn a_trend_past_the_limit_climbs_toward_it_and_one_within_it_heads_there() {
         .not_settled_warning_within(1.0, Some(&ceiling))
         .unwrap();
     assert!(
-        said.contains("heads 6.7 % of its step back below its steady value"),
+        said.contains("heads 6.7 % of its step back below its window's mean"),
         "{said}"
     );
     // A measured record's: no limit known, said as the window's trend.
     let said = drifting(0.067, true).not_settled_warning(1.0).unwrap();
     assert!(
-        said.contains("heads 6.7 % of its step beyond its steady value (the window's trend carried on: the car's grip, which this record does not give, bounds where it ends)"),
+        said.contains("heads 6.7 % of its step beyond its window's mean (the window's trend carried on: the car's grip, which this record does not give, bounds where it ends)"),
         "{said}"
     );
     // The yaw rate's words are not bounded by the grip.

@@ -22,6 +22,12 @@ pub(crate) fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
         "--out",
         out.to_str().unwrap(),
     ]);
+    history_rows(&out)
+}
+
+/// The rows (t, steer, speed, beta, yaw_rate, ay) of the `history.csv`
+/// a `simulate` wrote into `out`.
+pub(crate) fn history_rows(out: &Path) -> Vec<[f64; 6]> {
     let text = fs::read_to_string(out.join("history.csv")).unwrap();
     text.lines()
         .skip(1)

@@ -9,7 +9,7 @@
 use super::*;
 
 use crate::calibration::Noise;
-use crate::trips_s108_lead::logged;
+use crate::trips_s108_lead::{history_rows, logged};
 
 /// The bundled sedan's step at 0.0003 rad (the tester's `s_tiny`),
 /// simulated in `dir`: its 1 kHz rows (t, steer, speed, beta, yaw_rate,
@@ -29,14 +29,7 @@ fn tiny_rows(dir: &Path) -> Vec<[f64; 6]> {
         "--out",
         out.to_str().unwrap(),
     ]);
-    let text = fs::read_to_string(out.join("history.csv")).unwrap();
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').take(6).map(|x| x.parse().unwrap()).collect();
-            [v[0], v[1], v[2], v[3], v[4], v[5]]
-        })
-        .collect()
+    history_rows(&out)
 }
 
 /// What `metrics` prints on `run`: the table and the warnings.

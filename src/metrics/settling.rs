@@ -401,11 +401,12 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
     if beyond < SETTLED_SPREAD && n.inside.peak * to_scale >= SETTLED_SPREAD {
         beyond = beyond.max(SETTLED_SPREAD).max(n.inside.range * to_scale);
     }
+    // Within the band the noise leaves unknown of the step, no spread.
     let spread = if beyond >= band { beyond } else { 0.0 };
     if let Some(drift) = drifting(n.trend, to_scale, spread) {
         return drift;
     }
-    if beyond >= SETTLED_SPREAD && beyond >= band {
+    if spread >= SETTLED_SPREAD {
         return Settling::NotSettled { beyond };
     }
     approaching(n.trend, to_scale)

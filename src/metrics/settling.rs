@@ -220,19 +220,24 @@ impl ChannelSettling {
         // its trend over one window bounds nothing (a yaw rate rising
         // linearly after the step read "off by up to about 4.9 %" with the
         // gain 28 % above the car's).
+        // A spread is a deviation about the window's mean, no bound: a
+        // sliding car's yaw rate spread 22 % of its step over a window its
+        // values spanned 72 % of, said "off by up to about 22 %".
         let off = match self.yaw_rate {
-            Settling::NotSettled { beyond } => Some(Some(beyond)),
+            Settling::NotSettled { beyond } => Some((Some(beyond), true)),
             Settling::Drifting {
                 heads, converging, ..
-            } => Some(converging.then_some(heads)),
+            } => Some((converging.then_some(heads), false)),
             _ => None,
         };
-        let gain = off.map_or(String::new(), |off| {
+        let gain = off.map_or(String::new(), |(off, spread)| {
+            let pc = |off: f64| crate::format::significant(100.0 * off, 2);
             let bound = match off {
-                Some(off) => format!(
-                    "it may be off by up to about {} %",
-                    crate::format::significant(100.0 * off, 2)
+                Some(off) if spread => format!(
+                    "by {} % of its step about the window's mean, a deviation and no bound: its values there range wider, and where it settles this record does not say",
+                    pc(off)
                 ),
+                Some(off) => format!("it may be off by up to about {} %", pc(off)),
                 None => "and it drifts without slowing, so this record bounds neither where it settles nor whether it does".to_string(),
             };
             format!(

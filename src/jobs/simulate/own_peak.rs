@@ -11,7 +11,10 @@
 //! where the force first reaches its top, within [`TOP`] of it.
 //!
 //! Units: rad and N inside; degrees, kN and % in words. Slip angles as
-//! `history.csv` holds them (ISO 8855), judged by magnitude.
+//! `history.csv` holds them (ISO 8855), judged by magnitude; a peak is
+//! said with the sign of the slip it is judged against (a −49.5° front
+//! slip was said "past its tyres' peak at 38.0°", two signs for one side
+//! of the curve).
 
 use crate::io::Scenario;
 use crate::metrics::applicability::{KINEMATIC_GRIP, SLIDING_SIDESLIP};
@@ -132,16 +135,26 @@ pub(super) fn on_curve(
     (on, loads)
 }
 
+/// The sign of axle `axle`'s slip angle at row `k` (1 at zero): a peak
+/// slip (a magnitude) is said on the slip's side of the curve.
+fn slip_sign(h: &TimeHistory, axle: usize, k: usize) -> f64 {
+    match [h.alpha_front[k], h.alpha_rear[k]][axle] < 0.0 {
+        true => -1.0,
+        false => 1.0,
+    }
+}
+
 /// [`on_curve`] in words: "88 % of its tyres' peak at 37.3° (9.02 kN at
 /// that row's wheel loads, 1.74 and 7.28 kN)", with the lighter wheel
-/// where it alone is past its own peak.
+/// where it alone is past its own peak; peaks with the row's slip's sign.
 pub(super) fn curve_words(sc: &Scenario, h: &TimeHistory, axle: usize, k: usize) -> (bool, String) {
     let (on, loads) = on_curve(sc, h, axle, k);
     let kn = |f: f64| crate::format::fixed(f / 1000.0, 2);
+    let sign = slip_sign(h, axle, k);
     let at = |p: AxlePeak| {
         format!(
             "its tyres' peak at {:.1}° ({} kN at that row's wheel loads, {} and {} kN)",
-            p.slip.to_degrees(),
+            (sign * p.slip).to_degrees(),
             kn(p.force),
             kn(loads[0]),
             kn(loads[1])
@@ -176,7 +189,7 @@ fn lighter_wheel(sc: &Scenario, h: &TimeHistory, axle: usize, k: usize, loads: [
         Some(p) if alpha.abs() > p.slip + AT_PEAK => format!(
             ", though its lighter wheel ({} kN) is past its own peak at {:.1}°",
             crate::format::fixed(light / 1000.0, 2),
-            p.slip.to_degrees()
+            (slip_sign(h, axle, k) * p.slip).to_degrees()
         ),
         _ => String::new(),
     }

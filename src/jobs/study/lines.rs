@@ -2,11 +2,12 @@
 //! that meet it, the best combination on its curve (held to the map, and
 //! said so where it sits on the map's edge), and for Er the RBF network's
 //! answer — said to be an extrapolation outside the Er it was trained on,
-//! and not re-simulated where it is a stiffness no tyre has. Stiffness in
-//! the study's unit, Er in s.
+//! not re-simulated where it is a stiffness no tyre has, and refused as an
+//! answer outside the map or off its target's tolerance, with what the map
+//! reaches ([`super::rbf_verdict`]). Stiffness in the study's unit, Er in s.
 
-use super::target_range::{beyond_the_map, span, unit};
-use super::{BestAnswer, RbfAnswer, RbfFit, TargetReport};
+use super::target_range::{beyond_the_map, span, unit, MapReach, TargetReach};
+use super::{BestAnswer, RbfAnswer, RbfFit, RbfRefusal, RbfStatus, TargetReport};
 use crate::study::inverse::{Map, MapEdge};
 use crate::study::{Metric, StiffnessUnit};
 
@@ -51,7 +52,7 @@ pub(super) fn target_lines(
         None if er.curve.is_empty() => format!(
             "  {name} = {}: not reached on the map{}",
             t.target,
-            beyond_the_map(map, t.metric, t.target)
+            beyond_the_map(map, t.metric, t.target, u)
         ),
         None => format!(
             "  {name} = {}: a curve of {} map points, but no point on it re-simulates to the target (the secant in the rear stiffness did not converge from the map's closest point)",
@@ -87,8 +88,9 @@ fn held(b: &BestAnswer, map: &Map, u: StiffnessUnit) -> String {
 }
 
 /// The network's answer: re-simulated, or, where it is a stiffness no tyre
-/// has, not; with the range the network was trained on where the target
-/// lies outside it, and the map's where neither reaches it.
+/// has, not; refused as an answer outside the map or off its target's
+/// tolerance; with the range the network was trained on where the target
+/// lies outside it, and what the map reaches where it is refused.
 fn rbf_line(t: &TargetReport, r: &RbfAnswer, map: &Map, u: StiffnessUnit) -> String {
     let (lo, hi) = r.trained_er;
     let outside = t.target < lo || t.target > hi;
@@ -118,21 +120,92 @@ fn rbf_line(t: &TargetReport, r: &RbfAnswer, map: &Map, u: StiffnessUnit) -> Str
             no.words()
         );
     }
-    let resimulated = match (r.er_resimulated, r.error_percent) {
-        (Some(e), Some(p)) => format!("Er {e:.6} re-simulated ({p:+.2} %)"),
-        _ => "no Er re-simulated (the response there does not settle to a steady state within the step)".to_string(),
+    // An answer stands only re-simulated within its tolerance.
+    let (Some(e), Some(p), RbfStatus::Answer) = (r.er_resimulated, r.error_percent, r.status)
+    else {
+        return refused_line(t, r, map, u, &extrapolation);
     };
     // A regression's answer (see the note under the RBF line) is as good
     // as its re-simulated Er, whatever the network's misfit.
     let regression = match r.fit {
-        RbfFit::Regression if r.er_resimulated.is_some() => {
+        RbfFit::Regression => {
             "; from the network as a regression: trust it as far as its re-simulated Er"
         }
-        RbfFit::Regression => "; from the network as a regression, with no Er re-simulated to judge it by: not to be trusted",
         RbfFit::Interpolant => "",
     };
     format!(
-        "    RBF answer: ({:.1}, {:.1}) {u}, {resimulated}, distance {:.3}{extrapolation}{regression}",
+        "    RBF answer: ({:.1}, {:.1}) {u}, Er {e:.6} re-simulated ({p:+.2} %), distance {:.3}{extrapolation}{regression}",
         r.k_front, r.k_rear, r.distance_to_reference,
     )
+}
+
+/// The network's answer refused (simulated, but outside the map or off
+/// its target's tolerance): why, and what the map reaches of Er.
+fn refused_line(
+    t: &TargetReport,
+    r: &RbfAnswer,
+    map: &Map,
+    u: StiffnessUnit,
+    extrapolation: &str,
+) -> String {
+    let b = map.bounds();
+    let k = u.to_si();
+    let g = |v: f64| crate::format::rounded(v / k, 6);
+    let why: Vec<String> = r
+        .refused_for
+        .iter()
+        .filter_map(|why| match why {
+            RbfRefusal::OutsideMap => Some(format!(
+                "outside the map it was fitted on (front {}–{}, rear {}–{} {u}), where an RBF network has no data and does not extrapolate",
+                g(b.front.0), g(b.front.1), g(b.rear.0), g(b.rear.1)
+            )),
+            RbfRefusal::MissesTarget => Some(format!(
+                "its Er re-simulated, {} s ({:+.2} %), misses Er {} by more than its tolerance of {} s",
+                crate::format::significant(r.er_resimulated?, 5),
+                r.error_percent?,
+                t.target,
+                t.tolerance
+            )),
+            RbfRefusal::NoErResimulated => Some("no Er re-simulated there to confirm it (the response there is no handling response: it slides, is unstable or does not settle within the step)".to_string()),
+            RbfRefusal::NoTyre => None,
+        })
+        .collect();
+    format!(
+        "    RBF answer: none: the network gives ({:.1}, {:.1}) {u}, distance {:.3}: {}; not an answer{extrapolation}{}",
+        r.k_front,
+        r.k_rear,
+        r.distance_to_reference,
+        why.join("; and "),
+        reach_words(t, t.curve.map_reach.as_ref(), u)
+    )
+}
+
+/// What the map reaches of Er beside a refused answer: the target
+/// unreachable within it, with the nearest value and where; or within
+/// it, answered (or not) by the best combination on its curve.
+fn reach_words(t: &TargetReport, reach: Option<&MapReach>, u: StiffnessUnit) -> String {
+    let Some(m) = reach else {
+        return "; no map point has an Er (none is a handling response)".into();
+    };
+    let g = |v: f64| crate::format::significant(v, 4);
+    let range = format!(
+        "its Er spans {}–{} s",
+        g(m.lowest.value),
+        g(m.highest.value)
+    );
+    match (m.target, &t.curve.best) {
+        (TargetReach::Within, Some(_)) => format!(
+            "; the map reaches Er {} ({range}): the best combination on its curve, above, answers it",
+            t.target
+        ),
+        (TargetReach::Within, None) => format!(
+            "; the map's {range}, Er {} within it, but no point on its curve re-simulates to it",
+            t.target
+        ),
+        _ => format!(
+            "; Er {} is unreachable within the map ({range}): {}",
+            t.target,
+            m.nearest_words(Metric::Er, u).unwrap_or_default()
+        ),
+    }
 }

@@ -16,6 +16,8 @@ mod rbf_fit;
 pub use rbf_fit::RbfFit;
 mod table;
 pub use table::StudySummary;
+mod rbf_verdict;
+pub use rbf_verdict::{RbfRefusal, RbfStatus};
 mod target_range;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, StudyInput};
@@ -27,6 +29,7 @@ use crate::report::{refuse_overwrites, write_json_sorted, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+pub use target_range::{MapReach, ReachPoint, TargetReach};
 
 /// One held-out pair: its Er, the network's answer, and that answer's Er
 /// re-simulated.
@@ -93,8 +96,9 @@ pub struct BestAnswer {
     pub at_map_edge: Option<MapEdge>,
 }
 
-/// The network's answer to an Er target, re-simulated.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// The network's answer to an Er target, re-simulated, and whether it
+/// stands as an answer ([`rbf_verdict`]).
+#[derive(Debug, Clone, Serialize)]
 pub struct RbfAnswer {
     /// Front stiffness.
     pub k_front: f64,
@@ -117,6 +121,10 @@ pub struct RbfAnswer {
     /// The network it comes from: a regression's answer is judged by its
     /// re-simulated Er alone.
     pub fit: RbfFit,
+    /// Whether it stands as an answer.
+    pub status: RbfStatus,
+    /// Why it does not (empty where it does).
+    pub refused_for: Vec<RbfRefusal>,
 }
 
 /// What a target has beyond a region: its curve, the best point on it and,
@@ -130,6 +138,9 @@ pub struct CurveAnswer {
     /// The network's answer, for an Er target with a network (Wang &
     /// Liang's network maps Er alone).
     pub rbf: Option<RbfAnswer>,
+    /// What the map reaches of the metric, and where the target lies
+    /// against it (`None`: no map point has it).
+    pub map_reach: Option<MapReach>,
 }
 
 /// One target of the inverse problem answered.
@@ -386,6 +397,41 @@ impl Job {
     }
 }
 
+/// The network's answer to the Er target `t`: re-simulated unless no tyre
+/// has it, and judged against the map's `bounds` (N/rad) and the target's
+/// tolerance; its distance to `reference`, its stiffness in the study's
+/// unit (`k` N/rad per unit).
+fn rbf_answer(
+    st: &Study,
+    net: &Rbf,
+    fit: RbfFit,
+    t: &crate::study::Target,
+    bounds: crate::study::inverse::MapBounds,
+    (reference, k): ((f64, f64), f64),
+) -> RbfAnswer {
+    let p = net.predict(t.value);
+    // An answer no tyre has is no car to simulate: its "Er" would be
+    // reported as the network's answer re-simulated.
+    let no_tyre = st.no_tyre_has(p[0], p[1]);
+    let e = match no_tyre {
+        Some(_) => None,
+        None => Some(st.er(p[0], p[1])).filter(|e| e.is_finite()),
+    };
+    let refused_for = rbf_verdict::refusals((p[0], p[1]), bounds, no_tyre.is_some(), e, t);
+    RbfAnswer {
+        k_front: p[0] / k,
+        k_rear: p[1] / k,
+        no_tyre_has: no_tyre,
+        er_resimulated: e,
+        error_percent: e.map(|e| 100.0 * (e - t.value) / t.value),
+        trained_er: net.trained_range(),
+        distance_to_reference: distance((p[0], p[1]), reference),
+        fit,
+        status: rbf_verdict::status(&refused_for),
+        refused_for,
+    }
+}
+
 /// The inverse queries on the map: each target's region with the
 /// constraints, and for Er its curve, the best combination on it and the
 /// network's answer.
@@ -419,30 +465,14 @@ fn answer(
                     at_map_edge: b.edge,
                 }
             });
-        let rbf = net.filter(|_| t.metric == Metric::Er).map(|(net, fit)| {
-            let p = net.predict(t.value);
-            // An answer no tyre has is no car to simulate: its "Er" would
-            // be reported as the network's answer re-simulated.
-            let no_tyre = st.no_tyre_has(p[0], p[1]);
-            let e = match no_tyre {
-                Some(_) => None,
-                None => Some(st.er(p[0], p[1])).filter(|e| e.is_finite()),
-            };
-            RbfAnswer {
-                k_front: p[0] / k,
-                k_rear: p[1] / k,
-                no_tyre_has: no_tyre,
-                er_resimulated: e,
-                error_percent: e.map(|e| 100.0 * (e - t.value) / t.value),
-                trained_er: net.trained_range(),
-                distance_to_reference: distance((p[0], p[1]), reference),
-                fit,
-            }
-        });
+        let rbf = net
+            .filter(|_| t.metric == Metric::Er)
+            .map(|(net, fit)| rbf_answer(st, net, fit, &t, bounds, (reference, k)));
         let curve = CurveAnswer {
             curve: curve.iter().map(per_unit).collect(),
             best,
             rbf,
+            map_reach: MapReach::of(map, t.metric, t.value, unit),
         };
         targets.push(TargetReport {
             metric: t.metric,

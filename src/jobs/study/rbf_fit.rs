@@ -74,7 +74,7 @@ impl RbfReport {
             None => "their re-simulated Er (no pair is held out to validate it)".into(),
         };
         Some(format!(
-            "the network is a regression, not an interpolant: its condition number is above {limit:.0e} (where its solve drops a direction as rounding){digits}, so the solve kept {} of its {} directions and the network passes up to {:.3} {u} from its own pairs, where Wang & Liang's newrbe passes through them; its answers are a smooth fit's and as good as {judged} (an interpolant need not validate better); {spread}",
+            "the network is a regression, not an interpolant: its condition number is above {limit:.0e} (where its solve drops a direction as rounding){digits}, so the solve kept {} of its {} directions and the network passes up to {:.3} {u} from its own pairs, where Wang & Liang's newrbe passes through them; its answers, within its pairs' Er and the map, are a smooth fit's and as good as {judged} (an interpolant need not validate better); {spread}",
             self.directions_kept, self.training_pairs, self.largest_training_misfit
         ))
     }

@@ -27,7 +27,7 @@
 //!
 //! Units: steer rad, yaw rate rad/s, speed m/s, curvature 1/m, t s.
 
-use super::{median, quantile, STUCK_CONTEXT};
+use super::STUCK_CONTEXT;
 use crate::measured::MeasuredRun;
 
 /// Share of the steer's non-zero differences within [`QUANTUM_TOLERANCE`]
@@ -56,6 +56,14 @@ const MIN_GAIN_SAMPLES: usize = 20;
 /// curvature must leave the held steer's band to say the car moved.
 const STATE_SPREADS: f64 = 3.0;
 
+/// The middle value (upper median) of `v`, sorted in place; 0 when empty
+/// (computed here as `glitches.rs` does, which asks this file and so
+/// cannot be asked back).
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied().unwrap_or(0.0)
+}
+
 /// The quantum of a channel `x`: the smallest value that at least
 /// [`QUANTUM_SHARE`] of its non-zero differences lie within
 /// [`QUANTUM_TOLERANCE`] of (their median), or 0 where none does.
@@ -76,7 +84,7 @@ pub(super) fn quantum(x: &[f64]) -> f64 {
             hi += 1;
         }
         if (hi - k) as f64 >= need {
-            return median(&mut d[k..hi].to_vec());
+            return median(&mut d[k..hi]);
         }
     }
     0.0
@@ -102,7 +110,12 @@ impl SteerScale {
         let q = quantum(d);
         let mut a: Vec<f64> = d.iter().map(|v| v.abs()).collect();
         a.sort_by(f64::total_cmp);
-        let least = (GAIN_STEER_SHARE * quantile(&a, 0.99).unwrap_or(0.0)).max(10.0 * q);
+        // The nearest-rank 99th percentile.
+        let p99 = a
+            .len()
+            .checked_sub(1)
+            .map_or(0.0, |last| a[(last as f64 * 0.99).round() as usize]);
+        let least = (GAIN_STEER_SHARE * p99).max(10.0 * q);
         let mut ratios: Vec<f64> = (0..d.len())
             .filter(|&k| !slow[k] && d[k].abs() >= least && d[k] != 0.0 && u[k] > 0.0)
             .map(|k| r[k] / (u[k] * d[k]))

@@ -28,34 +28,16 @@ use super::Scored;
 use crate::diagnose::effects::EffectKind;
 use serde::Serialize;
 
-pub use crate::diagnose::report::worth::{worth, Worth};
-
-/// The expected separation, in units of its own uncertainty, from which
-/// one run separates a pair firmly: below it a normal spread puts 0 within
-/// 2 σ, and one run favours the wrong candidate with a chance above 2.3 %.
-pub const FIRM_SIGMAS: f64 = 2.0;
-
-/// A recommended manoeuvre whose expected separation lies within
-/// [`FIRM_SIGMAS`] of its own uncertainty.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Weak {
-    /// Its expected separation over its uncertainty.
-    pub sigmas: f64,
-    /// The chance that one run measures 0 or less (no separation, or the
-    /// wrong candidate favoured), on a normal spread: Φ(−sigmas).
-    pub wrong: f64,
-}
+// The weak rule lives beside the worth, where the diagnosis's advice reads
+// it too (it cannot import the design).
+pub use crate::diagnose::report::worth::{worth, Weak, Worth, FIRM_SIGMAS};
 
 impl Scored {
     /// Whether it is recommended ([`Worth::Separates`]) but weakly: its
     /// expected separation within [`FIRM_SIGMAS`] of its uncertainty.
     pub fn weak(&self) -> Option<Weak> {
         let (e, u) = self.expected.zip(self.uncertainty)?;
-        let sigmas = e / u;
-        (self.worth == Some(Worth::Separates) && sigmas < FIRM_SIGMAS).then(|| Weak {
-            sigmas,
-            wrong: 0.5 * libm::erfc(sigmas / std::f64::consts::SQRT_2),
-        })
+        crate::diagnose::report::worth::weak(self.worth?, e, u)
     }
 }
 

@@ -14,14 +14,23 @@
 //! differ most. It is advised only where `handling design` would
 //! recommend it ([`super::worth::worth`]: the separation a driven run is
 //! expected to measure lies beyond its uncertainty and is at least the
-//! campaign's own); else the words say why it is not worth driving.
+//! campaign's own); else the words say why it is not worth driving. One
+//! recommended within 2 of its own uncertainty is said to be weak, in the
+//! design's words ([`super::worth::weak`]: Putnam's sweep, 277.9 ± 268.9,
+//! was advised as if one run would measure it), and counts as no firm run:
+//! the remedy (runs nearer the limit, tyres with a limit) is said beside
+//! it. A run the design calls already told apart ([`Worth::AlreadyToldApart`]:
+//! its evidence model finds the campaign's runs enough) is judged here by
+//! its expected separation alone, as the diagnosis that calls the pair
+//! confounded has not told them apart: it was advised whatever its
+//! uncertainty.
 //!
 //! Units: separations D in noise floors (`crate::design::separation`);
 //! speeds m/s; a channel's difference in its own unit (rad/s, m/s², rad).
 
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::report::worth::Worth;
+use crate::diagnose::report::worth::{weak, worth, Worth};
 use crate::diagnose::report::BaseReport;
 use crate::tyre::TyreModel;
 use serde::Serialize;
@@ -176,24 +185,40 @@ fn pair_words(p: &PairRun) -> String {
         "a driven run is expected to measure {:.1} ± {:.1}",
         r.expected, r.uncertainty
     );
-    match r.worth {
-        Worth::Separates | Worth::AlreadyToldApart => format!("{a} from {b}: {run}; {measured}"),
+    match judged(r) {
+        Worth::Separates => match weak(Worth::Separates, r.expected, r.uncertainty) {
+            Some(w) => format!("{a} from {b}: {run}; {measured}; {}", w.words()),
+            None => format!("{a} from {b}: {run}; {measured}"),
+        },
         Worth::WithinUncertainty => format!(
             "{a} from {b}: none of the {} is worth driving to separate them; the best, {run}, but {measured}: within its own uncertainty, one run may show no separation or favour the wrong candidate",
             p.replayed
         ),
-        Worth::BelowCampaign => format!(
+        // (`judged` gives no AlreadyToldApart.)
+        Worth::BelowCampaign | Worth::AlreadyToldApart => format!(
             "{a} from {b}: none of the {} is worth driving to separate them; the best, {run}, but {measured}, less than the campaign's own runs separate them by (D = {:.1})",
             p.replayed, r.campaign_separation
         ),
     }
 }
 
-/// Whether pair `p` has a manoeuvre worth driving.
+/// The worth `r`'s words follow: the design's, except that a run it calls
+/// already told apart is judged by its expected separation, its
+/// uncertainty and the campaign's own separation ([`worth`]) — the
+/// diagnosis advising it calls the pair confounded.
+fn judged(r: &LackingRun) -> Worth {
+    match r.worth {
+        Worth::AlreadyToldApart => worth(r.expected, r.uncertainty, r.campaign_separation),
+        w => w,
+    }
+}
+
+/// Whether pair `p` has a manoeuvre firmly worth driving: recommended,
+/// and not weakly ([`weak`]).
 fn has_run(p: &PairRun) -> bool {
-    p.best
-        .as_ref()
-        .is_some_and(|r| matches!(r.worth, Worth::Separates | Worth::AlreadyToldApart))
+    p.best.as_ref().is_some_and(|r| {
+        judged(r) == Worth::Separates && weak(Worth::Separates, r.expected, r.uncertainty).is_none()
+    })
 }
 
 impl SeparatingRuns {
@@ -281,5 +306,48 @@ mod tests {
         let remedy = "tyres with a friction limit (rig data)";
         assert!(!runs(Worth::Separates).words().contains(remedy));
         assert!(runs(Worth::BelowCampaign).words().contains(remedy));
+    }
+
+    /// `pair(worth)` expected to measure `expected ± uncertainty`.
+    fn expecting(worth: Worth, expected: f64, uncertainty: f64) -> PairRun {
+        let mut p = pair(worth);
+        let r = p.best.as_mut().unwrap();
+        (r.expected, r.uncertainty) = (expected, uncertainty);
+        p
+    }
+
+    /// Putnam's sweep, recommended at 277.9 ± 268.9, is advised as the
+    /// design words it, weak, with the chance one run measures nothing
+    /// (Φ(−1.03) = 15 %), and is no firm run: the remedy is said too. A run
+    /// the design calls already told apart is judged by its numbers: at
+    /// 3.1 ± 9.5 not worth driving (it was advised as the one to drive).
+    #[test]
+    fn a_weak_run_is_said_weak_and_one_told_apart_is_judged_by_its_numbers() {
+        let putnam = expecting(Worth::Separates, 277.9, 268.9);
+        let said = pair_words(&putnam);
+        assert!(
+            said.ends_with("; a driven run is expected to measure 277.9 ± 268.9; weak: expected at 1.03 times its own uncertainty, below 2, so one run lands at or below 0 (no separation, or the wrong candidate favoured) with a chance of 15 % on a normal spread: it separates them as a series, not in one run"),
+            "{said}"
+        );
+        let runs = SeparatingRuns {
+            no_limit: NoLimit::FrictionHeld,
+            pairs: vec![putnam],
+        };
+        assert!(
+            runs.words().ends_with("not in one run; runs nearer the limit let the diagnosis identify the peak friction a test at the limit needs"),
+            "{}",
+            runs.words()
+        );
+        // The firm 39.4 ± 10.5 (3.75 σ) is not weak.
+        assert!(!pair_words(&pair(Worth::Separates)).contains("weak"));
+        let told = pair_words(&expecting(Worth::AlreadyToldApart, 3.1, 9.5));
+        assert!(
+            told.contains("none of the 12 is worth driving")
+                && told.ends_with("within its own uncertainty, one run may show no separation or favour the wrong candidate"),
+            "{told}"
+        );
+        // 39.4 ± 10.5 against the campaign's 63.0: below it.
+        let told = pair_words(&pair(Worth::AlreadyToldApart));
+        assert!(told.ends_with("(D = 63.0)"), "{told}");
     }
 }

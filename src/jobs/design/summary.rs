@@ -4,9 +4,7 @@
 //! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
-use crate::design::{
-    DiagnosisReads, Measured, Recommendation, SameRun, Scored, SetDesign, Worth, FIRM_SIGMAS,
-};
+use crate::design::{DiagnosisReads, Measured, Recommendation, SameRun, Scored, SetDesign, Worth};
 use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
@@ -241,15 +239,11 @@ fn measured_lines(m: &Measured) -> Vec<String> {
 }
 
 /// Whether a manoeuvre is recommended, in words after its expectation;
-/// one recommended within [`FIRM_SIGMAS`] of its uncertainty is said to be
+/// one recommended within [`crate::design::FIRM_SIGMAS`] of its uncertainty is said to be
 /// weak, with its ratio and the chance one run misleads.
 fn worth_words(s: &Scored) -> String {
     if let Some(w) = s.weak() {
-        return format!(
-            "; weak: expected at {:.2} times its own uncertainty, below {FIRM_SIGMAS}, so one run lands at or below 0 (no separation, or the wrong candidate favoured) with a chance of {:.0} % on a normal spread: it separates them as a series, not in one run",
-            w.sigmas,
-            100.0 * w.wrong
-        );
+        return format!("; {}", w.words());
     }
     match s.worth {
         Some(Worth::Separates) => "; recommended",

@@ -9,6 +9,7 @@ use super::moves::{beyond_resolution, Moves};
 use super::repair::repair;
 use super::report::{CleaningReport, Glitch, GlitchKind, RunChannel, Treatment};
 use super::settled::settled_hold;
+use super::steer_hold::{stuck_steer, SteerScale};
 use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SEARCHED, SPIKE_MADS, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
 
@@ -414,8 +415,16 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
         // value and the record began turned (a 7 Hz log's 0.1° first ramp
         // sample held from the start, and its yaw-rate gain read 53.96 where the
         // closed form is 5.409).
+        // A steer's exact hold is a stuck sensor only where the car or the
+        // steer's own trend says so (`steer_hold.rs`).
         if ch == RunChannel::Steer {
             found.retain(|f| f.kind != GlitchKind::ZeroRead || f.start > 0);
+            if found.iter().any(|f| f.kind == GlitchKind::Stuck) {
+                let s = SteerScale::of(run, &slow);
+                found.retain(|f| {
+                    f.kind != GlitchKind::Stuck || stuck_steer(run, &s, f.start, f.len)
+                });
+            }
         }
         // A response's hold that is its settled value, the other responses
         // steady with it, is no stuck sensor (`settled.rs`).

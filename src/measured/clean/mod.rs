@@ -42,7 +42,11 @@
 //!     count, and both then hold for as long as the response stays within
 //!     a step — no stuck sensor; nor is a response channel's hold that
 //!     it approached smoothly while the other responses are steady over
-//!     it (`settled.rs`: a noise-free step logged at 20 Hz);
+//!     it (`settled.rs`: a noise-free step logged at 20 Hz); nor is a
+//!     steer's hold whose repair stays within the steer's quantum, or
+//!     over which neither the car's curvature leaves what the held level
+//!     explains nor the steer's trend would have crossed three quanta
+//!     (`steer_hold.rs`: a quantised steer held in a steady corner);
 //!   - the noise of a quantised channel (more than 1 % of its successive
 //!     samples equal) is at least its step/√12, so `σ_d` is at least
 //!     step/√6: a sample one count from its neighbours is no spike.
@@ -70,7 +74,8 @@
 //! Layout: this file holds the thresholds and the settings; `report.rs` the
 //! report types; `glitches.rs` the detection and treatment of glitches in
 //! one channel; `gaps.rs` the time gaps; `holes.rs` the holes in time shorter than a gap
-//! (rows dropped), `missing.rs` how they are reported; `pieces.rs` the slow spans and pieces, and the
+//! (rows dropped), `missing.rs` how they are reported; `steer_hold.rs` whether a steer's hold is
+//! stuck; `pieces.rs` the slow spans and pieces, and the
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
 mod cut_by_gap;
@@ -87,6 +92,7 @@ mod report;
 mod settled;
 mod slow;
 mod speed_dropout;
+mod steer_hold;
 #[cfg(test)]
 mod test_signals;
 

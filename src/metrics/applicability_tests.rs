@@ -35,6 +35,9 @@ pub(crate) fn moderate() -> StepMetrics {
         ay_response_time_spread: None,
         yaw_rate_gain_spread: None,
         yaw_rate_peak_unmeasured: false,
+        steer_logged_late: None,
+        yaw_rate_window_moving: false,
+        ay_window_moving: false,
     }
 }
 

@@ -244,6 +244,9 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         ay_response_time_spread: None,
         yaw_rate_gain_spread: None,
         yaw_rate_peak_unmeasured: false,
+        steer_logged_late: None,
+        yaw_rate_window_moving: false,
+        ay_window_moving: false,
     })
 }
 

@@ -523,6 +523,7 @@ pub fn measured_step_metrics(
         largest_sideslip,
         peak_speed::at_peak_and_steady(&piece, &metrics, settings),
     ));
+    warnings.extend(metrics.steer_logged_late.map(super::steer_lead_said));
     warnings.extend(measured_speed_varies(&piece, &metrics, settings));
     warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
     warnings.extend(noise_spread::said(&metrics));

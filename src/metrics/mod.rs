@@ -72,8 +72,10 @@ mod peak;
 mod pulse;
 mod settling;
 mod steady_inside;
+mod steer_lead;
 pub(crate) use noise::HeldEvery;
 use noise::{noise_deviation, noise_gain};
+pub(crate) use steer_lead::said as steer_lead_said;
 pub mod simulated;
 mod step_shape;
 mod variance_said;
@@ -323,6 +325,26 @@ pub struct StepMetrics {
     /// overshoot and TB withheld, not below the threshold.
     #[serde(default)]
     pub yaw_rate_peak_unmeasured: bool,
+    /// How long before the steer leaves its initial band the yaw rate
+    /// leaves its own, s (`steer_lead.rs`): a car's yaw rate never moves
+    /// first, so the steer was logged that much late against it, and the
+    /// response times and total variances are read against a misaligned
+    /// steer. `None` where the yaw rate moves after the steer (or the noise
+    /// cannot tell).
+    #[serde(default)]
+    pub steer_logged_late: Option<f64>,
+    /// The yaw rate still moves in its steady window (not settled, or
+    /// drifting towards a steady value): its response time, peak time and
+    /// overshoot are read against the mean of a moving window, and no
+    /// maximum standing out is no bound on the overshoot (the steady value
+    /// it would stand above is not in the record).
+    #[serde(default)]
+    pub yaw_rate_window_moving: bool,
+    /// The lateral acceleration still moves in its steady window, as
+    /// `yaw_rate_window_moving` says of the yaw rate: its response time is
+    /// read against the mean of a moving window.
+    #[serde(default)]
+    pub ay_window_moving: bool,
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).

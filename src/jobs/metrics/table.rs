@@ -54,6 +54,44 @@ fn ay_response_cell(m: &StepMetrics) -> String {
     }
 }
 
+/// The mark of a metric read against a steer logged late against the
+/// yaw rate (explained by the `steer_lead` warning and [`misaligned_note`]).
+const MISALIGNED_MARK: &str = "  (steer misaligned)";
+
+/// The mark of a metric read against the mean of a steady window the yaw
+/// rate still moves in (explained by [`moving_note`]).
+const MOVING_MARK: &str = "  (moving window)";
+
+/// One table line: `label` padded, `value` right-aligned, `unit` and the
+/// marks whose flag is set.
+fn row(label: &str, value: String, unit: &str, marks: &[(bool, &str)]) -> String {
+    let said: String = marks
+        .iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, m)| *m)
+        .collect();
+    format!("  {label:<25}{value:>10} {unit}{said}")
+}
+
+/// The overshoot's cell: measured, `—` where it is withheld, beyond a
+/// spin's, above a level the yaw rate drifts past (`drifting`) or read
+/// against a window the yaw rate still moves in (no steady value to bound
+/// it by: a warning or a note says why), or below the threshold the run
+/// resolves (the line after the table says how far), not a measured 0.
+fn overshoot_cell(m: &StepMetrics, drifting: bool) -> String {
+    match m.yaw_rate_overshoot {
+        Some(percent) => format!("{percent:.2}"),
+        None if drifting
+            || m.yaw_rate_window_moving
+            || m.yaw_rate_peak_unmeasured
+            || m.overshoot_unresolved() =>
+        {
+            "—".into()
+        }
+        None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
+    }
+}
+
 /// The metric table: one line per metric, `—` where a response lacks one,
 /// and the notes on filtering and overshoot (a response that has not
 /// settled is a warning of the report: [`StepMetrics::settling_warning`]).
@@ -62,80 +100,129 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt = |v: Option<f64>, scale: f64| {
         v.map_or("—".to_string(), |x| crate::format::fixed(x * scale, 4))
     };
+    let fixed = |v: f64| crate::format::fixed(v, 4);
     let (yaw, ay) = unsteady_channels(m);
-    let mark = |unsteady: bool| if unsteady { UNSTEADY_MARK } else { "" };
+    let late = m.steer_logged_late.is_some();
+    let moving = m.yaw_rate_window_moving && !yaw;
+    let ay_moving = m.ay_window_moving && !ay && m.ay_response_time.is_some();
+    let (n, s) = (UNSTEADY_MARK, MISALIGNED_MARK);
     let mut out = vec![
-        format!(
-            "  steer step               {:>10.4} deg",
-            m.steer_step.to_degrees()
+        row(
+            "steer step",
+            format!("{:.4}", m.steer_step.to_degrees()),
+            "deg",
+            &[],
         ),
-        format!(
-            "  yaw-rate response time   {:>10.4} s{}",
-            m.yaw_rate_response_time,
-            mark(yaw)
+        row(
+            "yaw-rate response time",
+            format!("{:.4}", m.yaw_rate_response_time),
+            "s",
+            &[(yaw, n), (moving, MOVING_MARK), (late, s)],
         ),
-        format!(
-            "  yaw-rate peak time       {:>10} s",
-            opt(m.yaw_rate_peak_time, 1.0)
+        row(
+            "yaw-rate peak time",
+            opt(m.yaw_rate_peak_time, 1.0),
+            "s",
+            &[(moving && m.yaw_rate_peak_time.is_some(), MOVING_MARK)],
         ),
-        // Without a peak the overshoot is below what the run resolves (the
-        // line after the table says how far), not a measured 0.
-        format!(
-            "  yaw-rate overshoot       {:>10} %{}",
-            match m.yaw_rate_overshoot {
-                Some(percent) => format!("{percent:.2}"),
-                // Withheld, beyond a spin's, or above a level the yaw rate
-                // drifts past: a warning or the note says why.
-                None if yaw || m.yaw_rate_peak_unmeasured || m.overshoot_unresolved() => {
-                    "—".into()
-                }
-                None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
-            },
-            mark(yaw && m.yaw_rate_overshoot.is_some())
+        row(
+            "yaw-rate overshoot",
+            overshoot_cell(m, yaw),
+            "%",
+            &[
+                (yaw && m.yaw_rate_overshoot.is_some(), n),
+                (moving && m.yaw_rate_overshoot.is_some(), MOVING_MARK),
+            ],
         ),
-        format!(
-            "  ay response time         {:>10} s{}",
+        row(
+            "ay response time",
             ay_response_cell(m),
-            mark(ay && m.ay_response_time.is_some())
+            "s",
+            &[
+                (ay && m.ay_response_time.is_some(), n),
+                (ay_moving, MOVING_MARK),
+                (late, s),
+            ],
         ),
-        format!(
-            "  yaw-rate gain            {:>10} 1/s{}",
-            crate::format::fixed(m.yaw_rate_gain, 4),
-            mark(yaw)
-        ),
-        format!(
-            "  steady ay                {:>10} m/s²{}",
+        row("yaw-rate gain", fixed(m.yaw_rate_gain), "1/s", &[(yaw, n)]),
+        row(
+            "steady ay",
             opt(m.ay_steady, 1.0),
-            mark(ay && m.ay_steady.is_some())
+            "m/s²",
+            &[(ay && m.ay_steady.is_some(), n)],
         ),
-        format!(
-            "  steady sideslip          {:>10} deg",
-            opt(m.beta_steady, 180.0 / std::f64::consts::PI)
+        row(
+            "steady sideslip",
+            opt(m.beta_steady, 180.0 / std::f64::consts::PI),
+            "deg",
+            &[],
         ),
-        format!(
-            "  TB                       {:>10} s·deg{}",
-            opt(m.tb, 1.0),
-            mark(yaw && m.tb.is_some())
-        ),
-        format!(
-            "  E_r (yaw rate)           {:>10} s{}",
-            crate::format::fixed(m.yaw_rate_total_variance, 4),
-            mark(yaw)
-        ),
-        format!(
-            "  E_ay                     {:>10} s{}",
-            opt(m.ay_total_variance, 1.0),
-            mark(ay && m.ay_total_variance.is_some())
-        ),
-        format!(
-            "  Er                       {:>10} s{}",
-            opt(m.er, 1.0),
-            mark((yaw || ay) && m.er.is_some())
-        ),
+        row("TB", opt(m.tb, 1.0), "s·deg", &[(yaw && m.tb.is_some(), n)]),
     ];
+    out.extend(variance_rows(m, (yaw, ay)));
     out.extend(unsteady_note(yaw, ay));
-    out.extend(notes_after(m, yaw));
+    out.extend((moving || ay_moving).then(|| moving_note(moving, ay_moving)));
+    out.extend(m.steer_logged_late.map(misaligned_note));
+    out.extend(notes_after(m, yaw || moving));
     out
+}
+
+/// The total variances' lines: marked where the yaw rate or the lateral
+/// acceleration drifts without a steady state (`unsteady`), and where the
+/// steer was logged late against the responses.
+fn variance_rows(m: &StepMetrics, (yaw, ay): (bool, bool)) -> Vec<String> {
+    let opt = |v: Option<f64>| v.map_or("—".to_string(), |x| crate::format::fixed(x, 4));
+    let (n, s, late) = (
+        UNSTEADY_MARK,
+        MISALIGNED_MARK,
+        m.steer_logged_late.is_some(),
+    );
+    vec![
+        row(
+            "E_r (yaw rate)",
+            crate::format::fixed(m.yaw_rate_total_variance, 4),
+            "s",
+            &[(yaw, n), (late, s)],
+        ),
+        row(
+            "E_ay",
+            opt(m.ay_total_variance),
+            "s",
+            &[(ay && m.ay_total_variance.is_some(), n), (late, s)],
+        ),
+        row(
+            "Er",
+            opt(m.er),
+            "s",
+            &[((yaw || ay) && m.er.is_some(), n), (late, s)],
+        ),
+    ]
+}
+
+/// The line after the table saying what "(moving window)" marks: the
+/// yaw rate's metrics (`yaw`) and the ay response time (`ay`).
+fn moving_note(yaw: bool, ay: bool) -> String {
+    let which = match (yaw, ay) {
+        (true, true) => "the yaw rate and the lateral acceleration still move",
+        (true, false) => "the yaw rate still moves",
+        _ => "the lateral acceleration still moves",
+    };
+    let overshoot = match yaw {
+        true => "; no overshoot is measured where no maximum stands out above that mean (the steady value it would be bounded by is not in the record, and the overshoot may be larger), and one found is read against that mean",
+        false => "",
+    };
+    format!(
+        "  moving window: {which} in the steady window (see the warning), so the metrics marked \"(moving window)\" are read against the mean of a window the response passes through, not a steady state it holds{overshoot}: a record held until the response settles reads them"
+    )
+}
+
+/// The line after the table saying what "(steer misaligned)" marks, for
+/// a steer logged `late` s late against the yaw rate.
+fn misaligned_note(late: f64) -> String {
+    format!(
+        "  steer misaligned: the yaw rate moves {} s before the steer does (see the warning), so the metrics marked \"(steer misaligned)\" are timed from a steer logged late against the responses",
+        crate::format::readable(late, 3)
+    )
 }
 
 /// The notes after the table: the low-pass the metrics were read

@@ -127,13 +127,16 @@ pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
 /// The warning of a steer written on a grid coarse against its step: a
 /// steer step of a few logger counts is known only within ±q/2, and the
 /// yaw-rate gain (yaw rate per steer) with it. A steer is a logger's grid
-/// only where every sample is a whole number of steps q from the first
-/// and its changes are not one stretch of equal ones: a noise-free ramp
-/// (or a jump) sampled by a simulation changes by the same amount at every
+/// only where its grid shows in held levels or a dither
+/// ([`held_resolution`](crate::metrics::noise)), not in a ramp's few
+/// samples, every sample is a whole number of steps q from the first, and
+/// its changes are not one stretch of equal ones: a noise-free ramp (or a
+/// jump) sampled by a simulation changes by the same amount at every
 /// sample of its rise, each a multiple of that change, and is no grid.
 pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<String> {
     let x = &piece.steer;
-    let q = resolution(x)?;
+    // Read from held levels, not the ramp's few samples (`noise.rs`).
+    let q = crate::metrics::noise::held_resolution(x)?;
     let step = m.steer_step.abs();
     let share = q / 12f64.sqrt() / step;
     if !(share > COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {

@@ -307,6 +307,21 @@ pub enum OptionsError {
         /// The model's parameters (every block it fits).
         known: Vec<String>,
     },
+    /// `--hold` of a name that is none of the chosen model's but another
+    /// model's: which, and the `--model` that fits it.
+    #[error(
+        "--hold `{given}`: {given} is a parameter of the {owner} model (--model {owner}), not of {model}, the model chosen: hold one of {model}'s, e.g. --hold {example}"
+    )]
+    HoldOfOtherModel {
+        /// The name given.
+        given: String,
+        /// The model it belongs to (its `--model` value).
+        owner: String,
+        /// The model chosen.
+        model: String,
+        /// A hold of the chosen model's own, `NAME=VALUE`.
+        example: String,
+    },
     /// A `--hold` that is not `NAME=VALUE` with a number.
     #[error("--hold `{given}`: expected NAME=VALUE with a number, e.g. {example}")]
     HoldSyntax {

@@ -32,7 +32,7 @@ pub fn parse_hold(s: &str, model: super::IdentifyModel) -> Result<(String, f64),
 
 /// A `--hold` of `model` as an example: its first fitted parameter at its
 /// start value at 4000 N, or `PKY4=2` for the staged Magic Formula fits.
-fn hold_example(model: super::IdentifyModel) -> String {
+pub(super) fn hold_example(model: super::IdentifyModel) -> String {
     let start = model
         .swarm_model()
         .and_then(|m| crate::identify::start_tyre_of(m, 4000.0).ok());

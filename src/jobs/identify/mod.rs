@@ -37,6 +37,7 @@ mod figures;
 mod flat_alpha;
 mod force_scale;
 mod further;
+mod hold_owner;
 mod hold_rules;
 mod holds;
 pub use holds::{parse_hold, Held};
@@ -190,6 +191,22 @@ impl Options {
                     second: *v,
                 }
                 .into());
+            }
+        }
+        // A name of another model's, said so (`hold_owner.rs`).
+        for (name, _) in &self.hold {
+            let own = self.model.swarm_model().map_or_else(
+                || MfCoefficients::NAMES.contains(&name.as_str()),
+                |m| {
+                    start_tyre_of(m, holds::CHECK_LOAD)
+                        .is_ok_and(|t| crate::identify::fitted_names(&t).contains(name))
+                },
+            );
+            if let Some(e) = (!own)
+                .then(|| hold_owner::of_another_model(name, self.model))
+                .flatten()
+            {
+                return Err(e.into());
             }
         }
         let Some(model) = self.model.swarm_model() else {

@@ -1,0 +1,43 @@
+//! A `--hold` name that belongs to another model than the one chosen:
+//! said with the model it belongs to and the `--model` that fits it, and
+//! an example of the chosen model's own (`--model mf62 --hold a1=-22`
+//! had said only "not one of the 177 known", a1 being PAC89's). Every
+//! model `identify` fits is asked, in `--model`'s order: the swarm
+//! models' fitted parameters (every block), the staged Magic Formula
+//! fits' `.tir` coefficients. The example is `holds.rs`'s, as a malformed
+//! `--hold` gives it.
+
+use super::choices::IdentifyModel;
+use super::holds::CHECK_LOAD;
+use crate::error::OptionsError;
+use crate::identify::{fitted_names, start_tyre_of};
+use crate::tyre::mf::MfCoefficients;
+
+/// The names `--hold` takes for `model`.
+fn names_of(model: IdentifyModel) -> Vec<String> {
+    match model.swarm_model() {
+        Some(m) => start_tyre_of(m, CHECK_LOAD)
+            .map(|t| fitted_names(&t))
+            .unwrap_or_default(),
+        None => MfCoefficients::NAMES
+            .iter()
+            .map(|n| n.to_string())
+            .collect(),
+    }
+}
+
+/// The refusal of `--hold name` for `chosen` where `name` is none of its
+/// own but a parameter of another model `identify` fits; `None` where no
+/// model has it (the caller's own refusal then lists the known names).
+pub(super) fn of_another_model(name: &str, chosen: IdentifyModel) -> Option<OptionsError> {
+    let owner = IdentifyModel::all()
+        .into_iter()
+        .filter(|m| *m != chosen)
+        .find(|m| names_of(*m).iter().any(|n| n == name))?;
+    Some(OptionsError::HoldOfOtherModel {
+        given: name.to_string(),
+        owner: owner.as_str().to_string(),
+        model: chosen.as_str().to_string(),
+        example: super::holds::hold_example(chosen),
+    })
+}

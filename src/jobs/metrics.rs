@@ -48,6 +48,9 @@ pub struct MeasuredMetricsReport {
     /// The metrics.
     #[serde(flatten)]
     pub metrics: StepMetrics,
+    /// The metrics not read as the standards define them, and why (the
+    /// table's marks: [`StepMetrics::marks`]).
+    pub marks: crate::metrics::Marks,
     /// The piece measured.
     pub piece: String,
     /// Time for the steer to go from 10 % to 90 % of its step, s.
@@ -146,6 +149,7 @@ pub fn run_with_degrees(
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,
+        marks: m.metrics.marks(),
         metrics: m.metrics,
         piece: m.piece,
         steer_rise_time: m.steer_rise_time,

@@ -56,6 +56,7 @@ mod crossing_spread;
 mod divergence;
 mod filter;
 mod held;
+pub mod marks;
 mod variance;
 pub(crate) use filter::{below_filter_limit, zero_phase_low_pass};
 pub(crate) use held::{step_metrics, step_metrics_held};
@@ -82,6 +83,7 @@ mod variance_said;
 mod yaw_per_neutral;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
+pub use marks::{Mark, MarkedMetric, Marks};
 pub use peak::{DRAWS as PEAK_DRAWS, SEED as PEAK_SEED};
 pub use simulated::{simulated_step_metrics, DenseRecord};
 

@@ -254,7 +254,9 @@ pub fn coarse_said(m: &StepMetrics, dt: f64, steer_rise: f64) -> Vec<String> {
         ("ay", m.ay_response_time),
     ];
     for (name, t) in times {
-        let Some(t) = t.filter(|t| *t < RESPONSE_INTERVALS * dt) else {
+        // A time at or below 0 is no lag to resolve: the table marks it
+        // "(before the steer)" and the noise or the lead is said.
+        let Some(t) = t.filter(|t| *t > 0.0 && *t < RESPONSE_INTERVALS * dt) else {
             continue;
         };
         said.push(format!(

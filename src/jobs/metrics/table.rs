@@ -5,11 +5,7 @@
 //! one, the metrics read against a steady value the run never reaches
 //! marked, and the notes on filtering and overshoot after it.
 
-use crate::metrics::StepMetrics;
-
-/// The mark of a metric read against a steady value its channel never
-/// reaches (explained by [`unsteady_note`]).
-const UNSTEADY_MARK: &str = "  (no steady state)";
+use crate::metrics::{Mark, MarkedMetric, Marks, StepMetrics};
 
 /// Whether the yaw rate and the lateral acceleration drift without
 /// slowing across the steady window: no steady state is in the record, and
@@ -54,22 +50,10 @@ fn ay_response_cell(m: &StepMetrics) -> String {
     }
 }
 
-/// The mark of a metric read against a steer logged late against the
-/// yaw rate (explained by the `steer_lead` warning and [`misaligned_note`]).
-const MISALIGNED_MARK: &str = "  (steer misaligned)";
-
-/// The mark of a metric read against the mean of a steady window the yaw
-/// rate still moves in (explained by [`moving_note`]).
-const MOVING_MARK: &str = "  (moving window)";
-
 /// One table line: `label` padded, `value` right-aligned, `unit` and the
-/// marks whose flag is set.
-fn row(label: &str, value: String, unit: &str, marks: &[(bool, &str)]) -> String {
-    let said: String = marks
-        .iter()
-        .filter(|(on, _)| *on)
-        .map(|(_, m)| *m)
-        .collect();
+/// metric's marks ([`StepMetrics::marks`]: the JSON's `marks` alike).
+fn row(label: &str, value: String, unit: &str, marks: &[Mark]) -> String {
+    let said: String = marks.iter().map(|m| m.text()).collect();
     format!("  {label:<25}{value:>10} {unit}{said}")
 }
 
@@ -102,10 +86,11 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     };
     let fixed = |v: f64| crate::format::fixed(v, 4);
     let (yaw, ay) = unsteady_channels(m);
-    let late = m.steer_logged_late.is_some();
     let moving = m.yaw_rate_window_moving && !yaw;
     let ay_moving = m.ay_window_moving && !ay && m.ay_response_time.is_some();
-    let (n, s) = (UNSTEADY_MARK, MISALIGNED_MARK);
+    let marks = m.marks();
+    let of = |metric: MarkedMetric| marks.get(&metric).map_or(&[][..], |v| v.as_slice());
+    use MarkedMetric as M;
     let mut out = vec![
         row(
             "steer step",
@@ -117,86 +102,80 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "yaw-rate response time",
             format!("{:.4}", m.yaw_rate_response_time),
             "s",
-            &[(yaw, n), (moving, MOVING_MARK), (late, s)],
+            of(M::YawRateResponseTime),
         ),
         row(
             "yaw-rate peak time",
             opt(m.yaw_rate_peak_time, 1.0),
             "s",
-            &[(moving && m.yaw_rate_peak_time.is_some(), MOVING_MARK)],
+            of(M::YawRatePeakTime),
         ),
         row(
             "yaw-rate overshoot",
             overshoot_cell(m, yaw),
             "%",
-            &[
-                (yaw && m.yaw_rate_overshoot.is_some(), n),
-                (moving && m.yaw_rate_overshoot.is_some(), MOVING_MARK),
-            ],
+            of(M::YawRateOvershoot),
         ),
         row(
             "ay response time",
             ay_response_cell(m),
             "s",
-            &[
-                (ay && m.ay_response_time.is_some(), n),
-                (ay_moving, MOVING_MARK),
-                (late, s),
-            ],
+            of(M::AyResponseTime),
         ),
-        row("yaw-rate gain", fixed(m.yaw_rate_gain), "1/s", &[(yaw, n)]),
         row(
-            "steady ay",
-            opt(m.ay_steady, 1.0),
-            "m/s²",
-            &[(ay && m.ay_steady.is_some(), n)],
+            "yaw-rate gain",
+            fixed(m.yaw_rate_gain),
+            "1/s",
+            of(M::YawRateGain),
         ),
+        row("steady ay", opt(m.ay_steady, 1.0), "m/s²", of(M::AySteady)),
         row(
             "steady sideslip",
             opt(m.beta_steady, 180.0 / std::f64::consts::PI),
             "deg",
             &[],
         ),
-        row("TB", opt(m.tb, 1.0), "s·deg", &[(yaw && m.tb.is_some(), n)]),
+        row("TB", opt(m.tb, 1.0), "s·deg", of(M::Tb)),
     ];
-    out.extend(variance_rows(m, (yaw, ay)));
+    out.extend(variance_rows(m, &marks));
     out.extend(unsteady_note(yaw, ay));
     out.extend((moving || ay_moving).then(|| moving_note(moving, ay_moving)));
     out.extend(m.steer_logged_late.map(misaligned_note));
+    out.extend(before_note(&marks));
     out.extend(notes_after(m, yaw || moving));
     out
 }
 
-/// The total variances' lines: marked where the yaw rate or the lateral
-/// acceleration drifts without a steady state (`unsteady`), and where the
-/// steer was logged late against the responses.
-fn variance_rows(m: &StepMetrics, (yaw, ay): (bool, bool)) -> Vec<String> {
+/// The total variances' lines with their marks.
+fn variance_rows(m: &StepMetrics, marks: &Marks) -> Vec<String> {
     let opt = |v: Option<f64>| v.map_or("—".to_string(), |x| crate::format::fixed(x, 4));
-    let (n, s, late) = (
-        UNSTEADY_MARK,
-        MISALIGNED_MARK,
-        m.steer_logged_late.is_some(),
-    );
+    let of = |metric: MarkedMetric| marks.get(&metric).map_or(&[][..], |v| v.as_slice());
     vec![
         row(
             "E_r (yaw rate)",
             crate::format::fixed(m.yaw_rate_total_variance, 4),
             "s",
-            &[(yaw, n), (late, s)],
+            of(MarkedMetric::YawRateTotalVariance),
         ),
         row(
             "E_ay",
             opt(m.ay_total_variance),
             "s",
-            &[(ay && m.ay_total_variance.is_some(), n), (late, s)],
+            of(MarkedMetric::AyTotalVariance),
         ),
-        row(
-            "Er",
-            opt(m.er),
-            "s",
-            &[((yaw || ay) && m.er.is_some(), n), (late, s)],
-        ),
+        row("Er", opt(m.er), "s", of(MarkedMetric::Er)),
     ]
+}
+
+/// The line after the table saying what "(before the steer)" marks: a
+/// 90 % crossing before the steer reaches half its step is no lag.
+fn before_note(marks: &Marks) -> Option<String> {
+    marks
+        .values()
+        .any(|v| v.contains(&Mark::BeforeTheSteer))
+        .then(|| {
+            "  before the steer: a response time marked \"(before the steer)\" is a 90 % crossing read before the steer reaches half its step, which no lag gives: the response's noise (see the warnings for its spread) or channels logged out of step, not the car's response time".to_string()
+        })
 }
 
 /// The line after the table saying what "(moving window)" marks: the

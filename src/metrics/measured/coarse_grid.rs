@@ -30,6 +30,15 @@ use crate::measured::MeasuredRun;
 /// Share of the step above which the rounding's deviation q/√12 is said.
 const COARSE_SHARE: f64 = 0.05;
 
+/// Share of the steer step above which its rounding's deviation q/√12 is
+/// said: a steer held between two codes reads one of them whatever the
+/// noise of the responses (a held steer is not dithered by a gyro's
+/// noise), so a step of 17 counts of 0.001 rad (q/√12 1.7 %) read 0.9740°
+/// for 1° and the gain 2.3 % high, 23 times the spread the noise gave it.
+/// Below 1 % (a step of more than about 29 counts) the bound is under the
+/// digits a gain is compared to.
+const STEER_COARSE_SHARE: f64 = 0.01;
+
 /// Most steps of its resolution a logger's channel spans (as `noise.rs`).
 const GRID_LEVELS: f64 = 65536.0;
 
@@ -139,18 +148,41 @@ pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<Strin
     let q = crate::metrics::noise::held_resolution(x)?;
     let step = m.steer_step.abs();
     let share = q / 12f64.sqrt() / step;
-    if !(share > COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {
+    if !(share > STEER_COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {
         return None;
     }
     let deg = 180.0 / std::f64::consts::PI;
     Some(format!(
-        "steer is written in steps of {} deg and its step is {} deg, {} of them: the rounding's deviation q/√12 is {} % of the step, so the steer step is known only within ±q/2 = ±{} %, and the yaw-rate gain (yaw rate per steer) with it; log it finer",
+        "steer is written in steps of {} deg and its step is {} deg, {} of them: the rounding's deviation q/√12 is {} % of the step, so the steer step is known only within ±q/2 = ±{} %, and the yaw-rate gain (yaw rate per steer) with it (its deviation is in the gain's stated spread); log it finer",
         crate::format::rounded(q * deg, 3),
         crate::format::readable(step * deg, 4),
         crate::format::rounded(step / q, 2),
         crate::format::readable(100.0 * share, 2),
         crate::format::rounded(50.0 * q / step, 3),
     ))
+}
+
+/// The rounding's deviation q/√12 of `x`'s held `step`, as a share of it,
+/// where `x` is written on a grid its held levels show (a logger's, not a
+/// sampled ramp's): None where none shows.
+fn rounding_share(x: &[f64], step: f64) -> Option<f64> {
+    let q = crate::metrics::noise::held_resolution(x)?;
+    (step > 0.0 && on_grid(x, q) && !one_ramp(x, q)).then(|| q / 12f64.sqrt() / step)
+}
+
+/// The yaw-rate gain's share of deviation from its two channels' grids:
+/// the steer's and the yaw rate's held steps each read one of the two
+/// codes they lie between (up to ±q/2, a deviation q/√12 where the value
+/// is anywhere between them), which no averaging of the run's noise
+/// removes where the noise is below the grid; the two add in quadrature.
+/// None where neither channel is on a grid.
+pub(super) fn gain_rounding(piece: &MeasuredRun, m: &StepMetrics) -> Option<f64> {
+    let steer = rounding_share(&piece.steer, m.steer_step.abs());
+    let yaw = rounding_share(&piece.yaw_rate, m.yaw_rate_steady.abs());
+    match (steer, yaw) {
+        (None, None) => None,
+        (s, r) => Some(s.unwrap_or(0.0).hypot(r.unwrap_or(0.0))),
+    }
 }
 
 /// Whether every finite sample of `x` lies a whole number of steps `q`

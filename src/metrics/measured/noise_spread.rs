@@ -48,7 +48,7 @@ pub(super) fn said(m: &StepMetrics) -> Option<String> {
         .filter(|s| *s >= SPREAD_SAID)
         .map(|s| {
             format!(
-                "the yaw-rate gain, {} 1/s, by ±{} % (the noise of the initial and steady windows' means it is the ratio of)",
+                "the yaw-rate gain, {} 1/s, by ±{} % (the noise of the initial and steady windows' means it is the ratio of, and a logger's rounding of them where a grid shows)",
                 readable(m.yaw_rate_gain, 4),
                 rounded(100.0 * s, 2)
             )

@@ -92,6 +92,11 @@ pub(super) fn measure(
                 .map_err(|e| steady_advice::with_advice(e, &p, settings))
         })
         .map_err(PieceRefusal::NoStepMetrics)?;
+    // A logger's rounding of the held steer and yaw rate is no noise the
+    // copies see: its deviation joins the gain's spread.
+    if let Some(g) = coarse_grid::gain_rounding(piece, &m) {
+        m.yaw_rate_gain_spread = Some(m.yaw_rate_gain_spread.map_or(g, |s| s.hypot(g)));
+    }
     let mut warnings: Vec<String> = holes.into_iter().collect();
     warnings.extend(withhold_unmeasured_peak(&mut m, &spans, reach));
     warnings.extend(selected_by_noise(&m));

@@ -976,5 +976,6 @@ mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;
 mod trips_s111_holdowner;
 mod trips_s111_metrics44;
+mod trips_s111_perfdiag44;
 mod trips_s111_studysim44;
 mod trips_s111_words44;

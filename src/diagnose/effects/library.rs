@@ -244,7 +244,9 @@ impl Effect for SensorBias {
     const NAME: &'static str = "sensor_bias";
     const PARAMETERS: &'static [Parameter] = &[
         par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
-        par("ay", "m/s²", 0.0, -1.0, 1.0),
+        // Added to ay after the dynamics (`Sensors::seen`); the other
+        // two also set the replay's start (`Prepared::start_of`).
+        par("ay", "m/s²", 0.0, -1.0, 1.0).additive(),
         par("beta", "rad", 0.0, -0.05, 0.05),
     ];
     const SIGNATURE: &'static str = "a constant offset that does not depend on the vehicle's direction of travel: a straight run both ways";

@@ -87,6 +87,14 @@ pub struct Parameter {
     pub bounds: (f64, f64),
     /// What each bound is (lower, upper).
     pub limits: (Bound, Bound),
+    /// Whether it only adds a constant to a measured channel after the
+    /// dynamics, their start included: the residuals are then affine in it
+    /// with a slope no parameter changes, every second derivative with it
+    /// is zero, and the fits' second differences skip it
+    /// (`crate::diagnose::fit`). The lateral-acceleration offset is; the
+    /// yaw-rate and sideslip offsets are not, as each replay starts from
+    /// the first measured state less them.
+    pub additive: bool,
 }
 
 /// What bounds a parameter on one side.
@@ -108,6 +116,7 @@ const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64)
         off,
         bounds: (lo, hi),
         limits: (Bound::Search, Bound::Search),
+        additive: false,
     }
 }
 
@@ -124,6 +133,15 @@ impl Parameter {
     const fn share(self) -> Self {
         Self {
             limits: (Bound::Physical, Bound::Physical),
+            ..self
+        }
+    }
+
+    /// The same as an offset added to a measured channel after the
+    /// dynamics ([`Parameter::additive`]).
+    const fn additive(self) -> Self {
+        Self {
+            additive: true,
             ..self
         }
     }

@@ -105,6 +105,15 @@ impl Layout {
         }
     }
 
+    /// Whether each entry of the vector only adds a constant to a measured
+    /// channel ([`Parameter::additive`]; no axle characteristic does): its
+    /// second derivatives are all zero.
+    pub fn additive(&self) -> Vec<bool> {
+        let mut marks = vec![false; self.axle_count()];
+        marks.extend(self.parameters().map(|(_, q)| q.additive));
+        marks
+    }
+
     /// Where the roll dynamics are (empty when not fitted).
     pub fn roll(&self) -> Range<usize> {
         let end = self.effects().end;

@@ -245,14 +245,34 @@ pub(crate) fn fit_first_order<F: Fn(&[f64]) -> Augmented + Sync>(
 /// but for the columns of the parameters marked in `unseen`
 /// ([`FitOutcome::unseen`]), left zero: the fold refits hold those
 /// parameters and zero their columns (`refit`), so their replays (a
-/// combined slip's two unseen shares: 13 of its 27) bought nothing.
+/// combined slip's two unseen shares: 13 of its 27) bought nothing. The
+/// columns of a parameter that only adds a constant to a channel are zero
+/// too ([`unknown_curvature`]).
 pub(crate) fn complete_curvature<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
     linear: &mut Linearisation,
     unseen: &[bool],
 ) {
-    linear.curvature = curvature(problem, p, &linear.residuals, unseen);
+    let skip = unknown_curvature(problem, p.len(), unseen);
+    linear.curvature = curvature(problem, p, &linear.residuals, &skip);
+}
+
+/// The parameters of `problem` (`n` of them) whose second derivatives are
+/// not taken: those marked in `skip`, and those that only add a constant
+/// to a measured channel ([`Problem::additive`]: the lateral-acceleration
+/// offset), whose residuals are affine in them with a slope nothing else
+/// moves, so that every second derivative with them is zero (their second
+/// differences were rounding: 9 of the 44 replays of the 600 s sedan's
+/// `sensor_bias+accelerometer_position+steering_ratio`).
+fn unknown_curvature<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    n: usize,
+    skip: &[bool],
+) -> Vec<bool> {
+    (0..n)
+        .map(|i| skip.get(i).copied().unwrap_or(false) || problem.additive(i))
+        .collect()
 }
 
 /// [`fit`], the second derivatives of its linearisation taken when
@@ -561,7 +581,7 @@ fn linearise_with<F: Fn(&[f64]) -> Augmented + Sync>(
     problem.residuals(p, &mut r);
     let jacobian = known.unwrap_or_else(|| problem.jacobian(p, &r, &problem.bounds));
     let curvature = if second {
-        curvature(problem, p, &r, &[])
+        curvature(problem, p, &r, &unknown_curvature(problem, p.len(), &[]))
     } else {
         DMatrix::zeros(r.len(), 0)
     };

@@ -52,6 +52,10 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     /// What the parameters set and the base model's effects they are set
     /// on, when the problem has exact derivatives ([`Problem::with_layout`]).
     layout: Option<(Layout, Effects)>,
+    /// Whether each parameter only adds a constant to a measured channel
+    /// ([`Layout::additive`]; empty: none known): its second derivatives
+    /// are zero, and [`Problem::additive`] tells the second differences.
+    additive: Vec<bool>,
     /// The prior's rows on the axle characteristics, after the data's.
     prior: Option<PriorRows>,
     /// Replays shared with the diagnosis's other problems on all runs
@@ -78,6 +82,7 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             last,
             run_costs,
             layout: None,
+            additive: Vec::new(),
             prior: None,
             shared: None,
         }
@@ -132,13 +137,16 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     /// differences): `layout` says what the parameters set on `base` (as
     /// `build` sets them), and the Jacobian comes from one replay of each
     /// run in dual numbers ([`crate::diagnose::fit::tangent`]) instead of
-    /// one per parameter.
+    /// one per parameter. Either way the layout marks the parameters that
+    /// only add a constant to a channel ([`Problem::additive`]).
     pub fn with_layout(
         mut self,
         layout: Layout,
         base: &Augmented,
         derivatives: Derivatives,
     ) -> Self {
+        // What a parameter sets is known whatever the derivatives.
+        self.additive = layout.additive();
         let m = &base.model;
         let generic = layout.axle
             || (m.front.lateral_parameters().is_some() && m.rear.lateral_parameters().is_some());
@@ -146,6 +154,12 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             self.layout = Some((layout, *base.effects()));
         }
         self
+    }
+
+    /// Whether parameter `i` only adds a constant to a measured channel
+    /// ([`Problem::with_layout`]; false without a layout).
+    pub(crate) fn additive(&self, i: usize) -> bool {
+        self.additive.get(i).copied().unwrap_or(false)
     }
 
     /// Whether the Jacobian is exact ([`Problem::with_layout`]).

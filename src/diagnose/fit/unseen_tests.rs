@@ -111,3 +111,68 @@ fn an_unseen_parameter_costs_no_second_derivatives_and_moves_no_fold_refit() {
     assert_eq!(a.params, b.params);
     assert!(a.params[..3] != f.params[..3], "the fold did not move");
 }
+
+/// A lateral-acceleration offset adds a constant to ay after the
+/// dynamics (`Sensors::seen`), so every second derivative with it is zero
+/// and the second differences skip it: 9 replays for it beside the
+/// yaw-rate and sideslip offsets (which also set each replay's start, and
+/// are differenced) and a steering compliance, where all pairs of the four
+/// take 14; the other columns the same to the bit. Its columns the full
+/// differences find are rounding: under 1e-6 of the compliance's own (an
+/// offset that entered the dynamics, or scaled with another parameter,
+/// would fail this).
+#[test]
+fn an_ay_offset_costs_no_second_derivatives_its_differences_being_rounding() {
+    use super::curvature::curvature;
+    use super::layout::Layout;
+    use super::{pair_index, unknown_curvature};
+    use crate::diagnose::effects::EffectKind::{SensorBias, SteeringCompliance};
+    use crate::optim::local::{Derivatives, Residuals};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let layout = Layout::new(&[SensorBias, SteeringCompliance], false);
+    assert_eq!(layout.additive(), [false, true, false, false]);
+    let base = lagged(&[0.0]);
+    let truth = [0.008, 0.2, 0.004, 0.003];
+    let runs = sine_runs(&layout.model(&base, &truth));
+    let bounds: Vec<(f64, f64)> = layout.parameters().map(|(_, q)| q.bounds).collect();
+    let replays = AtomicUsize::new(0);
+    let counted = |p: &[f64]| {
+        replays.fetch_add(1, Ordering::Relaxed);
+        layout.model(&base, p)
+    };
+    let problem = Problem::new(counted, runs.iter().collect(), SCALES, bounds).with_layout(
+        layout.clone(),
+        &base,
+        Derivatives::Differences,
+    );
+    let p = [0.01, 0.1, 0.0, 0.002];
+    let mut r0 = vec![0.0; problem.count()];
+    problem.residuals(&p, &mut r0);
+    let taken = |skip: &[bool]| {
+        let before = replays.load(Ordering::Relaxed);
+        let c = curvature(&problem, &p, &r0, skip);
+        (c, replays.load(Ordering::Relaxed) - before)
+    };
+    let (all, n_all) = taken(&[]);
+    let skip = unknown_curvature(&problem, 4, &[]);
+    assert_eq!(skip, [false, true, false, false]);
+    let (skipped, n_skipped) = taken(&skip);
+    assert_eq!((n_all, n_skipped), (14, 9));
+    let largest = all.column(pair_index(4, 3, 3)).amax();
+    assert!(largest > 0.0, "the compliance has no curvature");
+    for a in 0..4 {
+        for b in a..4 {
+            let c = pair_index(4, a, b);
+            if a != 1 && b != 1 {
+                assert_eq!(all.column(c), skipped.column(c), "({a}, {b})");
+                continue;
+            }
+            assert!(skipped.column(c).iter().all(|&x| x == 0.0), "({a}, {b})");
+            let rounding = all.column(c).amax();
+            assert!(
+                rounding < 1e-6 * largest,
+                "({a}, {b}): {rounding:e} against {largest:e}"
+            );
+        }
+    }
+}

@@ -118,6 +118,7 @@ pub use rig_exchanged::{LoadAndForceExchanged, EXCHANGED_SHARE};
 pub use rig_load_lbf::{RigLoadInLbf, LBF_SLIP, MAX_MEDIAN_GRIP};
 pub use rig_moment_knm::{RigMomentInKnm, MIN_RIG_ARM};
 pub use rig_pressure::RigPressureAboveAny;
+pub use rig_sign::{CamberSlope, Reversal};
 pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};

@@ -121,6 +121,12 @@ pub enum ConstantFrom {
         /// The data's median load, N.
         data_load: f64,
     },
+    /// A physical constant a fresh `.tir` states in place of 0
+    /// (`INFLPRES`, `VERTICAL_STIFFNESS`, `WIDTH`, …: `tyre/mf/stated.rs`).
+    Stated {
+        /// Where its value comes from.
+        from: crate::tyre::mf::stated::StatedFrom,
+    },
     /// The median pressure of the data, rounded to 100 Pa, in place of a
     /// template's `INFLPRES` outside the data's pressures (`INFLPRES`).
     InflationOutsideData {
@@ -265,6 +271,7 @@ impl fmt::Display for ConstantFrom {
                 let said = super::template_size::kept_said(*field, *template_fnomin, *data_load);
                 return f.write_str(&said);
             }
+            ConstantFrom::Stated { from } => return write!(f, "{from}"),
             ConstantFrom::InflationOutsideData { template, lo, hi } => {
                 let (t, lo, hi) = (exact(*template), exact(*lo), exact(*hi));
                 return write!(

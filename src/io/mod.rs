@@ -12,6 +12,7 @@ pub mod fitted_ranges;
 mod limits;
 pub mod paths;
 pub mod rig;
+mod rig_camber;
 mod rig_checks;
 mod rig_degrees;
 pub use rig_degrees::{camber_in_degrees, STEEP_CAMBER};

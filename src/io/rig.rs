@@ -15,7 +15,7 @@ use super::rig_checks::{
 };
 pub use super::rig_checks::{MAX_RIG_FORCE, MAX_RIG_MOMENT};
 use super::rig_rows::Known;
-use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip};
+use crate::error::{InputError, InputProblem, Reversal, RigChannel, SmallSlipSlope, UnitSlip};
 use crate::identify::data::RigData;
 use std::path::Path;
 
@@ -159,7 +159,7 @@ fn check_shapes(path: &Path, c: &Columns, t: &Taken) -> Result<(), InputError> {
             check_grip(path, c, column, (slip, force), &t.fz)?;
         }
     }
-    check_signs(path, c, t.lateral(), t.mz.as_deref(), t.longitudinal())
+    check_signs(path, c, t)
 }
 
 /// A pressure column in pascals, or its refusal at the first cell in
@@ -264,6 +264,8 @@ const SIGN_STANDARD_ERRORS: f64 = 3.0;
 struct Slope {
     slope: f64,
     standard_error: f64,
+    /// The line's value at zero slip, and its standard error.
+    at_zero: (f64, f64),
     above: usize,
     below: usize,
 }
@@ -289,9 +291,14 @@ impl Slope {
             .iter()
             .map(|(x, y)| (y - my - slope * (x - mx)).powi(2))
             .sum();
+        let variance = rss / (m - 2.0);
         Some(Slope {
             slope,
-            standard_error: (rss / (m - 2.0) / sxx).sqrt(),
+            standard_error: (variance / sxx).sqrt(),
+            at_zero: (
+                my - slope * mx,
+                (variance * (1.0 / m + mx * mx / sxx)).sqrt(),
+            ),
             above,
             below,
         })
@@ -323,13 +330,8 @@ impl Slope {
 /// to FORMATS.md's at small slip. A fit cannot see a flipped sign: it fits
 /// the mirror image just as well (negative cornering stiffness, small σ),
 /// and the tyre written from it steers the vehicle the wrong way.
-fn check_signs(
-    path: &Path,
-    c: &Columns,
-    lateral: Option<(&[f64], &[f64])>,
-    mz: Option<&[f64]>,
-    longitudinal: Option<(&[f64], &[f64])>,
-) -> Result<(), InputError> {
+fn check_signs(path: &Path, c: &Columns, t: &Taken) -> Result<(), InputError> {
+    let (lateral, mz, longitudinal) = (t.lateral(), t.mz.as_deref(), t.longitudinal());
     let refuse = |channel: RigChannel, slope: SmallSlipSlope, beside: Option<f64>| {
         InputError::problem(
             path,
@@ -355,15 +357,26 @@ fn check_signs(
         if let Some(fy_slope) = Slope::fit(&pairs(fy)) {
             let mz_slope = mz.and_then(|mz| Slope::fit(&pairs(mz)));
             if fy_slope.clearly_negative() {
-                // Both channels reversed against the slip angle: the slip
-                // angle's column is the one reversed.
+                // Both channels reversed against the slip angle: a reversed
+                // `alpha`, or reversed `fy` and `mz`; a camber thrust (or
+                // no offset to mirror) may tell which.
                 let reversed = mz_slope.filter(Slope::clearly_negative);
                 return Err(match reversed {
-                    Some(m) => refuse(
-                        RigChannel::Alpha,
-                        fy_slope.reported(combined),
-                        Some(m.slope),
-                    ),
+                    Some(m) => {
+                        let camber = t.camber.as_deref().and_then(|g| {
+                            super::rig_camber::camber_slope(&near, (alpha, fy), &t.fz, g)
+                        });
+                        let r = Reversal {
+                            forces: [c.column("fy"), c.column("mz")],
+                            offset: fy_slope.at_zero,
+                            camber,
+                        };
+                        refuse(
+                            RigChannel::Alpha(r),
+                            fy_slope.reported(combined),
+                            Some(m.slope),
+                        )
+                    }
                     None => refuse(RigChannel::Fy, fy_slope.reported(combined), None),
                 });
             }

@@ -345,8 +345,10 @@ impl TirDocument {
     }
 }
 
-/// A fresh `.tir` text for a tyre that did not come from a file (SI units).
+/// A fresh `.tir` text for a tyre that did not come from a file (SI units),
+/// with the physical constants it leaves at 0 stated (`stated.rs`).
 pub(crate) fn write_new(tyre: &MagicFormula) -> String {
+    let tyre = &crate::tyre::mf::stated::with_stated(tyre);
     let c = &tyre.coefficients;
     let mut s = String::from(
         "[MDI_HEADER]\nFILE_TYPE = 'tir'\nFILE_VERSION = 3.0\nFILE_FORMAT = 'ASCII'\n\

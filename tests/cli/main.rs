@@ -977,5 +977,6 @@ mod trips_s110_verdict43;
 mod trips_s111_holdowner;
 mod trips_s111_metrics44;
 mod trips_s111_perfdiag44;
+mod trips_s111_rigtir45;
 mod trips_s111_studysim44;
 mod trips_s111_words44;

@@ -111,6 +111,8 @@ fn pac89s_camber_terms_without_camber_data_are_held_at_one_stated_value_whatever
 /// both sloping the wrong way against it) was told to "negate the `fy`
 /// column", which fits the same slopes but mirrors the tyre's offsets.
 /// Now both reversed name `alpha`; `fy` alone reversed still names `fy`.
+/// (Session 111: both reversed name `alpha` or `fy` and `mz`, which the
+/// slopes cannot tell apart, `trips_s111_rigtir45.rs`.)
 #[test]
 fn a_reversed_slip_angle_column_is_named_where_fy_and_mz_both_slope_the_wrong_way() {
     let dir = scratch(&[("rig.csv", &rig(&[4000.0], 5.0, -1.0, ("", "")))]);
@@ -118,11 +120,11 @@ fn a_reversed_slip_angle_column_is_named_where_fy_and_mz_both_slope_the_wrong_wa
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
     assert!(
-        e.contains("rig.csv: column `alpha` (column 2 of the header) looks reversed: near zero slip (|alpha| ≤ 0.035 rad) both forces slope the wrong way against it: `fy`'s least-squares slope is -53423 N/rad (standard error 122 N/rad) from 80 samples (40 with alpha > 0, 40 with alpha < 0), and `mz`'s -1489 N·m/rad"),
+        e.contains("rig.csv: columns `alpha`, `fy` and `mz` (columns 2, 3 and 4 of the header): near zero slip (|alpha| ≤ 0.035 rad) both forces slope the wrong way against the slip angle: `fy`'s least-squares slope is -53423 N/rad (standard error 122 N/rad) from 80 samples (40 with alpha > 0, 40 with alpha < 0), and `mz`'s -1489 N·m/rad"),
         "{e}"
     );
     assert!(
-        e.contains("negate the `alpha` column (negating `fy` and `mz` instead fits the same slopes but mirrors the tyre's offsets about zero slip"),
+        e.contains("Either `alpha` is reversed or `fy` and `mz` both are: each fixes both slopes, but they give mirror-image tyres, and these data cannot tell which"),
         "{e}"
     );
     assert!(!e.contains("negate the `fy` column"), "{e}");

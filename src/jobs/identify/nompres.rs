@@ -142,7 +142,10 @@ fn span(lo: Option<f64>, hi: Option<f64>, values: &[f64]) -> (f64, f64) {
 
 /// The `.tir` constants a fit without a template sets (`FNOMIN`,
 /// `UNLOADED_RADIUS`, `NOMPRES`, `LONGVL`), each with where its value
-/// comes from; one given with `--hold` is said as such.
+/// comes from; one given with `--hold` is said as such; then those the
+/// fresh file states in place of a 0 (`tyre/mf/stated.rs`: `INFLPRES`,
+/// `VERTICAL_STIFFNESS`, `WIDTH`, `ASPECT_RATIO`, and `NOMPRES` without
+/// pressure data), as it writes them.
 pub(super) fn constants_held(
     t: &MagicFormula,
     data: &crate::identify::data::RigData,
@@ -157,7 +160,7 @@ pub(super) fn constants_held(
         Some(_) => ConstantFrom::MedianSpeed,
         None => ConstantFrom::DefaultSpeed,
     };
-    [
+    let mut out = [
         ("FNOMIN", c.FNOMIN, ConstantFrom::MedianLoad),
         (
             "UNLOADED_RADIUS",
@@ -169,11 +172,14 @@ pub(super) fn constants_held(
     ]
     .into_iter()
     .filter(|(name, ..)| !o.hold.iter().any(|(h, _)| h == name))
-    .map(|(name, value, from)| super::holds::Held {
-        name: name.into(),
-        value,
-        applied: true,
-        reason: HeldFor::Constant { from },
-    })
-    .collect()
+    .map(|(name, value, from)| held(name, value, from))
+    .collect::<Vec<_>>();
+    let stated = crate::tyre::mf::stated::stated(t);
+    // A stated NOMPRES replaces the 0 said above.
+    out.retain(|h| !stated.iter().any(|s| s.key == h.name));
+    out.extend(stated.into_iter().map(|s| {
+        let from = ConstantFrom::Stated { from: s.from };
+        held(s.key, s.value, from)
+    }));
+    out
 }

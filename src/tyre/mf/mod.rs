@@ -95,6 +95,7 @@ mod rim_load;
 pub use pure_curves::PeakFriction;
 pub(crate) use pure_curves::WARN_FRICTION;
 mod slip;
+pub mod stated;
 mod version;
 pub mod vertical;
 

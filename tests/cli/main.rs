@@ -975,6 +975,7 @@ mod trips_s110_studyeq42;
 mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;
 mod trips_s111_holdowner;
+mod trips_s111_lead;
 mod trips_s111_metrics44;
 mod trips_s111_perfdiag44;
 mod trips_s111_rigtir45;

@@ -19,7 +19,7 @@ use crate::trips_s108_lead::history_rows;
 
 /// The bundled sedan step simulated in `dir`: its 1 kHz rows (t, steer,
 /// speed, beta, yaw_rate, ay).
-fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
+pub(crate) fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
     let out = dir.join("sedan");
     let scenario = root().join("scenarios/sedan_step.toml");
     succeeds(&[
@@ -32,7 +32,7 @@ fn sedan_rows(dir: &Path) -> Vec<[f64; 6]> {
 }
 
 /// `rows` written to `dir/name`, every `every`-th row, through `f`.
-fn written(
+pub(crate) fn written(
     rows: &[[f64; 6]],
     dir: &Path,
     name: &str,
@@ -51,7 +51,7 @@ fn written(
 
 /// `metrics --json` (with `args`) on `run`: the report, its warnings as
 /// one string, and the terminal's table (the same run without `--json`).
-fn measured(run: &Path, args: &[&str]) -> (serde_json::Value, String, String) {
+pub(crate) fn measured(run: &Path, args: &[&str]) -> (serde_json::Value, String, String) {
     let mut all = vec!["metrics", run.to_str().unwrap()];
     all.extend(args);
     let text = run_ok(&all);

@@ -974,3 +974,4 @@ mod trips_s110_simulate42;
 mod trips_s110_studyeq42;
 mod trips_s110_tyreeval42;
 mod trips_s110_verdict43;
+mod trips_s111_units45;

@@ -29,7 +29,7 @@ pub(super) fn beyond_a_sensor(
         return String::new();
     }
     format!(
-        "; the straights' {} m/s² is beyond the 0.01–{MEMS_AY_BIAS} m/s² of an automotive MEMS accelerometer's bias: more likely a turn read as a straight (a yaw rate read too small: is its unit right?), an unlogged bank or crown, or the sensor tilted on its mount",
+        "; the straights' {} m/s² is beyond the 0.01–{MEMS_AY_BIAS} m/s² of an automotive MEMS accelerometer's bias: more likely a turn read as a straight (a yaw rate read too small: is its unit right?), an unlogged crossfall or crown, or the sensor tilted on its mount",
         crate::format::fixed(mean, 2)
     )
 }

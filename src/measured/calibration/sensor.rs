@@ -4,7 +4,7 @@
 //! [`super::STRAIGHT_AY`] through. An offset beyond [`MEMS_AY_BIAS`] there
 //! that no agreeing standstill confirms is said with what it more likely
 //! is: a turn read as a straight (its yaw rate read too small, a unit), an
-//! unlogged bank or crown, a sensor tilted on its mount. Units: m/s².
+//! unlogged crossfall or crown, a sensor tilted on its mount. Units: m/s².
 
 use crate::measured::clean::RunChannel;
 

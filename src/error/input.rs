@@ -253,7 +253,7 @@ pub enum InputError {
     /// refused (built by [`InputError::runs_refused`]): a campaign of eight
     /// runs with three bad ones is mended in one pass. Grouped as
     /// [`InputError::Several`] groups places.
-    #[error("{refused} of {of} runs refused, in run order:{}", listed(errors, *more, "runs"))]
+    #[error("{refused} of {of} runs refused, in run order:{}{}", listed(errors, *more, "runs"), passed_line(errors, *more, passed))]
     RunsRefused {
         /// The first refused run's file.
         path: PathBuf,
@@ -267,6 +267,9 @@ pub enum InputError {
         errors: Vec<(InputError, usize)>,
         /// How many runs the rules not shown refused.
         more: usize,
+        /// The runs that passed the checks, as said: named where a line
+        /// stands for several runs refused alike (the others unnamed).
+        passed: Vec<String>,
     },
 }
 
@@ -333,8 +336,8 @@ impl InputError {
     /// [`InputError::RunsRefused`].
     pub(crate) fn runs_refused(
         mut errors: Vec<InputError>,
-        refused: usize,
-        of: usize,
+        (refused, of): (usize, usize),
+        passed: Vec<String>,
     ) -> Option<Self> {
         if errors.len() < 2 {
             return errors.pop();
@@ -347,6 +350,7 @@ impl InputError {
             of,
             errors,
             more,
+            passed,
         })
     }
 
@@ -510,6 +514,20 @@ fn listed(errors: &[(InputError, usize)], more: usize, what: &str) -> String {
         out += &format!("\n  and {more} more");
     }
     out
+}
+
+/// The runs passed (the first five), where a line of an
+/// [`InputError::RunsRefused`] stands for several runs refused alike or
+/// rules are not shown: of eight runs with six refused alike, the two
+/// taken were not told apart from the five unnamed.
+fn passed_line(errors: &[(InputError, usize)], more: usize, passed: &[String]) -> String {
+    let unnamed = more > 0 || errors.iter().any(|(_, n)| *n > 1);
+    let (shown, rest) = (passed.len().min(5), passed.len().saturating_sub(5));
+    match (unnamed && shown > 0, rest) {
+        (false, _) => String::new(),
+        (true, 0) => format!("\n  passed: {}", passed.join(", ")),
+        (true, k) => format!("\n  passed: {} and {k} more", passed[..shown].join(", ")),
+    }
 }
 
 /// The rule an error breaks, as [`InputError::all_of`] groups them: its

@@ -66,6 +66,7 @@ mod units;
 mod unseen;
 mod unstable_step;
 mod vehicle_limit;
+mod yaw_scale;
 
 pub use bank_degrees::BankInDegrees;
 pub use bank_reversed::BankReversed;
@@ -138,6 +139,7 @@ pub use units::{
 };
 pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
 pub use vehicle_limit::{VehicleLimit, MAX_STEERING_RATIO, MIN_STEERING_RATIO};
+pub use yaw_scale::YawScale;
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

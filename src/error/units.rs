@@ -342,6 +342,9 @@ pub enum UnitSlip {
     /// factor (`lateral_slope.rs`).
     #[error(transparent)]
     LateralSlope(#[from] super::lateral_slope::LateralSlope),
+    /// A yaw rate a small share of a steady `ay` (`yaw_scale.rs`).
+    #[error(transparent)]
+    YawScale(#[from] super::yaw_scale::YawScale),
     /// A sideslip in percent of a radian (`lateral_slope.rs`).
     #[error(transparent)]
     BetaInPercent(#[from] super::lateral_slope::BetaInPercent),

@@ -27,6 +27,7 @@ pub use run_bank::steep_bank;
 mod run_slope;
 mod run_turning;
 mod run_units;
+mod run_yaw_scale;
 pub use run_units::{unchecked_speed_unit, MAX_SPEED};
 pub mod scenario;
 mod schedule;

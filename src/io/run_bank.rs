@@ -167,14 +167,21 @@ pub(super) fn check_bank_degrees(
 /// a unit's band with the bank as logged is first read without the bank
 /// and reversed ([`bank_reading`]): a bank of the other sign (or one the
 /// car does not feel) pulls the slope into a unit's band, and is named in
-/// place of the unit.
+/// place of the unit. Where the slope judges nothing, a yaw rate too small
+/// for its `u·r` to turn the means is judged by a steady `ay`
+/// (`run_yaw_scale.rs`).
 pub(super) fn check_slope_reading(
     path: &Path,
     cols: &Columns,
     c: &Lateral,
 ) -> Result<(), InputError> {
     let Some((row, slip)) = slope_slip(c) else {
-        return Ok(());
+        // A yaw rate too small for `u·r` to reach the slope's turning
+        // means: judged where `ay` holds large.
+        return match super::run_yaw_scale::yaw_scale_slip(path, c) {
+            Some((row, s)) => Err(cols.error_at(path, row, "yaw_rate", UnitSlip::from(s).into())),
+            None => Ok(()),
+        };
     };
     match bank_reading(c) {
         Err(reversed) => Err(cols.error_at(path, row, "bank", UnitSlip::from(reversed).into())),

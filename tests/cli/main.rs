@@ -980,4 +980,5 @@ mod trips_s111_metrics44;
 mod trips_s111_perfdiag44;
 mod trips_s111_rigtir45;
 mod trips_s111_studysim44;
+mod trips_s111_units45;
 mod trips_s111_words44;

@@ -355,7 +355,8 @@ pub(super) fn read_runs(
         }
     }
     let (refused, count) = all_refused(refused, (in_degrees, judged), files.len(), &raw);
-    if let Some(e) = InputError::runs_refused(refused, count, files.len()) {
+    let passed = raw.iter().map(|r| r.path.display().to_string()).collect();
+    if let Some(e) = InputError::runs_refused(refused, (count, files.len()), passed) {
         return Err(e);
     }
     if let Some(seg) = segment.filter(|_| !cut.was_cut && !runs.is_empty()) {

@@ -29,9 +29,13 @@
 //! least [`STRAIGHT_SPEED`]; yaw rate within [`STRAIGHT_YAW_RATE`] of the
 //! standstills' pooled yaw-rate offset (0 without one: a gyro offset larger
 //! than the band would hide the straights); the path's lateral
-//! acceleration `u·(r − r₀)` within [`STRAIGHT_LATERAL`]; steer within
+//! acceleration `u·(r − r₀)` within [`STRAIGHT_LATERAL`]; `|ay|` (less a
+//! logged bank's `g·sin θ`) within [`STRAIGHT_AY`], so that the straights
+//! are straight by a channel a yaw rate in the wrong unit does not move
+//! (a steady turn read with a yaw rate 57× too small passed the yaw
+//! tests); steer within
 //! [`STRAIGHT_STEER`] of the run's straight-line steer (the median steer
-//! of its samples that pass the speed and yaw tests, which carries the
+//! of its samples that pass the speed, yaw and `ay` tests, which carries the
 //! steer sensor's own offset); `|ax|` within [`STRAIGHT_AX`] (without an
 //! `ax` column, the running median's slope across one window). Stretches that pass, cut by [`STRAIGHT_TRIM`] at each end (the
 //! corner's exit and the next one's entry) and at least
@@ -73,11 +77,13 @@
 //! them, `bank.rs` checks a logged bank against the standstills' `a_y`
 //! (as logged, not acting, reversed), `report.rs` holds the report and its
 //! lines, `roll.rs` levels `a_y` by a logged body roll (its own offset
-//! from the standstills).
+//! from the standstills), `sensor.rs` says a straights' `a_y` offset beyond
+//! an accelerometer's bias.
 
 mod bank;
 mod report;
 pub mod roll;
+mod sensor;
 mod spans;
 pub(crate) mod stats;
 #[cfg(test)]
@@ -88,6 +94,7 @@ pub use report::{
     Agreement, BankedStraights, CalibrationReport, CalibrationSpan, ChannelCalibration,
     ChannelMean, Criteria, Offset, Pooled, RejectedStraight, Rejection, SpanKind,
 };
+pub use sensor::MEMS_AY_BIAS;
 
 use super::clean::RunChannel;
 use super::MeasuredRun;
@@ -110,6 +117,12 @@ pub const STRAIGHT_SPEED: f64 = 5.0;
 pub const STRAIGHT_YAW_RATE: f64 = 0.01;
 /// Straight: largest lateral acceleration of the path, m/s² (0.02 g).
 pub const STRAIGHT_LATERAL: f64 = 0.2;
+/// Straight: largest |ay| (less a logged bank's `g·sin θ`), m/s²: the
+/// accelerometer is a witness the yaw rate's unit does not move, and an
+/// offset beyond [`PLAUSIBLE_AY_OFFSET`] is no mounted sensor's (a steady
+/// 2 m/s² turn whose yaw rate was read 57× too small was taken for a
+/// straight).
+pub const STRAIGHT_AY: f64 = PLAUSIBLE_AY_OFFSET;
 /// Straight: largest steer from the straight-line steer, rad (0.3°, about
 /// 5° at a steering wheel over a 16:1 ratio).
 pub const STRAIGHT_STEER: f64 = 0.005;
@@ -145,6 +158,7 @@ pub const CRITERIA: Criteria = Criteria {
     straight_speed: STRAIGHT_SPEED,
     straight_yaw_rate: STRAIGHT_YAW_RATE,
     straight_lateral: STRAIGHT_LATERAL,
+    straight_ay: STRAIGHT_AY,
     straight_steer: STRAIGHT_STEER,
     straight_ax: STRAIGHT_AX,
     straight_yaw_variation: STRAIGHT_YAW_VARIATION,

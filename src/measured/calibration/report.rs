@@ -27,6 +27,9 @@ pub struct Criteria {
     /// Largest |speed·(yaw rate − the standstills' yaw offset)|, the
     /// path's lateral acceleration, m/s².
     pub straight_lateral: f64,
+    /// Largest |ay − g·sin(bank)| (running median; `ay` as read without
+    /// a bank column), m/s²: beyond any mounted accelerometer's offset.
+    pub straight_ay: f64,
     /// Largest |steer − the run's straight-line steer| (running median),
     /// rad.
     pub straight_steer: f64,
@@ -532,6 +535,13 @@ impl ChannelCalibration {
                 plus_minus(a.difference, a.std_error)
             ));
         }
+        let confirmed = self.agreement.is_some_and(|a| a.agree);
+        let straight = self.straight.map(|p| p.mean);
+        out.push_str(&super::sensor::beyond_a_sensor(
+            self.channel,
+            straight,
+            confirmed,
+        ));
         out.push_str(&self.drifts());
         out
     }

@@ -6,6 +6,7 @@
 //! dropout. Indices are the run's samples; spans are `[lo, hi)`.
 
 use super::report::{Criteria, RejectedStraight, Rejection};
+use crate::constants::G;
 use crate::measured::clean::{gapless, median, median_interval};
 use crate::measured::MeasuredRun;
 
@@ -93,8 +94,8 @@ pub(super) fn standstills(run: &MeasuredRun, c: &Criteria) -> Vec<(usize, usize)
 }
 
 /// The steer that holds the run straight: the median of the steer's
-/// running median over the moving samples whose yaw rate passes; None
-/// without any.
+/// running median over the moving samples whose yaw rate and `ay` pass;
+/// None without any.
 fn straight_steer(d: &[f64], pass: &dyn Fn(usize) -> bool) -> Option<f64> {
     let mut on: Vec<f64> = (0..d.len()).filter(|&i| pass(i)).map(|i| d[i]).collect();
     (!on.is_empty()).then(|| median(&mut on))
@@ -115,11 +116,22 @@ pub(super) fn straights(
         Some(a) => smoothed(run, a, w),
         None => slope(&run.t, &u, w),
     };
+    // The accelerometer, less a logged bank's term: a yaw rate read too
+    // small (in rad/s declared in deg/s) keeps a steady turn within the
+    // yaw bands, and its 2 m/s² were taken for an `ay` offset.
+    let ay = run.ay.as_ref().map(|a| {
+        let level: Vec<f64> = match &run.bank {
+            Some(b) => a.iter().zip(b).map(|(a, b)| a - G * b.sin()).collect(),
+            None => a.clone(),
+        };
+        smoothed(run, &level, w)
+    });
     let turning = |i: usize| {
         let dr = r[i] - yaw_reference;
         u[i] < c.straight_speed
             || dr.abs() > c.straight_yaw_rate
             || (u[i] * dr).abs() > c.straight_lateral
+            || ay.as_ref().is_some_and(|a| a[i].abs() > c.straight_ay)
     };
     let Some(d0) = straight_steer(&d, &|i| !turning(i)) else {
         return (Vec::new(), Vec::new());

@@ -442,3 +442,50 @@ fn a_one_hertz_slalom_is_no_straight_though_its_medians_are_flat() {
     assert!(r.channel(RunChannel::Beta).is_none());
     assert!(r.channel(RunChannel::YawRate).unwrap().straight.is_none());
 }
+
+/// At 27.8 m/s, 30 s: straight to `from` s, then a steady turn at `ay`
+/// m/s² whose yaw rate reads 57.3× too small (a yaw rate in rad/s
+/// declared in deg/s), its `ay` the accelerometer's as it is.
+fn slipped_turn(ay: f64, from: f64) -> impl Fn(f64) -> Truth {
+    let u = 27.8;
+    move |t| match t < from {
+        true => Truth {
+            speed: u,
+            ..Truth::default()
+        },
+        false => Truth {
+            speed: u,
+            yaw_rate: ay / u / 57.3,
+            steer: 0.0079 * ay / 2.0,
+            // The rest of `ay` (not logged as a bank): what u·r misses.
+            bank: ((ay - ay / 57.3) / G).asin(),
+            ..Truth::default()
+        },
+    }
+}
+
+/// A steady 2 m/s² turn whose yaw rate read 57× too small passed every
+/// yaw test of a straight and gave an `ay` offset of 1.98 m/s²: `ay` is a
+/// witness of its own now. A turn gentle enough to pass (0.8 m/s²) gives
+/// an offset no accelerometer has, and is said so.
+#[test]
+fn a_steady_lateral_acceleration_is_no_straight_whatever_the_yaw_rate() {
+    let s = Sensors {
+        offset: [0.0, 0.1, 0.0],
+        ..SENSORS
+    };
+    let r = calibrate(&[run(30.0, &slipped_turn(2.0, 12.0), s, 3)]);
+    assert_eq!(span_count(&r, SpanKind::Straight), 1, "{:?}", r.spans);
+    let straight = r.spans.iter().find(|s| s.kind == SpanKind::Straight);
+    assert!(straight.unwrap().t_end < 12.0, "{:?}", r.spans);
+    let ay = r.channel(RunChannel::Ay).unwrap();
+    let p = ay.straight.unwrap();
+    assert!((p.mean - 0.1).abs() < 4.0 * p.std_error, "{p:?}");
+    assert!(!ay.line().contains("MEMS"), "{}", ay.line());
+    let r = calibrate(&[run(30.0, &slipped_turn(0.8, 0.0), s, 3)]);
+    let line = r.channel(RunChannel::Ay).unwrap().line();
+    assert!(
+        line.contains("; the straights' 0.90 m/s² is beyond the 0.01–0.5 m/s² of an automotive MEMS accelerometer's bias: more likely a turn read as a straight"),
+        "{line}"
+    );
+}

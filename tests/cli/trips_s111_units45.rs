@@ -1,0 +1,144 @@
+//! Session 111, units45: a yaw rate in rad/s declared in degrees (read
+//! 57.3× too small) was taken by `diagnose` without a word where its steer
+//! is too gentle for the steer check (an ISO 7401 step at 100 km/h and
+//! 2 m/s² steers 0.008 rad) and its `u·r` too small for the slope check;
+//! the calibration took the steady 2 m/s² turn for a straight with an `ay`
+//! offset of 1.98 m/s². And a refusal of six runs alike named the first
+//! and not the two taken.
+
+use super::calibration::{diagnosed, Noise};
+use super::*;
+
+/// The refusal's `reads N× too small`.
+fn too_small(e: &str) -> f64 {
+    let at = e
+        .find("the yaw rate reads ")
+        .unwrap_or_else(|| panic!("{e}"));
+    let rest = &e[at + "the yaw rate reads ".len()..];
+    rest[..rest.find('×').unwrap()].parse().unwrap()
+}
+
+/// The tester's `one_deg` campaign: synth's 100 km/h 2 m/s² step (logged
+/// in rad/s) and its sweep, with `degrees = ["yaw_rate"]`. The step is
+/// refused at its file, row and column with the factor and the fix (the
+/// sweep of this truth by the steer check); `metrics` refuses the same
+/// file with the same words (one rule, read with the run).
+#[test]
+fn a_yaw_rate_declared_in_degrees_is_refused_by_its_steady_ay_in_diagnose_and_metrics() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let vehicle = fs::read_to_string(c.join("vehicle.toml")).unwrap();
+    let campaign = c.join("one_deg.toml");
+    let runs = "[runs]\nfiles = [\"runs/step_100kph_2ms2.csv\", \"runs/sweep_080kph.csv\"]\ndegrees = [\"yaw_rate\"]\n";
+    fs::write(&campaign, format!("{vehicle}\n{runs}")).unwrap();
+    let said = fails_cleanly("diagnose", &campaign, dir.path());
+    let lines: Vec<&str> = said.lines().collect();
+    assert_eq!(
+        lines[0], "error: 2 of 2 runs refused, in run order:",
+        "{said}"
+    );
+    let step = c.join("runs/step_100kph_2ms2.csv");
+    let at = format!("  {}:", step.display());
+    let e = lines[1];
+    assert!(e.starts_with(&at), "{said}");
+    // Row and column: the yaw rate is the file's fourth column.
+    let place = &e[at.len()..e.find(": column `yaw_rate`: ").unwrap()];
+    let (line, column) = place.split_once(':').unwrap();
+    assert!(line.parse::<usize>().unwrap() > 100, "{e}");
+    assert_eq!(column, "4", "{e}");
+    // 57.3 within the noise of the means.
+    let factor = too_small(e);
+    assert!((factor / 57.2958 - 1.0).abs() < 0.03, "{e}");
+    assert!(
+        e.contains(
+            "57.3× is a yaw rate in rad/s read as deg/s: was `yaw_rate` declared in degrees"
+        ) && e.contains("Take it out of `degrees`"),
+        "{e}"
+    );
+    assert!(!said.contains("calibration"), "{said}");
+    let o = run(&["metrics", step.to_str().unwrap(), "--degrees", "yaw_rate"]);
+    assert!(!o.status.success());
+    let m = stderr(&o);
+    let words = |s: &str| {
+        let s = &s[s.find(": column `yaw_rate`: ").unwrap()..];
+        s.lines().next().unwrap().to_string()
+    };
+    assert_eq!(words(&m), words(e), "{m}");
+    // Read as logged, the step is measured.
+    assert!(run(&["metrics", step.to_str().unwrap()]).status.success());
+}
+
+/// A log at 25 m/s, 100 Hz, 20 s: steer `steer`, `ay` steady at `ay`
+/// (noise 0.05 m/s²), the yaw rate `yaw` (noise 0.002 rad/s × `yaw` of
+/// the true one's scale: read as logged).
+fn steady(seed: u64, steer: f64, ay: f64, yaw: f64, scale: f64) -> String {
+    let mut noise = Noise(seed);
+    let mut s = String::from("t,speed,steer,yaw_rate,ay\n");
+    for i in 0..2000 {
+        s += &format!(
+            "{:.2},25.0,{steer:.6},{:.7},{:.5}\n",
+            i as f64 * 0.01,
+            yaw + 0.002 * scale * noise.gauss(),
+            ay + 0.05 * noise.gauss()
+        );
+    }
+    s
+}
+
+/// A steady 2 m/s² with the steer straight and no yaw rate (a banked road
+/// without its bank column) is no straight, and a steady 0.8 m/s² whose
+/// yaw rate reads 57.3× too small (too gentle for any check of the yaw
+/// rate's unit) passes the straights' tests but gives an offset no
+/// accelerometer has, said with what it more likely is.
+#[test]
+fn a_steady_ay_is_no_straight_and_an_offset_no_accelerometer_has_is_said() {
+    let slipped = 1.0 / 57.2958;
+    let gentle = steady(2, 0.0056, 0.8, 0.8 / 25.0 * slipped, slipped);
+    let (_dir, stdout, d) = diagnosed(&[
+        ("banked.csv", steady(1, 0.0, 2.0, 0.0, 1.0)),
+        ("gentle.csv", gentle),
+    ]);
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("  calibration: ay offset"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(
+        line.contains(" m/s² on 1 straight (")
+            && line.contains("; the straights' 0.80 m/s² is beyond the 0.01–0.5 m/s² of an automotive MEMS accelerometer's bias: more likely a turn read as a straight (a yaw rate read too small: is its unit right?)"),
+        "{stdout}"
+    );
+    let spans = d["calibration"]["spans"].as_array().unwrap();
+    assert!(
+        spans
+            .iter()
+            .all(|s| s["run"].as_str().unwrap().ends_with("gentle.csv")),
+        "{spans:?}"
+    );
+    assert_eq!(d["calibration"]["criteria"]["straight_ay"], 1.0);
+}
+
+/// synth's campaign with `degrees = ["yaw_rate"]` on runs in rad/s but
+/// the sweep's (written in deg/s here): six refused alike by the steer
+/// check, the 100 km/h step by its steady `ay`; the run taken, the sweep,
+/// is named.
+#[test]
+fn runs_refused_alike_name_the_runs_that_passed() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let vehicle = c.join("vehicle.toml");
+    let text = fs::read_to_string(&vehicle).unwrap();
+    let runs = "[runs]\ndegrees = [\"yaw_rate\"]\n";
+    fs::write(&vehicle, format!("{text}\n{runs}")).unwrap();
+    let sweep = c.join("runs/sweep_080kph.csv");
+    map_column(&sweep, "yaw_rate", f64::to_degrees);
+    let e = fails_cleanly("diagnose", &c, dir.path());
+    let lines: Vec<&str> = e.lines().collect();
+    assert_eq!(lines[0], "error: 7 of 8 runs refused, in run order:", "{e}");
+    assert!(
+        lines[1].ends_with("(the first of 6 runs refused alike)"),
+        "{e}"
+    );
+    assert!(lines[2].contains("step_100kph_2ms2.csv:"), "{e}");
+    assert_eq!(lines[3], format!("  passed: {}", sweep.display()), "{e}");
+    assert_eq!(lines.len(), 4, "{e}");
+}

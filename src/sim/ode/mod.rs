@@ -314,35 +314,17 @@ trait Embedded<const N: usize> {
     /// One step from `(t, x)` with first stage `k1`: the stages and the
     /// solution at `t + h`, the stages at the step's end evaluated at
     /// `t_right` (the input's left limit at a breakpoint).
-    fn step<S: OdeSystem<N>>(
-        sys: &mut S,
-        t: f64,
-        x: &[f64; N],
-        h: f64,
-        k1: [f64; N],
-        t_right: f64,
-    ) -> (Self::Stages, [f64; N]);
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn step<S: OdeSystem<N>>(sys: &mut S, t: f64, x: &[f64; N], h: f64, k1: [f64; N], t_right: f64) -> (Self::Stages, [f64; N]);
     /// The derivative at the step's end: the next step's first stage.
     fn next_first(stages: &Self::Stages) -> [f64; N];
     /// The scaled norm of the step's error estimate.
-    fn error(
-        h: f64,
-        stages: &Self::Stages,
-        x: &[f64; N],
-        x_new: &[f64; N],
-        tol: &Tolerances,
-    ) -> f64;
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn error(h: f64, stages: &Self::Stages, x: &[f64; N], x_new: &[f64; N], tol: &Tolerances) -> f64;
     /// The accepted step's dense-output segment and the evaluations it
     /// took beyond the step's.
-    fn segment<S: OdeSystem<N>>(
-        sys: &mut S,
-        t: f64,
-        t_new: f64,
-        h: f64,
-        x: &[f64; N],
-        x_new: &[f64; N],
-        stages: &Self::Stages,
-    ) -> (Segment<N>, usize);
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn segment<S: OdeSystem<N>>(sys: &mut S, t: f64, t_new: f64, h: f64, x: &[f64; N], x_new: &[f64; N], stages: &Self::Stages) -> (Segment<N>, usize);
 }
 
 /// Integrates `sys` from `x0` at `t_start` to `t_end` with the pair `P`,
@@ -382,17 +364,8 @@ fn adaptive<const N: usize, S: OdeSystem<N>, P: Embedded<N>>(
                 sol.stats.stalled = true;
                 return sol;
             }
-            h = h.min(tol.max_step);
-            // Land exactly on the stop; avoid a sliver step before it.
-            let remaining = stop - t;
-            let last = h >= remaining * (1.0 - 1e-12) || remaining - h < 1e-3 * h;
-            if last {
-                h = remaining;
-            }
-            // A step that ends on a breakpoint sees the input's left limit
-            // there (an ideal step steer acts from the next step on).
-            let t_new = if last { stop } else { t + h };
-            let t_right = if last { stop.next_down() } else { t_new };
+            let (last, t_new, t_right);
+            (h, last, t_new, t_right) = landing(t, h.min(tol.max_step), stop);
             let (ks, x_new) = P::step(sys, t, &x, h, k1, t_right);
             sol.stats.evaluations += P::STEP_EVALUATIONS;
             let err = P::error(h, &ks, &x, &x_new, tol);
@@ -432,6 +405,22 @@ fn adaptive<const N: usize, S: OdeSystem<N>, P: Embedded<N>>(
         }
     }
     sol
+}
+
+/// The step from `t` of about `h` towards `stop`: its length, whether it
+/// is the piece's last, its end and the time its end's stages see. It
+/// lands exactly on the stop and avoids a sliver step before it; a step
+/// that ends on a breakpoint sees the input's left limit there (an ideal
+/// step steer acts from the next step on).
+#[inline]
+fn landing(t: f64, h: f64, stop: f64) -> (f64, bool, f64, f64) {
+    let remaining = stop - t;
+    let last = h >= remaining * (1.0 - 1e-12) || remaining - h < 1e-3 * h;
+    if last {
+        (remaining, true, stop, stop.next_down())
+    } else {
+        (h, false, t + h, t + h)
+    }
 }
 
 /// The ends of the integration's pieces: the breakpoints strictly inside

@@ -84,6 +84,19 @@ fn step_steer(c: &mut Criterion) {
             sol.stats
         })
     });
+    // The same job by DOP853 (Dormand & Prince's 8(5,3) pair): about half
+    // the right-hand sides, its error below SciPy's RK45's at the same
+    // tolerance (`vehicle::tests::dop853`).
+    g.bench_function("solver_rtol_1e-10_dop853", |b| {
+        let mut states = Vec::with_capacity(grid.len());
+        b.iter(|| {
+            let sol = coarse
+                .solve_dop853(black_box(&model), black_box(&man), State::default(), &scipy)
+                .expect("a (β, r) model has a dense solution");
+            sol.states_into(&grid, &mut states);
+            sol.stats
+        })
+    });
     g.finish();
 }
 

@@ -465,10 +465,11 @@ impl Integrator {
     }
 
     /// The error-controlled (β, r) solution of `manoeuvre` from `x0`
-    /// (restarted at the manoeuvre's breakpoints) and nothing else: what an
-    /// ODE solver returns, for a user who wants the states at chosen times
-    /// ([`DenseSolution::states_into`]) without the model's other signals.
-    /// None when the model has states beyond (β, r).
+    /// (restarted at the manoeuvre's breakpoints) by Dormand–Prince 5(4)
+    /// and nothing else: what an ODE solver returns, for a user who wants
+    /// the states at chosen times ([`DenseSolution::states_into`]) without
+    /// the model's other signals. None when the model has states beyond
+    /// (β, r).
     pub fn solve_dopri5(
         &self,
         model: &VehicleModel,
@@ -476,25 +477,45 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> Option<DenseSolution<2>> {
+        self.solve_with(model, manoeuvre, x0, tol, false)
+    }
+
+    /// [`Integrator::solve_dopri5`] by Dormand & Prince's 8(5,3) pair
+    /// ([`ode::dop853`]): at a tight tolerance (rtol 1e-10) about half the
+    /// right-hand sides, its dense output seventh order.
+    pub fn solve_dop853(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        tol: &Tolerances,
+    ) -> Option<DenseSolution<2>> {
+        self.solve_with(model, manoeuvre, x0, tol, true)
+    }
+
+    /// The (β, r) solution by DOP853 where `eighth_order`, else by
+    /// Dormand–Prince 5(4).
+    fn solve_with(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        tol: &Tolerances,
+        eighth_order: bool,
+    ) -> Option<DenseSolution<2>> {
         if model.options.effects.extra_states() {
             return None;
         }
         let x = head(&self.initial(model, manoeuvre, x0));
-        let mut sys = Driven::new(
-            model,
-            Source::Manoeuvre(manoeuvre),
-            self.friction,
-            load_tolerance(tol),
-        );
+        let source = Source::Manoeuvre(manoeuvre);
+        let mut sys = Driven::new(model, source, self.friction, load_tolerance(tol));
         let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
-        Some(ode::dopri5(
-            &mut sys,
-            t0,
-            t1,
-            x,
-            &manoeuvre.breakpoints(),
-            tol,
-        ))
+        let breakpoints = manoeuvre.breakpoints();
+        Some(if eighth_order {
+            ode::dop853(&mut sys, t0, t1, x, &breakpoints, tol)
+        } else {
+            ode::dopri5(&mut sys, t0, t1, x, &breakpoints, tol)
+        })
     }
 
     /// The error-controlled solution of `manoeuvre` from `x0` (restarted at

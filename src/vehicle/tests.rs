@@ -507,6 +507,7 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     }
 }
 
+mod dop853;
 mod dopri5;
 mod equilibrium;
 mod longitudinal;

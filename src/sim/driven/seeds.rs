@@ -3,7 +3,7 @@
 //! starts, from that stage's own last solutions or from the stages before
 //! it, whichever predicted that stage better last time. Units: s, m/s².
 
-use crate::sim::ode::DOPRI5_PROBE;
+use crate::sim::ode::ADAPTIVE_STAGES;
 
 /// The load-transfer seeds of the adaptive method, stage by stage: each
 /// stage's last three (t, ay) solutions, newest first, and how far each of
@@ -15,9 +15,9 @@ use crate::sim::ode::DOPRI5_PROBE;
 pub(super) struct Adaptive {
     /// The stage being evaluated ([`crate::sim::ode::OdeSystem::dopri5_stage`]).
     pub(super) stage: usize,
-    solutions: [[(f64, f64); 3]; DOPRI5_PROBE + 1],
+    solutions: [[(f64, f64); 3]; ADAPTIVE_STAGES],
     /// |prediction − solution| of [the stage's own, the linear], m/s².
-    misses: [[f64; 2]; DOPRI5_PROBE + 1],
+    misses: [[f64; 2]; ADAPTIVE_STAGES],
     /// This evaluation's two predictions (the stage's own None).
     predicted: (Option<f64>, f64),
 }
@@ -26,8 +26,8 @@ impl Default for Adaptive {
     fn default() -> Self {
         Self {
             stage: 0,
-            solutions: [[(f64::NAN, 0.0); 3]; DOPRI5_PROBE + 1],
-            misses: [[f64::INFINITY, 0.0]; DOPRI5_PROBE + 1],
+            solutions: [[(f64::NAN, 0.0); 3]; ADAPTIVE_STAGES],
+            misses: [[f64::INFINITY, 0.0]; ADAPTIVE_STAGES],
             predicted: (None, 0.0),
         }
     }

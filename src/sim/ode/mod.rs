@@ -1,15 +1,21 @@
 //! Integration of small ODE systems `ẋ = f(t, x)` with a state of `N`
-//! reals: the error-controlled Dormand–Prince 5(4) pair with its continuous
-//! (dense) output, the classical fixed-step RK4, and the fixed-step
-//! linearly implicit Rosenbrock–W method ROS34PW2 for stiff systems.
+//! reals: two error-controlled embedded Runge–Kutta pairs with their
+//! continuous (dense) output, Dormand–Prince 5(4) and 8(5,3), the classical
+//! fixed-step RK4, and the fixed-step linearly implicit Rosenbrock–W method
+//! ROS34PW2 for stiff systems.
 //!
 //! Methods:
 //! - Dormand & Prince (1980), "A family of embedded Runge–Kutta formulae",
 //!   J. Comp. Appl. Math. 6; step-size control (PI controller with β = 0.04,
 //!   safety 0.9, growth within [0.2, 10]) and the fourth-order dense output
 //!   as in Hairer, Nørsett & Wanner, *Solving Ordinary Differential
-//!   Equations I* (2nd ed., 1993), §II.4–II.6. The local error is measured
-//!   in the weighted RMS norm with weights `atol + rtol·max(|x_old|, |x_new|)`.
+//!   Equations I* (2nd ed., 1993), §II.4–II.6 (`dopri5.rs`). The local
+//!   error is measured in the weighted RMS norm with weights
+//!   `atol + rtol·max(|x_old|, |x_new|)`.
+//! - DOP853, Dormand & Prince's 8(5,3) pair with its seventh-order dense
+//!   output, as in Hairer et al. (1993), §II.10 and Hairer's `dop853.f`
+//!   (`dop853.rs`): at a tight tolerance it takes half the evaluations of
+//!   the 5(4) pair for a 10 s step steer.
 //! - ROS34PW2: Rang & Angermann (2005), "New Rosenbrock W-methods of order 3
 //!   for partial differential algebraic equations of index 1", BIT Numer.
 //!   Math. 45; the scheme's form as in Hairer & Wanner, *Solving Ordinary
@@ -37,12 +43,17 @@
 //! step except the growth of the stored dense solution (one segment of
 //! `5·N` reals per accepted step). Units are whatever the system uses.
 //!
-//! Layout: this file holds the system's trait, Dormand–Prince with its dense
-//! output and RK4; `rosenbrock.rs` holds ROS34PW2.
+//! Layout: this file holds the system's trait, the dense solution, the
+//! adaptive pairs' common step loop and RK4; `dopri5.rs` and `dop853.rs`
+//! hold the pairs, `rosenbrock.rs` holds ROS34PW2.
 
+mod dop853;
+mod dopri5;
 mod rosenbrock;
 pub mod sensitivity;
 
+pub use dop853::dop853;
+pub use dopri5::dopri5;
 pub use rosenbrock::{rosenbrock_w, rosenbrock_w_dual, W_NODES, W_PROBE, W_TIME_PROBE};
 
 /// An ODE system with `N` states. `&mut self` lets a system keep caches
@@ -59,12 +70,15 @@ pub trait OdeSystem<const N: usize> {
     /// call it.
     fn rk4_stage(&mut self, _step: usize, _stage: usize) {}
 
-    /// Called by [`dopri5`] before each evaluation with its stage: 0–6 the
-    /// seven of Dormand–Prince (0 a restart's first, 6 a step's end, whose
-    /// value the next step reuses), [`DOPRI5_PROBE`] the starting step's
-    /// probe. A system can then keep one load-transfer starting point per
-    /// stage: a stage's state is off the solution by an amount of its own,
-    /// about the same from one step to the next.
+    /// Called by [`dopri5`] and [`dop853`] before each evaluation with its
+    /// stage: 0–6 the seven of Dormand–Prince 5(4) (0 a restart's first, 6
+    /// a step's end, whose value the next step reuses), [`DOPRI5_PROBE`]
+    /// the starting step's probe (both pairs), [`DOP853_FIRST_STAGE`] + 0–15
+    /// the sixteen of DOP853 (+12 a step's end, +13–15 its dense output's);
+    /// fewer than [`ADAPTIVE_STAGES`] in all. A system can then keep one
+    /// load-transfer starting point per stage: a stage's state is off the
+    /// solution by an amount of its own, about the same from one step to
+    /// the next.
     fn dopri5_stage(&mut self, _stage: usize) {}
 
     /// Called by [`rosenbrock_w`] before each evaluation: `stage` 0–3 are
@@ -86,6 +100,13 @@ pub trait OdeSystem<const N: usize> {
 /// The stage [`dopri5`] tells [`OdeSystem::dopri5_stage`] for the starting
 /// step's probe (after the method's seven, 0–6).
 pub const DOPRI5_PROBE: usize = 7;
+
+/// The stage [`dop853`] tells [`OdeSystem::dopri5_stage`] for its first
+/// stage; its others follow (after Dormand–Prince 5(4)'s and the probe).
+pub const DOP853_FIRST_STAGE: usize = DOPRI5_PROBE + 1;
+
+/// The stages [`OdeSystem::dopri5_stage`] can be told, 0 to this less one.
+pub const ADAPTIVE_STAGES: usize = DOP853_FIRST_STAGE + 16;
 
 /// Error tolerances of the adaptive integrator.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -141,12 +162,14 @@ pub fn step_budget(span: f64, tol: &Tolerances) -> usize {
 }
 
 /// One accepted step's continuous extension: the state at `t0 + θ·h` is
-/// `r0 + θ(r1 + (1−θ)(r2 + θ(r3 + (1−θ) r4)))`, fourth order in θ ∈ [0, 1].
+/// `r0 + θ(r1 + (1−θ)(r2 + θ(r3 + (1−θ)(r4 + θ(r5 + (1−θ)(r6 + θ r7))))))`,
+/// θ ∈ [0, 1]: Dormand–Prince 5(4)'s of order 4 (`r5..r7` zero, which
+/// leaves its values to the bit), DOP853's of order 7 (Hairer's `contd8`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Segment<const N: usize> {
     t0: f64,
     h: f64,
-    r: [[f64; N]; 5],
+    r: [[f64; N]; 8],
 }
 
 impl<const N: usize> Segment<N> {
@@ -155,7 +178,8 @@ impl<const N: usize> Segment<N> {
         let th1 = 1.0 - th;
         let r = &self.r;
         std::array::from_fn(|i| {
-            r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
+            let tail = r[4][i] + th * (r[5][i] + th1 * (r[6][i] + th * r[7][i]));
+            r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * tail)))
         })
     }
 }
@@ -259,77 +283,54 @@ impl<const N: usize> DenseSolution<N> {
     }
 }
 
-// Dormand–Prince 5(4) coefficients (Dormand & Prince 1980).
-const C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
-const A2: [f64; 1] = [0.2];
-const A3: [f64; 2] = [3.0 / 40.0, 9.0 / 40.0];
-const A4: [f64; 3] = [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0];
-const A5: [f64; 4] = [
-    19372.0 / 6561.0,
-    -25360.0 / 2187.0,
-    64448.0 / 6561.0,
-    -212.0 / 729.0,
-];
-const A6: [f64; 5] = [
-    9017.0 / 3168.0,
-    -355.0 / 33.0,
-    46732.0 / 5247.0,
-    49.0 / 176.0,
-    -5103.0 / 18656.0,
-];
-/// Fifth-order weights (also the seventh stage's row: first same as last).
-const B: [f64; 6] = [
-    35.0 / 384.0,
-    0.0,
-    500.0 / 1113.0,
-    125.0 / 192.0,
-    -2187.0 / 6784.0,
-    11.0 / 84.0,
-];
-/// Fifth- minus fourth-order weights, stages 1..7.
-const E: [f64; 7] = [
-    71.0 / 57600.0,
-    0.0,
-    -71.0 / 16695.0,
-    71.0 / 1920.0,
-    -17253.0 / 339200.0,
-    22.0 / 525.0,
-    -1.0 / 40.0,
-];
-/// Dense-output weights, stages 1..7 (Hairer et al. 1993, §II.6).
-const D: [f64; 7] = [
-    -12715105075.0 / 11282082432.0,
-    0.0,
-    87487479700.0 / 32700410799.0,
-    -10690763975.0 / 1880347072.0,
-    701980252875.0 / 199316789632.0,
-    -1453857185.0 / 822651844.0,
-    69997945.0 / 29380423.0,
-];
+/// An embedded Runge–Kutta pair as [`adaptive`] steps it: one step's
+/// stages, its error estimate, its dense-output segment and the constants
+/// of its step-size control (Hairer's PI controller: the step grows by
+/// `1/fac`, `fac = err^(EXPONENT − 0.75·BETA) / err_old^BETA / 0.9` within
+/// `[FAC_MIN, FAC_MAX]`, and shrinks after a rejection by at most
+/// `FAC_MAX`).
+trait Embedded<const N: usize> {
+    /// The stages of one step.
+    type Stages;
+    /// The stage [`OdeSystem::dopri5_stage`] is told for a restart's first
+    /// evaluation; the step's other stages follow it.
+    const FIRST_STAGE: usize;
+    /// Evaluations of one step after its first stage (reused from the
+    /// last step's end).
+    const STEP_EVALUATIONS: usize;
+    /// `1/(q + 1)`, `q` the order of the error estimate.
+    const EXPONENT: f64;
+    /// The PI controller's β (0: the classical controller).
+    const BETA: f64;
+    /// Bounds of `fac`: the step's growth (`1/FAC_MIN`) and shrink.
+    const FAC_MIN: f64;
+    const FAC_MAX: f64;
+    /// Whether a piece that starts at rest (the derivative zero at its
+    /// start and at the starting step's probe) is tried in one step:
+    /// Hairer's starting step of 1e-6 s then takes seven or eight steps,
+    /// growing, to cross it (a step steer's second before the steer).
+    const AT_REST_WHOLE_SPAN: bool;
 
-fn combine<const N: usize>(x: &[f64; N], h: f64, ks: &[[f64; N]], w: &[f64]) -> [f64; N] {
-    std::array::from_fn(|i| {
-        let mut s = 0.0;
-        for (k, wj) in ks.iter().zip(w) {
-            s += wj * k[i];
-        }
-        x[i] + h * s
-    })
+    /// One step from `(t, x)` with first stage `k1`: the stages and the
+    /// solution at `t + h`, the stages at the step's end evaluated at
+    /// `t_right` (the input's left limit at a breakpoint).
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn step<S: OdeSystem<N>>(sys: &mut S, t: f64, x: &[f64; N], h: f64, k1: [f64; N], t_right: f64) -> (Self::Stages, [f64; N]);
+    /// The derivative at the step's end: the next step's first stage.
+    fn next_first(stages: &Self::Stages) -> [f64; N];
+    /// The scaled norm of the step's error estimate.
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn error(h: f64, stages: &Self::Stages, x: &[f64; N], x_new: &[f64; N], tol: &Tolerances) -> f64;
+    /// The accepted step's dense-output segment and the evaluations it
+    /// took beyond the step's.
+    #[rustfmt::skip] // one line: the architecture test reads a bodiless `fn` by its line
+    fn segment<S: OdeSystem<N>>(sys: &mut S, t: f64, t_new: f64, h: f64, x: &[f64; N], x_new: &[f64; N], stages: &Self::Stages) -> (Segment<N>, usize);
 }
 
-fn rms_norm<const N: usize>(e: &[f64; N], x0: &[f64; N], x1: &[f64; N], tol: &Tolerances) -> f64 {
-    let mut s = 0.0;
-    for i in 0..N {
-        let w = tol.atol + tol.rtol * x0[i].abs().max(x1[i].abs());
-        s += (e[i] / w).powi(2);
-    }
-    (s / N as f64).sqrt()
-}
-
-/// Integrates `sys` from `x0` at `t_start` to `t_end` with Dormand–Prince
-/// 5(4), restarting at every breakpoint inside the interval (sorted or not),
+/// Integrates `sys` from `x0` at `t_start` to `t_end` with the pair `P`,
+/// restarting at every breakpoint inside the interval (sorted or not),
 /// and returns the dense solution.
-pub fn dopri5<const N: usize, S: OdeSystem<N>>(
+fn adaptive<const N: usize, S: OdeSystem<N>, P: Embedded<N>>(
     sys: &mut S,
     t_start: f64,
     t_end: f64,
@@ -349,11 +350,12 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
         if stop <= t {
             continue;
         }
-        sys.dopri5_stage(0);
+        sys.dopri5_stage(P::FIRST_STAGE);
         let mut k1 = sys.derivatives(t, &x);
         sol.stats.evaluations += 1;
         if h == 0.0 {
-            h = initial_step(sys, t, &x, &k1, stop - t, tol, &mut sol.stats);
+            h = initial_step::<N, S, P>(sys, t, &x, &k1, stop - t, tol);
+            sol.stats.evaluations += 1;
         }
         let mut err_old: f64 = 1e-4;
         let mut last_rejected = false;
@@ -362,46 +364,41 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
                 sol.stats.stalled = true;
                 return sol;
             }
-            h = h.min(tol.max_step);
-            // Land exactly on the stop; avoid a sliver step before it.
-            let remaining = stop - t;
-            let last = h >= remaining * (1.0 - 1e-12) || remaining - h < 1e-3 * h;
-            if last {
-                h = remaining;
-            }
-            // A step that ends on a breakpoint sees the input's left limit
-            // there (an ideal step steer acts from the next step on).
-            let t_new = if last { stop } else { t + h };
-            let t_right = if last { stop.next_down() } else { t_new };
-            let (ks, x_new) = dopri5_stages(sys, t, &x, h, k1, t_right);
-            let k7 = ks[6];
-            sol.stats.evaluations += 6;
-            let err = step_error(h, &ks, &x, &x_new, tol);
+            let (last, t_new, t_right);
+            (h, last, t_new, t_right) = landing(t, h.min(tol.max_step), stop);
+            let (ks, x_new) = P::step(sys, t, &x, h, k1, t_right);
+            sol.stats.evaluations += P::STEP_EVALUATIONS;
+            let err = P::error(h, &ks, &x, &x_new, tol);
             if !err.is_finite() {
                 h *= 0.1;
                 sol.stats.rejected += 1;
                 last_rejected = true;
                 continue;
             }
-            // PI step-size control.
-            let fac11 = err.powf(0.2 - 0.04 * 0.75);
+            let fac11 = err.powf(P::EXPONENT - P::BETA * 0.75);
             if err <= 1.0 {
-                let fac = (fac11 / err_old.powf(0.04) / 0.9).clamp(0.1, 5.0);
+                let damping = if P::BETA > 0.0 {
+                    err_old.powf(P::BETA)
+                } else {
+                    1.0
+                };
+                let fac = (fac11 / damping / 0.9).clamp(P::FAC_MIN, P::FAC_MAX);
                 let mut h_new = h / fac;
                 if last_rejected {
                     h_new = h_new.min(h);
                 }
                 err_old = err.max(1e-4);
-                sol.segments
-                    .push(dense_segment(t, t_new, h, &x, &x_new, &ks));
+                let (segment, dense_evaluations) = P::segment(sys, t, t_new, h, &x, &x_new, &ks);
+                sol.segments.push(segment);
+                sol.stats.evaluations += dense_evaluations;
                 sol.stats.accepted += 1;
-                (t, x, k1) = (t_new, x_new, k7);
+                (t, x, k1) = (t_new, x_new, P::next_first(&ks));
                 if !last {
                     h = h_new;
                 }
                 last_rejected = false;
             } else {
-                h /= (fac11 / 0.9).min(5.0);
+                h /= (fac11 / 0.9).min(P::FAC_MAX);
                 sol.stats.rejected += 1;
                 last_rejected = true;
             }
@@ -409,9 +406,26 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
     }
     sol
 }
+
+/// The step from `t` of about `h` towards `stop`: its length, whether it
+/// is the piece's last, its end and the time its end's stages see. It
+/// lands exactly on the stop and avoids a sliver step before it; a step
+/// that ends on a breakpoint sees the input's left limit there (an ideal
+/// step steer acts from the next step on).
+#[inline]
+fn landing(t: f64, h: f64, stop: f64) -> (f64, bool, f64, f64) {
+    let remaining = stop - t;
+    let last = h >= remaining * (1.0 - 1e-12) || remaining - h < 1e-3 * h;
+    if last {
+        (remaining, true, stop, stop.next_down())
+    } else {
+        (h, false, t + h, t + h)
+    }
+}
+
 /// The ends of the integration's pieces: the breakpoints strictly inside
 /// `(t_start, t_end)`, sorted and without repeats, then `t_end`. Apart
-/// from [`dopri5`] so that its loop reads on a screen.
+/// from [`adaptive`] so that its loop reads on a screen.
 fn stops(breakpoints: &[f64], t_start: f64, t_end: f64) -> Vec<f64> {
     let mut cuts: Vec<f64> = breakpoints
         .iter()
@@ -424,87 +438,29 @@ fn stops(breakpoints: &[f64], t_start: f64, t_end: f64) -> Vec<f64> {
     cuts
 }
 
-/// One Dormand–Prince step from `(t, x)` with first stage `k1`: the seven
-/// stages and the fifth-order solution at `t + h`, the last two stages
-/// evaluated at `t_right` (the input's left limit at a breakpoint). Apart
-/// from [`dopri5`]'s step-size control so that each reads on a screen;
-/// inlined, on fixed arrays, so the hot loop is what it was.
-#[inline]
-fn dopri5_stages<const N: usize, S: OdeSystem<N>>(
-    sys: &mut S,
-    t: f64,
-    x: &[f64; N],
-    h: f64,
-    k1: [f64; N],
-    t_right: f64,
-) -> ([[f64; N]; 7], [f64; N]) {
-    let mut stage = |j: usize, t: f64, x: &[f64; N]| {
-        sys.dopri5_stage(j);
-        sys.derivatives(t, x)
-    };
-    let k2 = stage(1, t + C[1] * h, &combine(x, h, &[k1], &A2));
-    let k3 = stage(2, t + C[2] * h, &combine(x, h, &[k1, k2], &A3));
-    let k4 = stage(3, t + C[3] * h, &combine(x, h, &[k1, k2, k3], &A4));
-    let k5 = stage(4, t + C[4] * h, &combine(x, h, &[k1, k2, k3, k4], &A5));
-    let k6 = stage(5, t_right, &combine(x, h, &[k1, k2, k3, k4, k5], &A6));
-    let x_new = combine(x, h, &[k1, k2, k3, k4, k5, k6], &B);
-    let k7 = stage(6, t_right, &x_new);
-    ([k1, k2, k3, k4, k5, k6, k7], x_new)
-}
-
-/// The scaled RMS norm of the step's embedded error estimate (fifth minus
-/// fourth order). Apart from [`dopri5`] so that its loop reads on a screen.
-#[inline]
-fn step_error<const N: usize>(
-    h: f64,
-    ks: &[[f64; N]; 7],
-    x: &[f64; N],
-    x_new: &[f64; N],
-    tol: &Tolerances,
-) -> f64 {
-    let e: [f64; N] =
-        std::array::from_fn(|i| h * ks.iter().zip(&E).map(|(k, w)| w * k[i]).sum::<f64>());
-    rms_norm(&e, x, x_new, tol)
-}
-
-/// The dense-output segment of an accepted step from `(t, x)` to
-/// `(t_new, x_new)` with stages `ks` (Hairer's continuous extension of
-/// order 4). Apart from [`dopri5`] so that its loop reads on a screen.
-#[inline]
-fn dense_segment<const N: usize>(
-    t: f64,
-    t_new: f64,
-    h: f64,
-    x: &[f64; N],
-    x_new: &[f64; N],
-    ks: &[[f64; N]; 7],
-) -> Segment<N> {
-    let (k1, k7) = (&ks[0], &ks[6]);
-    let dx: [f64; N] = std::array::from_fn(|i| x_new[i] - x[i]);
-    let bspl: [f64; N] = std::array::from_fn(|i| h * k1[i] - dx[i]);
-    Segment {
-        t0: t,
-        h: t_new - t,
-        r: [
-            *x,
-            dx,
-            bspl,
-            std::array::from_fn(|i| dx[i] - h * k7[i] - bspl[i]),
-            std::array::from_fn(|i| h * ks.iter().zip(&D).map(|(k, w)| w * k[i]).sum::<f64>()),
-        ],
+fn rms_norm<const N: usize>(e: &[f64; N], x0: &[f64; N], x1: &[f64; N], tol: &Tolerances) -> f64 {
+    let mut s = 0.0;
+    for i in 0..N {
+        let w = tol.atol + tol.rtol * x0[i].abs().max(x1[i].abs());
+        s += (e[i] / w).powi(2);
     }
+    (s / N as f64).sqrt()
 }
 
 /// Hairer's starting step: small enough that an explicit Euler step's
-/// error stays near the tolerance.
-fn initial_step<const N: usize, S: OdeSystem<N>>(
+/// error stays near the tolerance, the exponent the pair's (1/order). A
+/// system at rest (no derivative at the start nor at the probe) starts
+/// with a millionth of a second, or under a pair that says so
+/// ([`Embedded::AT_REST_WHOLE_SPAN`]) with the whole piece, which the error
+/// control then accepts or cuts. It evaluates `sys` once (the caller
+/// counts it).
+fn initial_step<const N: usize, S: OdeSystem<N>, P: Embedded<N>>(
     sys: &mut S,
     t: f64,
     x: &[f64; N],
     f0: &[f64; N],
     span: f64,
     tol: &Tolerances,
-    stats: &mut Stats,
 ) -> f64 {
     let scale = |i: usize| tol.atol + tol.rtol * x[i].abs();
     let norm =
@@ -520,13 +476,15 @@ fn initial_step<const N: usize, S: OdeSystem<N>>(
     let x1: [f64; N] = std::array::from_fn(|i| x[i] + h0 * f0[i]);
     sys.dopri5_stage(DOPRI5_PROBE);
     let f1 = sys.derivatives(t + h0, &x1);
-    stats.evaluations += 1;
     let diff: [f64; N] = std::array::from_fn(|i| f1[i] - f0[i]);
     let d2 = norm(&diff) / h0;
     let h1 = if d1.max(d2) <= 1e-15 {
+        if P::AT_REST_WHOLE_SPAN {
+            return span.min(tol.max_step);
+        }
         (h0 * 1e-3).max(1e-6)
     } else {
-        (0.01 / d1.max(d2)).powf(0.2)
+        (0.01 / d1.max(d2)).powf(P::EXPONENT)
     };
     (100.0 * h0).min(h1).min(span).min(tol.max_step)
 }

@@ -114,10 +114,16 @@ fn a_steer_logged_in_coarse_counts_widens_the_gains_spread_and_is_said() {
     let spread = jq["yaw_rate_gain_spread"].as_f64().unwrap();
     // The rounding's share: q/√12 over the 1° step.
     let share = q / 12f64.sqrt() / 1f64.to_radians();
-    assert!(spread >= share && spread < share * 1.2, "{spread} vs {share}");
+    assert!(
+        spread >= share && spread < share * 1.2,
+        "{spread} vs {share}"
+    );
     let off = (gain / truth - 1.0).abs();
     assert!(off > 0.01, "the rounding moves the gain: {off}");
-    assert!(off < 2.0 * spread, "{gain} vs {truth}: {off} > 2 × {spread}");
+    assert!(
+        off < 2.0 * spread,
+        "{gain} vs {truth}: {off} > 2 × {spread}"
+    );
     assert!(
         wq.contains("steer is written in steps of 0.0573 deg and its step is")
             && wq.contains("17 of them"),
@@ -146,9 +152,15 @@ fn the_tables_marks_are_the_jsons_and_a_response_before_the_steer_is_marked() {
     let clean = written(&rows, dir.path(), "clean.csv", 10, |_, r| r);
     let (j, w, table) = measured(&early, &[]);
     assert!(j["ay_response_time"].as_f64().unwrap() <= 0.0, "{j}");
-    let ay_row = table.lines().find(|l| l.contains("ay response time")).unwrap();
+    let ay_row = table
+        .lines()
+        .find(|l| l.contains("ay response time"))
+        .unwrap();
     assert!(ay_row.ends_with("(before the steer)"), "{ay_row}");
-    assert!(table.contains("  before the steer: a response time marked"), "{table}");
+    assert!(
+        table.contains("  before the steer: a response time marked"),
+        "{table}"
+    );
     assert!(!w.contains("the ay response time, -"), "{w}");
     assert_eq!(
         j["marks"]["ay_response_time"],
@@ -159,7 +171,10 @@ fn the_tables_marks_are_the_jsons_and_a_response_before_the_steer_is_marked() {
         assert_eq!(sorted(table_marks(&table)), json_marks(&j), "{table}");
     }
     let (j, _, _) = measured(&late, &[]);
-    assert!(j["marks"]["er"].to_string().contains("steer_misaligned"), "{j}");
+    assert!(
+        j["marks"]["er"].to_string().contains("steer_misaligned"),
+        "{j}"
+    );
     let (j, _, _) = measured(&clean, &[]);
     assert_eq!(j["marks"], serde_json::json!({}));
 }

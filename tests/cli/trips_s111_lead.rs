@@ -9,8 +9,6 @@
 //! 6. the table's marks ("(no steady state)", …) were not in `--json`: both
 //!    now come from one function, and the JSON's `marks` are the table's.
 
-use super::*;
-
 use crate::calibration::Noise;
 use crate::trips_s111_metrics44::{measured, sedan_rows, written};
 

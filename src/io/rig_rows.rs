@@ -71,7 +71,7 @@ pub(crate) fn rows_not_in_pa(p: &[f64], known: Option<Known>) -> Vec<(usize, Uni
                 // Where no unit lands it among the tyre's own pressures (2.2
                 // bar is 220 kPa, above an FSAE file's PRESMAX), the unit
                 // that lands it among any pneumatic tyre's is still said.
-                meant: meant(value, known).or_else(|| meant(value, INFLATION)),
+                meant: nearest(value, known, median).or_else(|| meant(value, INFLATION)),
             };
             (i, slip)
         })
@@ -98,6 +98,33 @@ pub(crate) fn refuse_pressures_above_any(
         })
         .collect();
     InputError::all_of(path, errors).map_or(Ok(()), Err)
+}
+
+/// The reading of `value` in kPa, bar or psi that lands among the
+/// pressures `known` nearest (by ratio) the column's `median` where that
+/// median is a pressure in Pa, else the first: a cell of 32 among 220000
+/// Pa is 32 psi (220.6 kPa), not 32 kPa, which also lands among a .tir's
+/// PRESMIN to PRESMAX and was offered first.
+fn nearest(value: f64, (among, what): Known, median: f64) -> Option<PressureMeant> {
+    if median < MIN_MEDIAN_PRESSURE {
+        return meant(value, (among, what));
+    }
+    unit_slips(Variable::Pressure)
+        .iter()
+        .map(|&(unit, factor)| (unit, value * factor))
+        .filter(|(_, pa)| (among[0]..=among[1]).contains(pa))
+        .min_by(|a, b| {
+            (a.1 / median)
+                .ln()
+                .abs()
+                .total_cmp(&(b.1 / median).ln().abs())
+        })
+        .map(|(unit, pa)| PressureMeant {
+            pa,
+            unit,
+            among,
+            what,
+        })
 }
 
 /// The first reading of `value` in kPa, bar or psi that lands among the

@@ -33,6 +33,26 @@ pub(crate) fn last_crossing(t: &[f64], x: &[f64], level: f64, sign: f64, to: f64
     })
 }
 
+/// The end of the initial window the shape is judged over: the stated
+/// `pre_window` from the first sample, or where the steer first moves
+/// within the window's last sample interval, the metrics' window cut at
+/// the last sample before it (`initial.rs`). The stated end then falls
+/// inside the interval in which the steer starts, which a slow log cannot
+/// place: a 12.5 Hz record's sample 20 % up the ramp at 1.02 s, 0.02 s
+/// before the window's end, was refused once a noise-free steer's ramp
+/// samples were no longer read as a logger's grid (session 111), though
+/// the metrics leave it out. A steer moving earlier is still refused.
+fn window_end(t: &[f64], steer: &[f64], s: &MetricSettings) -> f64 {
+    let nominal = t[0] + s.pre_window;
+    let cut = super::initial::initial_end(t, steer, s);
+    let dt = crate::measured::clean::median_interval(t);
+    let moved = t.get(t.partition_point(|x| *x <= cut)).copied();
+    match moved {
+        Some(at) if cut < nominal && at > nominal - dt => cut,
+        _ => nominal,
+    }
+}
+
 /// The longest 10–90 % rise of the steer taken as a step, s: five times
 /// GB/T 6323's 0.2 s, room for a hand-driven step, none for a ramp.
 pub(crate) const MAX_RISE: f64 = 1.0;
@@ -52,6 +72,7 @@ pub(crate) fn check_step_shape(
     // step (a noise of 7.5 % of the step read as "the record starts too
     // close to the step").
     let raw_noise = noise_deviation(steer) / m.steer_step.abs();
+    let end = window_end(t, steer, s);
     let (steer, noise) = match m.filter_hz {
         Some(f) => {
             let dt = crate::measured::clean::median_interval(t);
@@ -63,7 +84,7 @@ pub(crate) fn check_step_shape(
         None => (steer.to_vec(), raw_noise),
     };
     let onset = ONSET.max(NOISE_DEVIATIONS * noise);
-    let (from, to) = (t[0], t[0] + s.pre_window);
+    let (from, to) = (t[0], end);
     let (d0, _) = window_mean(t, &steer, from, to);
     let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
     let initial = t.partition_point(|x| *x <= to);

@@ -176,3 +176,44 @@ fn the_tables_marks_are_the_jsons_and_a_response_before_the_steer_is_marked() {
     let (j, _, _) = measured(&clean, &[]);
     assert_eq!(j["marks"], serde_json::json!({}));
 }
+
+/// Round 46's finding 1: one pressure cell typed in psi (32) among
+/// pressures in Pa (220000) was offered as "32000 Pa (32 kPa)", which a
+/// .tir's PRESMIN to PRESMAX also holds: the reading nearest the column's
+/// median is offered, 32 psi = 220632 Pa; a cell in kPa (230) still reads
+/// as kPa.
+#[test]
+fn a_pressure_cell_in_psi_among_pascals_is_offered_as_psi() {
+    let test = "a_pressure_cell_in_psi_among_pascals_is_offered_as_psi";
+    let Some(tir) = super::shared_data(test, "tir_public/car205_60R19.tir") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    for (cell, said) in [
+        ("32", "did you mean 220632 Pa (32 psi)"),
+        ("230", "did you mean 230000 Pa (230 kPa)"),
+    ] {
+        let points = dir.path().join("points.csv");
+        std::fs::write(
+            &points,
+            format!(
+                "fz,kappa,alpha,camber,speed,pressure\n4000,0,0.05,0,20,220000\n4000,0,0.05,0,20,{cell}\n4000,0,0.05,0,20,220000\n"
+            ),
+        )
+        .unwrap();
+        let out = dir.path().join("out.csv");
+        let o = super::run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            points.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success());
+        let e = super::stderr(&o);
+        assert!(
+            e.contains("points.csv:3:6") && e.contains(said),
+            "{cell}: {e}"
+        );
+    }
+}

@@ -144,8 +144,8 @@ pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
 /// sample of its rise, each a multiple of that change, and is no grid.
 pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<String> {
     let x = &piece.steer;
-    // Read from held levels, not the ramp's few samples (`noise.rs`).
-    let q = crate::metrics::noise::held_resolution(x)?;
+    // Read from held levels or many, not a ramp's few samples.
+    let q = grid_of(x)?;
     let step = m.steer_step.abs();
     let share = q / 12f64.sqrt() / step;
     if !(share > STEER_COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {
@@ -162,11 +162,33 @@ pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<Strin
     ))
 }
 
+/// Fewest distinct levels from which a channel's smallest change is read
+/// as its grid where no held level shows one: a steer rounded to 0.001
+/// rad through a 100 Hz ramp takes ten levels, one or two counts apart,
+/// with only its initial and stepped values held; a noise-free 20–25 Hz
+/// ramp takes four (its initial value, two ramp samples, its step), which
+/// are no grid (they read a 0.2° one: `noise.rs`).
+const GRID_LEVELS_SEEN: usize = 6;
+
+/// The grid `x` is written on: read from its held levels
+/// ([`held_resolution`](crate::metrics::noise)), or its smallest change
+/// where it takes at least [`GRID_LEVELS_SEEN`] levels; None where neither
+/// shows one (the callers also ask every sample on it and no one ramp).
+fn grid_of(x: &[f64]) -> Option<f64> {
+    crate::metrics::noise::held_resolution(x).or_else(|| {
+        let q = resolution(x)?;
+        let mut levels: Vec<f64> = x.iter().copied().filter(|v| v.is_finite()).collect();
+        levels.sort_by(f64::total_cmp);
+        levels.dedup();
+        (levels.len() >= GRID_LEVELS_SEEN).then_some(q)
+    })
+}
+
 /// The rounding's deviation q/√12 of `x`'s held `step`, as a share of it,
 /// where `x` is written on a grid its held levels show (a logger's, not a
 /// sampled ramp's): None where none shows.
 fn rounding_share(x: &[f64], step: f64) -> Option<f64> {
-    let q = crate::metrics::noise::held_resolution(x)?;
+    let q = grid_of(x)?;
     (step > 0.0 && on_grid(x, q) && !one_ramp(x, q)).then(|| q / 12f64.sqrt() / step)
 }
 

@@ -129,7 +129,7 @@ fn a_steer_logged_in_coarse_counts_widens_the_gains_spread_and_is_said() {
     );
 }
 
-/// Findings 3 and 6: the ay column moved 0.3 s earlier leads the steer,
+/// Findings 3 and 6: the ay column moved 0.6 s earlier leads the steer,
 /// its response time below 0 is marked "(before the steer)" and gets no
 /// sample-interval words; the steer logged 80 ms late marks its times and
 /// variances. On both, and on the clean record (no marks), the JSON's
@@ -140,7 +140,7 @@ fn the_tables_marks_are_the_jsons_and_a_response_before_the_steer_is_marked() {
     let rows = sedan_rows(dir.path());
     let len = rows.len();
     let early = written(&rows, dir.path(), "ay_early.csv", 10, |i, mut r| {
-        r[5] = rows[(i + 300).min(len - 1)][5];
+        r[5] = rows[(i + 600).min(len - 1)][5];
         r
     });
     let late = written(&rows, dir.path(), "late.csv", 10, |i, mut r| {

@@ -310,9 +310,13 @@ pub enum OptionsError {
     /// `--hold` of a name that is none of the chosen model's but another
     /// model's: which, and the `--model` that fits it.
     #[error(
-        "--hold `{given}`: {given} is a parameter of the {owner} model (--model {owner}), not of {model}, the model chosen: hold one of {model}'s, e.g. --hold {example}"
+        "--hold `{given}`: {given} is a parameter of the {owner} model (--model {owner}), not of {model}, the model chosen: hold one of {model}'s{known}, e.g. --hold {example}"
     )]
     HoldOfOtherModel {
+        /// The chosen model's parameters, `" (its parameters are a, b, …)"`
+        /// where they are few enough to list (a fitter's own names, such as
+        /// UniTire's `b1`, are also another model's), else empty.
+        known: String,
         /// The name given.
         given: String,
         /// The model it belongs to (its `--model` value).

@@ -73,6 +73,7 @@ pub(crate) fn check_step_shape(
     // close to the step").
     let raw_noise = noise_deviation(steer) / m.steer_step.abs();
     let end = window_end(t, steer, s);
+    let raw = steer;
     let (steer, noise) = match m.filter_hz {
         Some(f) => {
             let dt = crate::measured::clean::median_interval(t);
@@ -92,10 +93,14 @@ pub(crate) fn check_step_shape(
     // the window's mean; where it moves, against its first value: a step
     // inside the window pulls the mean, so the first sample already stands
     // 5 % off it and "moves at 0.00 s" said nothing of where the step is.
+    // Where it moves is read on the raw steer: the zero-phase low-pass
+    // spreads a step ahead of itself, and a step at 2.00 s read "moves at
+    // 1.96 s" once a noise-free steer's threshold was 5 % (session 111).
     let moved = d[..initial].iter().any(|v| v.abs() > onset).then(|| {
-        let i = d[..initial]
-            .iter()
-            .position(|v| (v - d[0]).abs() > onset)
+        let raw_onset = ONSET.max(NOISE_DEVIATIONS * raw_noise);
+        let i = (0..initial)
+            .find(|&i| ((raw[i] - raw[0]) / m.steer_step).abs() > raw_onset)
+            .or_else(|| (0..initial).find(|&i| (d[i] - d[0]).abs() > onset))
             .unwrap_or(0);
         t[i]
     });

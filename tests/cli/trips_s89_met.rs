@@ -147,8 +147,8 @@ fn a_record_too_short_for_its_steady_window_is_said_as_that() {
     assert!(e.contains("the record is too short for its steady window: the step lies inside the steady window (0.60–1.60 s, `--steady-window` = 1 s)"), "{e}");
     // Session 90: no window after the steer's settling settles the
     // response, and the record is said to end before its steady state.
-    assert!(e.contains("the steer settles within 5 % of its held value only at 1.10 s, so a steady window must start after it, and no window 0.15 s to 0.50 s long ending at the record's end (starting from 1.10 s to 1.45 s) reads a settled response"), "{e}");
-    assert!(e.contains("the record holds the step for 0.50 s, and a 1 s steady window needs it held to 2.10 s at least (a record 0.50 s longer)"), "{e}");
+    assert!(e.contains("the steer settles within 5 % of its held value only at 1.11 s, so a steady window must start after it, and no window 0.15 s to 0.49 s long ending at the record's end (starting from 1.11 s to 1.45 s) reads a settled response"), "{e}");
+    assert!(e.contains("the record holds the step for 0.49 s, and a 1 s steady window needs it held to 2.11 s at least (a record 0.51 s longer)"), "{e}");
 }
 
 /// A near-critical step (the tester's oversteering linear car at 25 m/s,

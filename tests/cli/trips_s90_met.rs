@@ -200,14 +200,14 @@ fn a_record_too_short_for_a_steady_state_is_not_advised_a_wrong_window() {
     assert!(!o.status.success(), "{e}");
     assert!(!e.contains("so a `--steady-window` of at most"), "{e}");
     assert!(
-        e.contains("so a steady window must start after it, and no window 0.18 s to 0.58 s long ending at the record's end (starting from 1.02 s to 1.42 s) reads a settled response"),
+        e.contains("so a steady window must start after it, and no window 0.18 s to 0.57 s long ending at the record's end (starting from 1.03 s to 1.42 s) reads a settled response"),
         "{e}"
     );
     assert!(
         e.contains("the record ends before the car reaches its steady state"),
         "{e}"
     );
-    let (j, w) = measured(&cut, &["--steady-window", "0.58"]);
+    let (j, w) = measured(&cut, &["--steady-window", "0.57"]);
     let gain = j["yaw_rate_gain"].as_f64().unwrap();
     assert!(
         w.contains(&format!(
@@ -217,7 +217,7 @@ fn a_record_too_short_for_a_steady_state_is_not_advised_a_wrong_window() {
     );
     let cut = logged(&history, 1, 1.9, |a| a, dir.path(), "lin_cut09.csv");
     let e = stderr(&run(&["metrics", cut.to_str().unwrap()]));
-    let advised = "so a `--steady-window` of at most 0.88 s starts after it, and one of 0.44 s reads a settled response";
+    let advised = "so a `--steady-window` of at most 0.87 s starts after it, and one of 0.44 s reads a settled response";
     assert!(e.contains(advised), "{e}");
     let (j, w) = measured(&cut, &["--steady-window", "0.44"]);
     let gain = j["yaw_rate_gain"].as_f64().unwrap();

@@ -223,12 +223,14 @@ fn a_time_in_milliseconds_is_refused_with_its_step() {
 }
 
 /// A record starting 0.2 s before the step was measured with the step in
-/// its initial window: a steer step of 1.29° for the 2.86° given.
+/// its initial window: a steer step of 1.29° for the 2.86° given. Where
+/// the steer moves is read on the raw steer: its first sample past 5 % of
+/// the step, 2.01 s (the low-pass spreads the step ahead of itself).
 #[test]
 fn a_record_starting_just_before_the_step_is_refused_with_the_reason() {
     let e = refused_run(&Run { start: 1.8, ..SI });
     assert!(
-        e.contains("the steer moves by more than 5 % of its step at 2.00 s, inside the initial window (1.80–2.30 s) whose means are the initial values: the record starts too close to the step"),
+        e.contains("the steer moves by more than 5 % of its step at 2.01 s, inside the initial window (1.80–2.30 s) whose means are the initial values: the record starts too close to the step"),
         "{e}"
     );
     assert!(e.contains("`pre_window` = 0.5 s before the step"), "{e}");

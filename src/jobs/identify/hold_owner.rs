@@ -13,6 +13,10 @@ use crate::error::OptionsError;
 use crate::identify::{fitted_names, start_tyre_of};
 use crate::tyre::mf::MfCoefficients;
 
+/// Most names of the chosen model listed in the refusal (the Magic
+/// Formula's 177 are not: its example stands for them).
+const LISTED: usize = 40;
+
 /// The names `--hold` takes for `model`.
 fn names_of(model: IdentifyModel) -> Vec<String> {
     match model.swarm_model() {
@@ -34,7 +38,13 @@ pub(super) fn of_another_model(name: &str, chosen: IdentifyModel) -> Option<Opti
         .into_iter()
         .filter(|m| *m != chosen)
         .find(|m| names_of(*m).iter().any(|n| n == name))?;
+    let own = names_of(chosen);
+    let known = match own.len() {
+        1..=LISTED => format!(" (its parameters are {})", own.join(", ")),
+        _ => String::new(),
+    };
     Some(OptionsError::HoldOfOtherModel {
+        known,
         given: name.to_string(),
         owner: owner.as_str().to_string(),
         model: chosen.as_str().to_string(),

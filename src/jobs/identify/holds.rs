@@ -95,26 +95,7 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
         ));
     }
     // The values held for another reason, one line per reason.
-    let mut reasons: Vec<HeldFor> = Vec::new();
-    for h in held.iter().filter(|h| h.reason != HeldFor::Given) {
-        if !reasons.contains(&h.reason) {
-            reasons.push(h.reason);
-        }
-    }
-    for why in reasons {
-        let values: Vec<String> = held
-            .iter()
-            .filter(|h| h.reason == why)
-            .map(|h| format!("{} = {}", h.name, value_text(h)))
-            .collect();
-        // An undetermined parameter's reason is its own (its fitted
-        // value), so `said` names the one parameter of its line.
-        let name = held
-            .iter()
-            .find(|h| h.reason == why)
-            .map_or("", |h| &h.name);
-        out.push(format!("  held: {}: {}", values.join(", "), why.said(name)));
-    }
+    out.extend(by_reason(held).into_iter().map(|l| format!("  held: {l}")));
     out.extend(held.iter().filter(|h| !h.applied).map(|h| {
         format!(
             "  warning: --hold {}={}: not applied: no fit of its block ran on these data, and the file written does not hold it",
@@ -165,17 +146,35 @@ pub(crate) fn held_by_fits(fits: &[&Fit], written: &Tyre) -> Vec<Held> {
 }
 
 /// The comment lines of a written file (`mark`: `#` for TOML, `$` for a
-/// `.tir`) stating each value held for another reason than `--hold`.
+/// `.tir`) stating the values held for another reason than `--hold`, one
+/// line per reason as the terminal says them.
 pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
-    held.iter()
-        .filter(|h| h.reason != HeldFor::Given)
-        .map(|h| {
-            format!(
-                "{mark} held: {} = {}: {}\n",
-                h.name,
-                value_text(h),
-                h.reason.said(&h.name)
-            )
+    by_reason(held)
+        .into_iter()
+        .map(|l| format!("{mark} held: {l}\n"))
+        .collect()
+}
+
+/// The values `held` for another reason than `--hold`, one line per
+/// reason: `NAME = value, …: why` (the terminal's and the file's alike).
+fn by_reason(held: &[Held]) -> Vec<String> {
+    let mut reasons: Vec<HeldFor> = Vec::new();
+    for h in held.iter().filter(|h| h.reason != HeldFor::Given) {
+        if !reasons.contains(&h.reason) {
+            reasons.push(h.reason);
+        }
+    }
+    reasons
+        .into_iter()
+        .map(|why| {
+            let of: Vec<&Held> = held.iter().filter(|h| h.reason == why).collect();
+            let values: Vec<String> = of
+                .iter()
+                .map(|h| format!("{} = {}", h.name, value_text(h)))
+                .collect();
+            // An undetermined parameter's reason is its own (its fitted
+            // value), so `said` names the one parameter of its line.
+            format!("{}: {}", values.join(", "), why.said(&of[0].name))
         })
         .collect()
 }

@@ -112,7 +112,7 @@ impl fmt::Display for StatedFrom {
             ),
             StatedFrom::PressureWithoutData => write!(
                 f,
-                "no `pressure` column, so a stated {} kPa (INFLPRES of 8 of the 12 public .tir files that give one): no pressure term is fitted, so the forces are the same at any pressure, and readers divide by NOMPRES (dpi = (p − NOMPRES)/NOMPRES), which 0 would make infinite; give --hold NOMPRES=… with your tyre's",
+                "no `pressure` column, so a stated {} kPa (INFLPRES of 8 of the 12 public .tir files that give one): no pressure term is fitted, so the forces are the same at any pressure, and readers divide by NOMPRES (dpi = (p − NOMPRES)/NOMPRES), which 0 would divide by zero; give --hold NOMPRES=… with your tyre's",
                 PRESSURE / 1000.0
             ),
             StatedFrom::DeflectionAtNominal => write!(

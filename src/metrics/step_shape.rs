@@ -53,6 +53,32 @@ fn window_end(t: &[f64], steer: &[f64], s: &MetricSettings) -> f64 {
     }
 }
 
+/// Where the steer moves inside the initial window, s: None where its
+/// normalised (filtered) values `d` stay within `onset` of the window's
+/// mean. Judged against the window's mean; where it moves, against its
+/// first value: a step inside the window pulls the mean, so the first
+/// sample already stands 5 % off it and "moves at 0.00 s" said nothing of
+/// where the step is. Where is read on the `raw` steer (its noise
+/// `raw_noise`, a share of `step`): the zero-phase low-pass spreads a step
+/// ahead of itself, and a step at 2.00 s read "moves at 1.96 s" once a
+/// noise-free steer's threshold was 5 % (session 111).
+fn moved_in_window(
+    t: &[f64],
+    (raw, d): (&[f64], &[f64]),
+    onset: f64,
+    raw_noise: f64,
+    step: f64,
+) -> Option<f64> {
+    d.iter().any(|v| v.abs() > onset).then(|| {
+        let raw_onset = ONSET.max(NOISE_DEVIATIONS * raw_noise);
+        let i = (0..d.len())
+            .find(|&i| ((raw[i] - raw[0]) / step).abs() > raw_onset)
+            .or_else(|| (0..d.len()).find(|&i| (d[i] - d[0]).abs() > onset))
+            .unwrap_or(0);
+        t[i]
+    })
+}
+
 /// The longest 10–90 % rise of the steer taken as a step, s: five times
 /// GB/T 6323's 0.2 s, room for a hand-driven step, none for a ramp.
 pub(crate) const MAX_RISE: f64 = 1.0;
@@ -89,21 +115,7 @@ pub(crate) fn check_step_shape(
     let (d0, _) = window_mean(t, &steer, from, to);
     let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
     let initial = t.partition_point(|x| *x <= to);
-    // Whether the steer moves inside the initial window is judged against
-    // the window's mean; where it moves, against its first value: a step
-    // inside the window pulls the mean, so the first sample already stands
-    // 5 % off it and "moves at 0.00 s" said nothing of where the step is.
-    // Where it moves is read on the raw steer: the zero-phase low-pass
-    // spreads a step ahead of itself, and a step at 2.00 s read "moves at
-    // 1.96 s" once a noise-free steer's threshold was 5 % (session 111).
-    let moved = d[..initial].iter().any(|v| v.abs() > onset).then(|| {
-        let raw_onset = ONSET.max(NOISE_DEVIATIONS * raw_noise);
-        let i = (0..initial)
-            .find(|&i| ((raw[i] - raw[0]) / m.steer_step).abs() > raw_onset)
-            .or_else(|| (0..initial).find(|&i| (d[i] - d[0]).abs() > onset))
-            .unwrap_or(0);
-        t[i]
-    });
+    let moved = moved_in_window(t, (raw, &d[..initial]), onset, raw_noise, m.steer_step);
     let (lo, hi) = HELD_STEP;
     let not_held = first_crossing(t, &d, 0.9, from).and_then(|reached| {
         (0..t.len())

@@ -320,9 +320,9 @@ pub enum OptionsError {
         /// The name given.
         given: String,
         /// The model it belongs to (its `--model` value).
-        owner: String,
+        owner: &'static str,
         /// The model chosen.
-        model: String,
+        model: &'static str,
         /// A hold of the chosen model's own, `NAME=VALUE`.
         example: String,
     },

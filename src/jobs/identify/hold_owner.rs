@@ -46,8 +46,8 @@ pub(super) fn of_another_model(name: &str, chosen: IdentifyModel) -> Option<Opti
     Some(OptionsError::HoldOfOtherModel {
         known,
         given: name.to_string(),
-        owner: owner.as_str().to_string(),
-        model: chosen.as_str().to_string(),
+        owner: owner.as_str(),
+        model: chosen.as_str(),
         example: super::holds::hold_example(chosen),
     })
 }

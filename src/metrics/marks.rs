@@ -81,14 +81,22 @@ fn drifting(s: Option<Settling>) -> bool {
 }
 
 impl StepMetrics {
+    /// Whether the yaw rate and the lateral acceleration drift without
+    /// slowing across the steady window: no steady state is in the record,
+    /// and every metric defined against one measures a level the response
+    /// passes on its way (the table's notes and [`Mark::NoSteadyState`]).
+    pub fn drifting_channels(&self) -> (bool, bool) {
+        (
+            drifting(Some(self.settling.yaw_rate)),
+            drifting(self.settling.ay),
+        )
+    }
+
     /// The marks of these metrics (metrics without one are left out).
     pub fn marks(&self) -> Marks {
         use Mark::{BeforeTheSteer, MovingWindow, NoSteadyState, SteerMisaligned};
         use MarkedMetric as M;
-        let (yaw, ay) = (
-            drifting(Some(self.settling.yaw_rate)),
-            drifting(self.settling.ay),
-        );
+        let (yaw, ay) = self.drifting_channels();
         let late = self.steer_logged_late.is_some();
         let moving = self.yaw_rate_window_moving && !yaw;
         let ay_time = self.ay_response_time;

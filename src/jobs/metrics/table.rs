@@ -7,26 +7,6 @@
 
 use crate::metrics::{Mark, MarkedMetric, Marks, StepMetrics};
 
-/// Whether the yaw rate and the lateral acceleration drift without
-/// slowing across the steady window: no steady state is in the record, and
-/// every metric defined against one (a 90 % crossing, an overshoot, a
-/// gain, a total variance) measures a level the response passes on its
-/// way, not the car's response. A drift that slows, or a spread about a
-/// steady value, bounds how far the steady value read may be off (the
-/// warning says how far); the metrics stand with that bound.
-fn unsteady_channels(m: &StepMetrics) -> (bool, bool) {
-    let drifting = |s: Option<crate::metrics::Settling>| {
-        matches!(
-            s,
-            Some(crate::metrics::Settling::Drifting {
-                converging: false,
-                ..
-            })
-        )
-    };
-    (drifting(Some(m.settling.yaw_rate)), drifting(m.settling.ay))
-}
-
 /// The line after the table saying what the marked metrics are.
 fn unsteady_note(yaw: bool, ay: bool) -> Option<String> {
     let which = match (yaw, ay) {
@@ -85,7 +65,7 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         v.map_or("—".to_string(), |x| crate::format::fixed(x * scale, 4))
     };
     let fixed = |v: f64| crate::format::fixed(v, 4);
-    let (yaw, ay) = unsteady_channels(m);
+    let (yaw, ay) = m.drifting_channels();
     let moving = m.yaw_rate_window_moving && !yaw;
     let ay_moving = m.ay_window_moving && !ay && m.ay_response_time.is_some();
     let marks = m.marks();

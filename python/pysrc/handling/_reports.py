@@ -135,6 +135,17 @@ class StepMetrics:
     (masked and filled by the cleaning, a clipped flat top, a hole in
     time): peak time, overshoot and TB are then withheld (None), not below
     the threshold."""
+    steer_logged_late: Optional[float]
+    """How long before the steer leaves its initial band the yaw rate leaves
+    its own, s: the steer was logged that much late, and the response times
+    and total variances are read against a misaligned steer (None where the
+    yaw rate moves after the steer, or the noise cannot tell)."""
+    yaw_rate_window_moving: bool
+    """Whether the yaw rate still moves in its steady window: its response
+    time, peak time and overshoot are read against a moving window's mean."""
+    ay_window_moving: bool
+    """Whether ``ay`` still moves in its steady window: its response time is
+    read against a moving window's mean."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":

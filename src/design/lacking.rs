@@ -223,7 +223,7 @@ fn pair(
             .into_iter()
             .max_by(|x, y| parts[x.index()].0.total_cmp(&parts[y.index()].0))
             .unwrap_or(Channel::YawRate);
-        LackingRun {
+        let mut run = LackingRun {
             name: d.name.clone(),
             description: d.description.clone(),
             separation: *sep,
@@ -238,7 +238,10 @@ fn pair(
             uncertainty,
             campaign_separation,
             worth,
-        }
+            weak: None,
+        };
+        run.weak = run.weak_of();
+        run
     });
     Some(PairRun {
         reference,

@@ -3,7 +3,10 @@
 //! `vehicle`" of the whole document, which was put at the file's first key
 //! (`name`, 1:1) as if that key were wrong. Said as the table missing, with
 //! the tables the file has and their lines, so the reader sees where the
-//! missing one belongs or which one is misnamed.
+//! missing one belongs or which one is misnamed. Where only the header
+//! line was lost, its keys read as the file's own (serde: "unknown field
+//! `mass`" at the first of them): said as the same missing table, with the
+//! line its header belongs above.
 
 use std::fmt;
 
@@ -15,6 +18,9 @@ pub struct MissingTable {
     /// The file's table headers as written (`tyres`, `model.effects`),
     /// with their 1-based lines.
     pub tables: Vec<(String, usize)>,
+    /// The table's first key where the file has it without its header
+    /// (read as a top-level key), with its 1-based line.
+    pub headless: Option<(String, usize)>,
 }
 
 impl fmt::Display for MissingTable {
@@ -29,10 +35,17 @@ impl fmt::Display for MissingTable {
                     .join(", ")
             ),
         };
-        write!(
-            f,
-            "the table `[{}]` is missing ({has}): add it, with its keys, as a `[{}]` header and the `key = value` lines under it",
-            self.table, self.table
-        )
+        match &self.headless {
+            Some((key, line)) => write!(
+                f,
+                "the table `[{}]` is missing ({has}), and `{key}` at line {line} is one of its keys, read as a key of the file itself: add the header `[{}]` above line {line}",
+                self.table, self.table
+            ),
+            None => write!(
+                f,
+                "the table `[{}]` is missing ({has}): add it, with its keys, as a `[{}]` header and the `key = value` lines under it",
+                self.table, self.table
+            ),
+        }
     }
 }

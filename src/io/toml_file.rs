@@ -216,6 +216,9 @@ impl TomlSource {
         if let Some(missing) = self.missing_table(&message, e.span().as_ref(), reparse) {
             return missing;
         }
+        if let Some(missing) = self.headless_table(&message, e.span().as_ref(), reparse) {
+            return missing;
+        }
         let (span, key) = self.place(e, &message);
         // A name's place holding no name (`kind = 3`): the names are found
         // with a string there, which serde answers with its list.

@@ -30,7 +30,7 @@
 
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::report::worth::{weak, worth, Worth};
+use crate::diagnose::report::worth::{weak, worth, Weak, Worth};
 use crate::diagnose::report::BaseReport;
 use crate::tyre::TyreModel;
 use serde::Serialize;
@@ -110,6 +110,20 @@ pub struct LackingRun {
     /// Whether a driven run is worth it, by `handling design`'s rule
     /// ([`crate::diagnose::report::worth::worth`]).
     pub worth: Worth,
+    /// Where the words recommend it but weakly (within 2 of its own
+    /// uncertainty, [`weak`]): its ratio and the chance one run misleads,
+    /// as the terminal says; `None` otherwise ([`LackingRun::weak_of`]).
+    pub weak: Option<Weak>,
+}
+
+impl LackingRun {
+    /// What [`LackingRun::weak`] holds: weak where the run's words
+    /// recommend it ([`judged`]) within 2 of its own uncertainty.
+    pub fn weak_of(&self) -> Option<Weak> {
+        (judged(self) == Worth::Separates)
+            .then(|| weak(Worth::Separates, self.expected, self.uncertainty))
+            .flatten()
+    }
 }
 
 /// What separates the reference from one look-alike.
@@ -186,7 +200,7 @@ fn pair_words(p: &PairRun) -> String {
         r.expected, r.uncertainty
     );
     match judged(r) {
-        Worth::Separates => match weak(Worth::Separates, r.expected, r.uncertainty) {
+        Worth::Separates => match r.weak_of() {
             Some(w) => format!("{a} from {b}: {run}; {measured}; {}", w.words()),
             None => format!("{a} from {b}: {run}; {measured}"),
         },
@@ -216,9 +230,9 @@ fn judged(r: &LackingRun) -> Worth {
 /// Whether pair `p` has a manoeuvre firmly worth driving: recommended,
 /// and not weakly ([`weak`]).
 fn has_run(p: &PairRun) -> bool {
-    p.best.as_ref().is_some_and(|r| {
-        judged(r) == Worth::Separates && weak(Worth::Separates, r.expected, r.uncertainty).is_none()
-    })
+    p.best
+        .as_ref()
+        .is_some_and(|r| judged(r) == Worth::Separates && r.weak_of().is_none())
 }
 
 impl SeparatingRuns {
@@ -265,6 +279,7 @@ mod tests {
                 uncertainty: 10.5,
                 campaign_separation: 63.0,
                 worth,
+                weak: None,
             }),
             largest: 39.4,
             replayed: 12,
@@ -349,5 +364,25 @@ mod tests {
         // 39.4 ± 10.5 against the campaign's 63.0: below it.
         let told = pair_words(&pair(Worth::AlreadyToldApart));
         assert!(told.ends_with("(D = 63.0)"), "{told}");
+    }
+
+    /// The JSON's `weak` is what the words say: Putnam's sweep carries its
+    /// 1.03 and 15 %; a firm run, one not worth driving and one told apart
+    /// that its numbers put within its uncertainty carry none.
+    #[test]
+    fn the_json_says_weak_where_the_words_do() {
+        let run = |p: PairRun| {
+            let mut r = p.best.unwrap();
+            r.weak = r.weak_of();
+            serde_json::to_value(&r).unwrap()
+        };
+        let putnam = run(expecting(Worth::Separates, 277.9, 268.9));
+        let sigmas = putnam["weak"]["sigmas"].as_f64().unwrap();
+        let wrong = putnam["weak"]["wrong"].as_f64().unwrap();
+        assert!((sigmas - 277.9 / 268.9).abs() < 1e-12, "{putnam}");
+        assert!((wrong - 0.1507).abs() < 5e-4, "{putnam}");
+        assert!(run(pair(Worth::Separates))["weak"].is_null());
+        assert!(run(expecting(Worth::WithinUncertainty, 3.1, 9.5))["weak"].is_null());
+        assert!(run(expecting(Worth::AlreadyToldApart, 3.1, 9.5))["weak"].is_null());
     }
 }

@@ -57,7 +57,7 @@ pub const FIRM_SIGMAS: f64 = 2.0;
 
 /// A recommended manoeuvre whose expected separation lies within
 /// [`FIRM_SIGMAS`] of its own uncertainty.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Weak {
     /// Its expected separation over its uncertainty.
     pub sigmas: f64,

@@ -6,6 +6,11 @@
 //! appended: a table's absence then gives way to another message (its
 //! first key missing), a plain key's to "invalid type" (a table where a
 //! value is wanted). Said with the file's tables and their lines.
+//!
+//! A table whose header line alone was deleted leaves its keys at the top
+//! level, refused as "unknown field `mass`" at the first: a table the file
+//! lacks whose header, written above that key's line, makes the key read
+//! is the table missing, said with the line its header belongs above.
 
 use super::home::Reparse;
 use super::{Span, TomlSource};
@@ -40,9 +45,59 @@ impl TomlSource {
             let problem = MissingTable {
                 table: name.to_string(),
                 tables: self.table_headers(),
+                headless: None,
             };
             self.located(None, InputProblem::MissingTable(Box::new(problem)))
         })
+    }
+
+    /// serde's "unknown field `key`, expected one of …" for a key before
+    /// the file's first header, as the table it belongs to with its header
+    /// lost: one of the names expected that the file has no header of and
+    /// under which, written above the key's line, the key reads.
+    pub(super) fn headless_table(
+        &self,
+        message: &str,
+        span: Option<&Span>,
+        reparse: &Reparse,
+    ) -> Option<InputError> {
+        let (key, rest) = message.strip_prefix("unknown field `")?.split_once('`')?;
+        let expected = rest.split_once(", expected ")?.1;
+        let start = span?.start;
+        let headers = self.table_headers();
+        let line = self.text[..start].matches('\n').count() + 1;
+        // Only a key the file holds before any header is read as its own.
+        if headers.first().is_some_and(|(_, at)| *at < line) {
+            return None;
+        }
+        let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
+        let table = super::home::listed(expected).into_iter().find(|t| {
+            let written = |l: &str| {
+                l.trim_start()
+                    .strip_prefix(t)
+                    .is_some_and(|r| r.trim_start().starts_with(['=', '.']))
+            };
+            if headers
+                .iter()
+                .any(|(h, _)| h == t || h.starts_with(&format!("{t}.")))
+                || self.text.lines().any(written)
+            {
+                return false;
+            }
+            let mut probe = self.text.clone();
+            probe.insert_str(line_start, &format!("[{t}]\n"));
+            reparse(&probe).is_none_or(|m| {
+                !m.starts_with(&format!("unknown field `{key}`"))
+                    && !m.starts_with("invalid type")
+                    && !m.starts_with("duplicate key")
+            })
+        })?;
+        let problem = MissingTable {
+            table: table.to_string(),
+            tables: headers,
+            headless: Some((key.to_string(), line)),
+        };
+        Some(self.located(None, InputProblem::MissingTable(Box::new(problem))))
     }
 
     /// The file's `[table]` headers as written, with their 1-based lines.
@@ -99,6 +154,15 @@ mod tests {
         // A table's missing key is said at the table.
         let said = parsed("name = \"x\"\n[vehicle]\n");
         assert!(said.contains(":2:1: missing field `mass`"), "{said}");
+        // A table whose header line alone is lost: its keys read as the
+        // file's own.
+        let said = parsed("name = \"x\"\n\nmass = 1.0\n[runs]\nmass = 2.0\n");
+        assert_eq!(said, "c.toml: the table `[vehicle]` is missing (the file's tables: [runs] at line 4), and `mass` at line 3 is one of its keys, read as a key of the file itself: add the header `[vehicle]` above line 3");
+        // A key no missing table takes stays an unknown key.
+        let said = parsed("name = \"x\"\nmas = 1.0\n[vehicle]\nmass = 1.0\n");
+        assert!(said.contains("unknown field `mas`"), "{said}");
+        let said = parsed("name = \"x\"\nmas = 1.0\n");
+        assert!(!said.contains("is missing"), "{said}");
         // A required key written in capitals is no missing table.
         let said = parsed("Name = \"x\"\n[vehicle]\nmass = 1.0\n");
         assert!(

@@ -3,7 +3,8 @@
 //! fixed-step RK4 at 1 ms (`rk4_1ms`), Dormand–Prince 5(4) at the default
 //! tolerances (`dopri5`: the dense solution; `dopri5_metrics`: and the
 //! metrics from it; `dopri5_rows_1ms`: with 1 kHz rows; `solver_rtol_1e-10`:
-//! the solver alone at SciPy's tolerances, the peer script's job); the older id
+//! the solver alone at SciPy's tolerances, the peer script's job), DOP853
+//! beside them (`dop853`, `dop853_rows_1ms`, `solver_rtol_1e-10_dop853`); the older id
 //! `step_steer_10s_1khz_pac89_load_transfer` (RK4 at 1 ms) is kept. Also the
 //! cost of one lateral-force evaluation per tyre model and of one
 //! stiffness-study combination.
@@ -63,6 +64,21 @@ fn step_steer(c: &mut Criterion) {
     // With a row every 1 ms (the history a scenario writes by default).
     g.bench_function("dopri5_rows_1ms", |b| {
         b.iter(|| dopri.run(black_box(&model), black_box(&man), State::default()))
+    });
+    // The same two by DOP853 (`method = "dop853"`) at the same tolerances.
+    let dop853 = Integrator {
+        method: Method::Dop853(tol),
+        ..coarse
+    };
+    g.bench_function("dop853", |b| {
+        b.iter(|| dop853.simulate(black_box(&model), black_box(&man), State::default()))
+    });
+    let dop853_rows = Integrator {
+        step: 1e-3,
+        ..dop853
+    };
+    g.bench_function("dop853_rows_1ms", |b| {
+        b.iter(|| dop853_rows.run(black_box(&model), black_box(&man), State::default()))
     });
     // The solver alone as `peer/scipy_peer.py` runs SciPy's `solve_ivp`
     // (RK45) against it: rtol 1e-10, atol 1e-13, no largest step, (β, r)

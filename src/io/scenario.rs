@@ -31,7 +31,8 @@ use step_steer::{steady_ay, Amplitude};
 #[serde(deny_unknown_fields)]
 pub struct SimulationSettings {
     /// `dopri5` (default: error-controlled, events located on the dense
-    /// output) or `rk4` (fixed step).
+    /// output), `dop853` (the same by the eighth-order pair) or `rk4`
+    /// (fixed step).
     #[serde(default)]
     pub method: MethodName,
     /// Interval of the recorded rows, s, and RK4's step.
@@ -85,7 +86,7 @@ impl SimulationSettings {
                 }
                 Ok(Method::Rk4)
             }
-            MethodName::Dopri5 => {
+            MethodName::Dopri5 | MethodName::Dop853 => {
                 let tol = Tolerances {
                     rtol: self.rtol.unwrap_or(d.rtol),
                     atol: self.atol.unwrap_or(d.atol),
@@ -94,7 +95,10 @@ impl SimulationSettings {
                 ParamError::in_range("rtol", tol.rtol, 1e-14, 1e-2, Limit::RelativeTolerance)?;
                 ParamError::in_range("atol", tol.atol, 1e-16, 1e-2, Limit::AbsoluteTolerance)?;
                 ParamError::in_range("max_step", tol.max_step, 1e-6, 1.0, Limit::MaxStep)?;
-                Ok(Method::Dopri5(tol))
+                Ok(match self.method {
+                    MethodName::Dop853 => Method::Dop853(tol),
+                    _ => Method::Dopri5(tol),
+                })
             }
         }
     }

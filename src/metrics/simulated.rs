@@ -44,7 +44,7 @@ impl<'a> DenseRecord<'a> {
         knots.sort_by(f64::total_cmp);
         knots.dedup();
         let load_tolerance = match integrator.method {
-            Method::Dopri5(tol) => load_tolerance(&tol),
+            Method::Dopri5(tol) | Method::Dop853(tol) => load_tolerance(&tol),
             Method::Rk4 => 1e-9,
         };
         Self {

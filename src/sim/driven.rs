@@ -17,7 +17,9 @@ mod system;
 
 use seeds::Adaptive;
 
-use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE};
+use super::ode::{
+    self, DenseSolution, OdeSystem, Pair, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE,
+};
 use super::progress::Counted;
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
@@ -477,7 +479,7 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> Option<DenseSolution<2>> {
-        self.solve_with(model, manoeuvre, x0, tol, false)
+        self.solve_with(model, manoeuvre, x0, tol, Pair::Dopri5)
     }
 
     /// [`Integrator::solve_dopri5`] by Dormand & Prince's 8(5,3) pair
@@ -490,18 +492,17 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> Option<DenseSolution<2>> {
-        self.solve_with(model, manoeuvre, x0, tol, true)
+        self.solve_with(model, manoeuvre, x0, tol, Pair::Dop853)
     }
 
-    /// The (β, r) solution by DOP853 where `eighth_order`, else by
-    /// Dormand–Prince 5(4).
+    /// The (β, r) solution by `pair`.
     fn solve_with(
         &self,
         model: &VehicleModel,
         manoeuvre: &Manoeuvre,
         x0: State,
         tol: &Tolerances,
-        eighth_order: bool,
+        pair: Pair,
     ) -> Option<DenseSolution<2>> {
         if model.options.effects.extra_states() {
             return None;
@@ -511,11 +512,7 @@ impl Integrator {
         let mut sys = Driven::new(model, source, self.friction, load_tolerance(tol));
         let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
         let breakpoints = manoeuvre.breakpoints();
-        Some(if eighth_order {
-            ode::dop853(&mut sys, t0, t1, x, &breakpoints, tol)
-        } else {
-            ode::dopri5(&mut sys, t0, t1, x, &breakpoints, tol)
-        })
+        Some(ode::solve(pair, &mut sys, (t0, t1), x, &breakpoints, tol))
     }
 
     /// The error-controlled solution of `manoeuvre` from `x0` (restarted at
@@ -528,48 +525,49 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> (TimeHistory, Option<DenseSolution<2>>) {
-        let (hist, sol, _) = self.run_dopri5_work(model, manoeuvre, x0, tol, None);
+        let (hist, sol, _) = self.run_adaptive(model, manoeuvre, x0, (Pair::Dopri5, *tol), None);
         (hist, sol)
     }
 
-    /// [`Integrator::run_dopri5`] with the work of the integration, of the
-    /// full state too (a lag or roll effect's six states): its report said
-    /// "RK4" for a Dormand–Prince run it had no dense (β, r) solution of.
-    pub(super) fn run_dopri5_work(
+    /// [`Integrator::run_dopri5`] by either pair, with the work of the
+    /// integration, of the full state too (a lag or roll effect's six
+    /// states): its report said "RK4" for a Dormand–Prince run it had no
+    /// dense (β, r) solution of.
+    pub(super) fn run_adaptive(
         &self,
         model: &VehicleModel,
         manoeuvre: &Manoeuvre,
         x0: State,
-        tol: &Tolerances,
+        pair: (Pair, Tolerances),
         progress: Option<&AtomicUsize>,
     ) -> (TimeHistory, Option<DenseSolution<2>>, ode::Stats) {
         let x = self.initial(model, manoeuvre, x0);
         if model.options.effects.extra_states() {
-            let (hist, sol) = self.dopri5_n::<6>(model, manoeuvre, x, tol, progress);
+            let (hist, sol) = self.adaptive_n::<6>(model, manoeuvre, x, pair, progress);
             (hist, None, sol.stats)
         } else {
-            let (hist, sol) = self.dopri5_n::<2>(model, manoeuvre, head(&x), tol, progress);
+            let (hist, sol) = self.adaptive_n::<2>(model, manoeuvre, head(&x), pair, progress);
             let stats = sol.stats;
             (hist, Some(sol), stats)
         }
     }
 
-    fn dopri5_n<const N: usize>(
+    fn adaptive_n<const N: usize>(
         &self,
         model: &VehicleModel,
         manoeuvre: &Manoeuvre,
         x0: [f64; N],
-        tol: &Tolerances,
+        (pair, tol): (Pair, Tolerances),
         progress: Option<&AtomicUsize>,
     ) -> (TimeHistory, DenseSolution<N>) {
-        let load_tol = load_tolerance(tol);
+        let load_tol = load_tolerance(&tol);
         let source = Source::Manoeuvre(manoeuvre);
         let mut sys = Driven::new(model, source, self.friction, load_tol);
         let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
         let n = ((t1 - t0) / self.step).round().max(0.0) as usize;
         // The integration counts the first n, the rows the next n.
         sys.progress = progress.map(|c| Counted::new(c, t0, self.step, 0));
-        let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
+        let sol = ode::solve(pair, &mut sys, (t0, t1), x0, &manoeuvre.breakpoints(), &tol);
         let mut hist = TimeHistory::with_capacity(n + 1, sys.records_roll::<N>());
         // A stalled integration's rows end where it stopped: beyond, the
         // dense output would be its last step's polynomial extrapolated.

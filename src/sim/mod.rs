@@ -2,10 +2,11 @@
 //! history (and, under Dormand–Prince, the dense solution step-steer
 //! metrics are measured on, in `metrics::simulated`).
 //!
-//! Two methods ([`Method`]):
-//! - Dormand–Prince 5(4) with error control and dense output
-//!   (Dormand & Prince 1980; Hairer, Nørsett & Wanner 1993; [`ode`]), the
-//!   default of scenario files: the solution is restarted at the input's
+//! Three methods ([`Method`]):
+//! - Dormand–Prince 5(4) (the default of scenario files) or 8(5,3)
+//!   (DOP853, `method = "dop853"`: fewer evaluations at tight tolerances),
+//!   with error control and dense output (Dormand & Prince 1980; Hairer,
+//!   Nørsett & Wanner 1993; [`ode`]): the solution is restarted at the input's
 //!   kinks, rows are the dense output at every output step, and metrics are
 //!   measured on the dense output itself (`metrics::simulated`), so events are
 //!   located to the tolerance rather than to the output grid;
@@ -35,7 +36,7 @@ mod trim_tests;
 
 use driven::manoeuvre_inputs;
 pub use driven::{Drive, FixedStep};
-pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
+pub use ode::{DenseSolution, OdeSystem, Pair, Stats, Tolerances};
 
 use crate::manoeuvre::{Manoeuvre, Replay};
 use crate::vehicle::{Inputs, Outputs, State, VehicleModel};
@@ -258,8 +259,22 @@ impl TimeHistory {
 pub enum MethodName {
     /// Dormand–Prince 5(4), error-controlled, dense output (the default).
     Dopri5,
+    /// Dormand & Prince's 8(5,3) (DOP853), error-controlled, dense output
+    /// of order 7: fewer evaluations at tight tolerances.
+    Dop853,
     /// Classical fixed-step RK4.
     Rk4,
+}
+
+impl MethodName {
+    /// The method as `simulate` names it.
+    pub fn title(self) -> &'static str {
+        match self {
+            MethodName::Dopri5 => "Dormand–Prince 5(4)",
+            MethodName::Dop853 => "Dormand–Prince 8(5,3)",
+            MethodName::Rk4 => "RK4",
+        }
+    }
 }
 
 /// The default method's name: that of [`Method::default`].
@@ -277,6 +292,10 @@ pub enum Method {
     /// Dormand–Prince 5(4) with error control; rows are the dense output at
     /// every output step.
     Dopri5(Tolerances),
+    /// Dormand & Prince's 8(5,3) (DOP853), as [`Method::Dopri5`] otherwise:
+    /// at rtol 1e-10 about half the right-hand sides of the 5(4) pair on
+    /// a step steer (docs/src/benchmarks.md, session 111).
+    Dop853(Tolerances),
 }
 
 /// The default of every simulation, scenario files' included:
@@ -294,6 +313,17 @@ impl Method {
         match self {
             Method::Rk4 => MethodName::Rk4,
             Method::Dopri5(_) => MethodName::Dopri5,
+            Method::Dop853(_) => MethodName::Dop853,
+        }
+    }
+
+    /// The pair and tolerances of an error-controlled method; None for
+    /// RK4.
+    pub fn adaptive(&self) -> Option<(Pair, Tolerances)> {
+        match *self {
+            Method::Rk4 => None,
+            Method::Dopri5(tol) => Some((Pair::Dopri5, tol)),
+            Method::Dop853(tol) => Some((Pair::Dop853, tol)),
         }
     }
 }
@@ -371,9 +401,9 @@ impl Integrator {
             h.t.iter_mut().for_each(|t| *t += origin);
             return h;
         }
-        match self.method {
-            Method::Rk4 => self.run_rk4(model, manoeuvre, x0, None),
-            Method::Dopri5(tol) => self.run_dopri5(model, manoeuvre, x0, &tol).0,
+        match self.method.adaptive() {
+            None => self.run_rk4(model, manoeuvre, x0, None),
+            Some(pair) => self.run_adaptive(model, manoeuvre, x0, pair, None).0,
         }
     }
 
@@ -391,7 +421,7 @@ impl Integrator {
         let rows = (span / self.step).round().max(0.0) as usize;
         match self.method {
             Method::Rk4 => rows,
-            Method::Dopri5(_) => 2 * rows,
+            Method::Dopri5(_) | Method::Dop853(_) => 2 * rows,
         }
     }
 
@@ -410,15 +440,15 @@ impl Integrator {
             sim.dense = sim.dense.map(|d| d.shifted(origin));
             return sim;
         }
-        match self.method {
-            Method::Rk4 => Simulation {
+        match self.method.adaptive() {
+            None => Simulation {
                 history: self.run_rk4(model, manoeuvre, x0, progress),
                 dense: None,
                 work: None,
             },
-            Method::Dopri5(tol) => {
+            Some(pair) => {
                 let (history, dense, work) =
-                    self.run_dopri5_work(model, manoeuvre, x0, &tol, progress);
+                    self.run_adaptive(model, manoeuvre, x0, pair, progress);
                 Simulation {
                     history,
                     dense,

@@ -983,3 +983,4 @@ mod trips_s111_studysim44;
 mod trips_s111_units45;
 mod trips_s111_words44;
 mod trips_s112_lead;
+mod trips_s112_perfstep46;

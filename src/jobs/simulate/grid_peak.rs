@@ -20,7 +20,7 @@ pub(super) fn on_the_rows(sc: &Scenario, m: &StepMetrics) -> Option<String> {
     let tp = m.yaw_rate_peak_time?;
     let step = sc.integrator.step;
     let rows = match (sc.integrator.method, m.filter_hz) {
-        (Method::Dopri5(_), None) => return None,
+        (Method::Dopri5(_) | Method::Dop853(_), None) => return None,
         (Method::Rk4, None) => "a row of the RK4 run (no dense output to locate it between rows)",
         (_, Some(_)) => "a row of the low-passed record (the filter runs on the rows)",
     };
@@ -38,7 +38,7 @@ pub(super) fn on_the_rows(sc: &Scenario, m: &StepMetrics) -> Option<String> {
             },
             match sc.integrator.method {
                 Method::Rk4 => ", as does Dormand–Prince (`method = \"dopri5\"`), which locates the peak on its dense output",
-                Method::Dopri5(_) => "",
+                Method::Dopri5(_) | Method::Dop853(_) => "",
             }
         )
     })

@@ -41,7 +41,7 @@ use crate::report::stale::{leftovers, Leftovers, OwnSet};
 use crate::report::{
     refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
 };
-use crate::sim::{LiftOff, Method, Simulation, TimeHistory, Wheel};
+use crate::sim::{LiftOff, Method, MethodName, Simulation, TimeHistory, Wheel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -64,6 +64,8 @@ pub struct ReplayGap {
 pub struct SimulateReport {
     /// Scenario name.
     pub scenario: String,
+    /// The integration method.
+    pub method: MethodName,
     /// The integration in words (method, steps, work).
     pub integration: String,
     /// Front and rear tyre models.
@@ -192,6 +194,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     .collect();
     let leftovers = leftovers(&out_dir, &OWN, &written);
     Ok(SimulateReport {
+        method: sc.integrator.method.name(),
         integration,
         tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
         friction: sc.integrator.friction,
@@ -213,9 +216,9 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
 fn integration_words(sc: &Scenario, sim: &Simulation) -> String {
     let h = &sim.history;
     match (sc.integrator.method, sim.stats()) {
-        (Method::Dopri5(tol), Some(st)) => format!(
-            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
-            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
+        (Method::Dopri5(tol) | Method::Dop853(tol), Some(st)) => format!(
+            "{}, rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
+            sc.integrator.method.name().title(), tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
         ),
         _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
     }

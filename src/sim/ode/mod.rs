@@ -56,6 +56,32 @@ pub use dop853::dop853;
 pub use dopri5::dopri5;
 pub use rosenbrock::{rosenbrock_w, rosenbrock_w_dual, W_NODES, W_PROBE, W_TIME_PROBE};
 
+/// The embedded pair an adaptive integration steps by (a scenario file's
+/// `method = "dopri5"` or `"dop853"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pair {
+    /// Dormand–Prince 5(4) ([`dopri5`]).
+    Dopri5,
+    /// Dormand & Prince's 8(5,3) ([`dop853`]).
+    Dop853,
+}
+
+/// Integrates `sys` by `pair` ([`dopri5`] or [`dop853`], same arguments).
+pub fn solve<const N: usize, S: OdeSystem<N>>(
+    pair: Pair,
+    sys: &mut S,
+    span: (f64, f64),
+    x0: [f64; N],
+    breakpoints: &[f64],
+    tol: &Tolerances,
+) -> DenseSolution<N> {
+    let (t_start, t_end) = span;
+    match pair {
+        Pair::Dopri5 => dopri5(sys, t_start, t_end, x0, breakpoints, tol),
+        Pair::Dop853 => dop853(sys, t_start, t_end, x0, breakpoints, tol),
+    }
+}
+
 /// An ODE system with `N` states. `&mut self` lets a system keep caches
 /// (the load-transfer solve's starting point) between evaluations; the
 /// result must not depend on them beyond the system's own tolerance.

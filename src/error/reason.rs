@@ -296,7 +296,7 @@ pub enum ParamReason {
     #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
     NotInEquilibrium,
     /// A tolerance given for the fixed-step RK4.
-    #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
+    #[error("tolerances apply to method = \"dopri5\" or \"dop853\"; RK4 has a fixed `step`")]
     ToleranceWithRk4,
     /// A lateral acceleration no steady state holds at the speed (boxed).
     #[error("{0}")]

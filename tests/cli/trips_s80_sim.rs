@@ -72,7 +72,7 @@ fn a_tolerance_with_rk4_is_refused_at_its_key_as_written() {
     let file = path.display();
     assert!(
         err.contains(&format!(
-            "{file}:23:8: `integrator.rtol` = 1e-6: tolerances apply to method = \"dopri5\""
+            "{file}:23:8: `integrator.rtol` = 1e-6: tolerances apply to method = \"dopri5\" or \"dop853\""
         )),
         "{err}"
     );

@@ -982,5 +982,6 @@ mod trips_s111_rigtir45;
 mod trips_s111_studysim44;
 mod trips_s111_units45;
 mod trips_s111_words44;
+mod trips_s112_folds47;
 mod trips_s112_lead;
 mod trips_s112_perfstep46;

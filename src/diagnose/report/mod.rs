@@ -7,6 +7,7 @@
 
 pub(crate) mod cause;
 mod evidence;
+pub mod fold_refits;
 pub(crate) mod gap;
 mod json;
 mod lookalike;
@@ -33,6 +34,7 @@ use crate::diagnose::effects::{same_effects, EffectKind};
 use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
+pub use crate::diagnose::report::fold_refits::FoldRefit;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, AlsoFar, AssumedFloor, CalibrationSource, ChannelCause, ChannelChange,

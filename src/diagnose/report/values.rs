@@ -10,6 +10,7 @@
 
 use crate::diagnose::effects::{Bound, Group, Parameter, RollDynamics};
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::fold_refits::FoldRefit;
 use crate::diagnose::report::parts::Part;
 use serde::Serialize;
 
@@ -73,6 +74,12 @@ pub struct ParameterValue {
     /// The degrees of freedom of that jackknife (Satterthwaite's count of
     /// the folds' unequal variances: 1 where one fold carries the rest).
     pub fold_noise_dof: Option<f64>,
+    /// Each fold refit's value with the runs it left out and whether it
+    /// converged ([`FoldRefit`]; empty where not cross-validated): the
+    /// values [`ParameterValue::fold_std_error`] is the jackknife of, and
+    /// where one stands apart, the run the words name
+    /// ([`ParameterValue::folds_apart`]).
+    pub fold_refits: Vec<FoldRefit>,
     /// It trades against an earlier parameter of its effect: the runs
     /// determine their sum, not the split ([`Traded`]; absent: no such
     /// pair).
@@ -250,6 +257,7 @@ impl ParameterValue {
             fold_std_error: None,
             fold_noise_std_error: None,
             fold_noise_dof: None,
+            fold_refits: Vec::new(),
             traded: None,
             effect_parameter: None,
         }
@@ -257,11 +265,19 @@ impl ParameterValue {
 
     /// The same with the fold refits' jackknife ([`jackknife`]) and the one
     /// the runs' noise alone gives, `noise.0` standard errors with `noise.1`
-    /// degrees of freedom (None: not known).
+    /// degrees of freedom (None: not known). The refits are kept one by one
+    /// ([`ParameterValue::fold_refits`]), as converged and with their runs
+    /// unnamed until [`ParameterValue::with_fold_runs`] says otherwise.
     pub fn with_folds(self, fold_values: &[f64], noise: Option<(f64, f64)>) -> Self {
         let fold_std_error = jackknife(fold_values);
         let noise = fold_std_error.and(noise);
+        let refit = |&value: &f64| FoldRefit {
+            left_out: Vec::new(),
+            value,
+            converged: true,
+        };
         Self {
+            fold_refits: fold_values.iter().map(refit).collect(),
             fold_std_error,
             fold_noise_std_error: noise.map(|(f, _)| f * self.asymptotic_std_error),
             fold_noise_dof: noise.map(|(_, nu)| nu).filter(|nu| nu.is_finite()),
@@ -318,6 +334,32 @@ impl ParameterValue {
             Some(j) => fitted && j > self.fold_limit() * self.fold_yardstick(),
             None => false,
         }
+    }
+
+    /// The fold refits of [`Self::fold_refits`] that stand apart
+    /// ([`crate::diagnose::report::fold_refits::folds_apart`], against [`Self::fold_yardstick`]), where the runs
+    /// disagree beyond their noise ([`Self::understated`]); none else.
+    pub fn folds_apart(&self) -> Vec<usize> {
+        if !self.understated() {
+            return Vec::new();
+        }
+        let values: Vec<f64> = self.fold_refits.iter().map(|f| f.value).collect();
+        crate::diagnose::report::fold_refits::folds_apart(&values, self.fold_yardstick())
+    }
+
+    /// The same with the runs each fold refit leaves out, `left_out[i]`
+    /// for fold `i`, and whether it converged, `converged[i]` (a fold
+    /// without an entry keeps what it had).
+    pub fn with_fold_runs(mut self, left_out: &[Vec<String>], converged: &[bool]) -> Self {
+        for (i, f) in self.fold_refits.iter_mut().enumerate() {
+            if let Some(runs) = left_out.get(i) {
+                f.left_out.clone_from(runs);
+            }
+            if let Some(&c) = converged.get(i) {
+                f.converged = c;
+            }
+        }
+        self
     }
 
     /// The same, held at its off value because no measured channel

@@ -13,6 +13,7 @@ mod causes;
 mod class;
 use class::{NO_VERDICT, OUTSIDE};
 mod evidence;
+mod fold_words;
 mod gap;
 mod lookalikes;
 mod parameters;

@@ -43,6 +43,9 @@ pub(crate) struct Baseline {
     bic0: f64,
     scales: [f64; 3],
     folds: usize,
+    /// The runs each fold leaves out, by name (the report's fold refits
+    /// name them).
+    fold_runs: Vec<Vec<String>>,
     /// Whether axle characteristics lead every parameter vector.
     axle: bool,
     /// The base's held-out errors by channel.
@@ -219,6 +222,7 @@ impl Baseline {
         let j_in = sc.insample.combined(&self.scales);
         let inside = reduction(self.j0_in, j_in, self.jn_in);
         let folds = self.folds;
+        let converged = sc.fold_converged.iter().filter(|&&c| c).count();
         let mut warnings = Vec::new();
         if rules::disagrees(inside, held) {
             warnings.push(RankWarning::Disagreement {
@@ -243,9 +247,9 @@ impl Baseline {
                 effects,
             });
         }
-        if sc.folds_converged < folds {
+        if converged < folds {
             warnings.push(RankWarning::FoldsNotConverged {
-                failed: folds - sc.folds_converged,
+                failed: folds - converged,
                 folds,
             });
         }
@@ -268,14 +272,17 @@ impl Baseline {
                 &sc.full,
                 (&sc.fold_params, &sc.fold_noise),
                 j > self.jn,
-            ),
+            )
+            .into_iter()
+            .map(|v| v.with_fold_runs(&self.fold_runs, &sc.fold_converged))
+            .collect(),
             heldout_error_before: self.j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),
             reduction_percent: held,
             insample_error_after: j_in,
             insample_reduction_percent: inside,
-            folds_converged: sc.folds_converged,
+            folds_converged: converged,
             folds,
             warnings,
             bic: sc.full.bic(),
@@ -305,6 +312,9 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
         bic0: scored.full.bic(),
         scales,
         folds: ctx.folds.len(),
+        fold_runs: (ctx.folds.iter())
+            .map(|f| f.iter().map(|&i| ctx.runs[i].name.clone()).collect())
+            .collect(),
         axle: ctx.bases.axle.is_some(),
         heldout: scored.heldout,
         prior: ctx.bases.identification.as_ref().and_then(|i| i.prior),

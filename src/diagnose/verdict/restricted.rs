@@ -144,7 +144,7 @@ impl Context<'_> {
             heldout: ChannelErrors::default(),
             fold_params: Vec::new(),
             fold_noise: Vec::new(),
-            folds_converged: 0,
+            fold_converged: Vec::new(),
             prior_weight: None,
         }
     }

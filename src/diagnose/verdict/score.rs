@@ -51,7 +51,7 @@ pub(crate) struct Scored {
     /// ([`fold_noise_factors`]; NaN where not fitted; empty where not
     /// cross-validated).
     pub(crate) fold_noise: Vec<(f64, f64)>,
-    pub(crate) folds_converged: usize,
+    pub(crate) fold_converged: Vec<bool>,
     /// What the prior's rows were multiplied by in its fits (axles from
     /// the runs; [`crate::diagnose::fit::tempering`]).
     pub(crate) prior_weight: Option<f64>,
@@ -125,7 +125,7 @@ impl Fitted<'_> {
             heldout: ChannelErrors::default(),
             fold_params: Vec::new(),
             fold_noise: Vec::new(),
-            folds_converged: 0,
+            fold_converged: Vec::new(),
             prior_weight: self.prior.map(|r| r.weight()),
         }
     }
@@ -423,7 +423,7 @@ impl<'a> Context<'a> {
         Scored {
             heldout,
             fold_noise: self.fold_noise(full),
-            folds_converged: per_fold.iter().filter(|f| f.2).count(),
+            fold_converged: per_fold.iter().map(|f| f.2).collect(),
             fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
             ..fitted.unscored()
         }

@@ -331,3 +331,76 @@ fn a_fit_that_leaves_a_gap_reports_its_fold_spread_where_larger() {
     assert_eq!(tight.std_error_basis, StdErrorBasis::Asymptotic);
     assert_eq!(tight.std_error, 0.00438);
 }
+
+/// Round 47's campaign: one run's yaw rate and ay logged 0.15 s late, the
+/// delay's fold refits at 0.0525–0.0535 s but the one leaving that run out
+/// (0.0310 s). The runs disagree beyond their noise, and the words name the
+/// fold and its run, with the others' range; where the effect removes
+/// nothing significant, or the refits agree, they name none.
+#[test]
+fn the_fold_that_stands_apart_names_its_run() {
+    let [delay] = EffectKind::SensorDelay.parameters() else {
+        panic!("a sensor delay has one parameter");
+    };
+    let v = ParameterValue::of(
+        Group::Effect(EffectKind::SensorDelay),
+        delay,
+        0.0529,
+        0.00235,
+    );
+    let folds = [
+        0.0530, 0.0525, 0.0535, 0.0310, 0.0528, 0.0533, 0.0531, 0.0527,
+    ];
+    let runs: Vec<Vec<String>> = (0..8).map(|i| vec![format!("run{i}.csv")]).collect();
+    let p = v
+        .clone()
+        .with_folds(&folds, Some((1.0, 7.0)))
+        .with_model_error(true)
+        .with_fold_runs(&runs, &[true; 8]);
+    assert!(p.understated());
+    assert_eq!(p.folds_apart(), vec![3]);
+    assert_eq!(p.fold_refits[3].left_out, vec!["run3.csv".to_string()]);
+    let said = parameter(&p);
+    assert!(
+        said.contains("the runs disagree beyond their noise"),
+        "{said}"
+    );
+    assert!(
+        said.ends_with("; the fold leaving out run3.csv refits it to 0.0310 s, the other 7 folds to 0.0525–0.0535 s, beyond 3× their spread: that run is the one to check (its own logger, its own set-up), unless the effect misses what that run alone excites"),
+        "{said}"
+    );
+    // One fold carrying most of what determines it (one degree of
+    // freedom): the fold apart may be the one that pins the value, and the
+    // run whose fold moves most the other way (run2, 0.0535 s above the
+    // all-run 0.0529 s where run3's went below) is named beside it.
+    let pinned = v
+        .clone()
+        .with_folds(&folds, Some((1.0, 1.0)))
+        .with_model_error(true)
+        .with_fold_runs(&runs, &[true; 8]);
+    assert_eq!(pinned.folds_apart(), vec![3]);
+    let said = parameter(&pinned);
+    assert!(
+        said.ends_with(": check that run (its own logger, its own set-up) and run2.csv (its fold 0.0535 s): one fold carrying most of what determines it, without that run the others follow the run that pulls them most the other way — unless the effect misses what that run alone excites"),
+        "{said}"
+    );
+    // A refit that stopped short is said so: the refit, not the run, first.
+    let mut stopped = [true; 8];
+    stopped[3] = false;
+    let s = parameter(&p.clone().with_fold_runs(&runs, &stopped));
+    assert!(
+        s.ends_with(" (the refit leaving out run3.csv did not converge: its value is where it stopped, so check that refit before the run)"),
+        "{s}"
+    );
+    // Nothing significant removed: no run named.
+    assert!(!parameter_of(&p, false).contains("to check"));
+    // Folds that scatter alike (±0.01 s) disagree, but none stands apart.
+    let alike = [0.043, 0.063, 0.053, 0.043, 0.063, 0.053, 0.043, 0.063];
+    let q = v
+        .with_folds(&alike, Some((1.0, 7.0)))
+        .with_model_error(true)
+        .with_fold_runs(&runs, &[true; 8]);
+    assert!(q.understated());
+    assert!(q.folds_apart().is_empty());
+    assert!(!parameter(&q).contains("to check"));
+}

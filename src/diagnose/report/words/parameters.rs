@@ -4,6 +4,7 @@
 //! compliance in rad/kN with rad/N beside it); a dimensionless parameter
 //! (unit `-`) is written without one.
 
+use super::fold_words::apart;
 use super::{std_error, value};
 use crate::diagnose::effects::Bound;
 use crate::diagnose::report::{ParameterValue, StdErrorBasis};
@@ -158,7 +159,7 @@ fn parameter_alone(p: &ParameterValue, removes: bool) -> String {
     }
     let Some(bound) = p.bound else {
         return if p.determined {
-            determined(p, removes, &v, &unit)
+            determined(p, removes, &v, &unit) + &apart(p, removes)
         } else if p.std_error.is_finite() {
             format!(
                 "{} = {v}{unit} (not determined by the runs: its standard error {} exceeds its whole range)",

@@ -137,16 +137,44 @@ impl Study {
     }
 
     /// Simulates every combination in parallel; `progress` counts them.
+    /// A combination listed twice is simulated once: Wang & Liang's RBF
+    /// pairs lie on the map's grid (all 51 of the bundled study's, the
+    /// same bits: `io/study.rs` adds the offset in the file's unit), and
+    /// the same car gives the same sample.
     pub(crate) fn evaluate_all(&self, pairs: &[(f64, f64)], progress: &AtomicUsize) -> Vec<Sample> {
-        pairs
+        let (unique, of) = first_of_each(pairs);
+        let samples: Vec<Sample> = unique
             .par_iter()
-            .map(|&(kf, kr)| {
-                let s = self.evaluate(kf, kr);
+            .map(|&i| {
+                let s = self.evaluate(pairs[i].0, pairs[i].1);
                 progress.fetch_add(1, Ordering::Relaxed);
                 s
             })
-            .collect()
+            .collect();
+        progress.fetch_add(pairs.len() - unique.len(), Ordering::Relaxed);
+        of.iter().map(|&u| samples[u]).collect()
     }
+}
+
+/// The index in `pairs` of each distinct combination's first listing (by
+/// its exact bits), and for every listing the position of its combination
+/// among those.
+fn first_of_each(pairs: &[(f64, f64)]) -> (Vec<usize>, Vec<usize>) {
+    let mut seen = std::collections::HashMap::new();
+    let mut unique = Vec::new();
+    let of = pairs
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            *seen
+                .entry((p.0.to_bits(), p.1.to_bits()))
+                .or_insert_with(|| {
+                    unique.push(i);
+                    unique.len() - 1
+                })
+        })
+        .collect();
+    (unique, of)
 }
 
 /// A step-steer metric of the study: a column of `study.csv` and a metric

@@ -1,4 +1,4 @@
-use super::inverse::{best_on_curve, distance, solve_rear, Map};
+use super::inverse::{best_on_curve, distance, golden_section, solve_rear, Map};
 use super::*;
 use crate::manoeuvre::StepSteer;
 use crate::sim::Method;
@@ -201,4 +201,62 @@ fn a_sliding_combination_is_reported_without_metrics() {
     let fine = st.evaluate(500.0 * DEG, 540.0 * DEG).reported();
     assert_eq!(fine.response, "handling");
     assert!(fine.metrics.is_some());
+}
+
+/// The golden-section search of the inverse evaluates its cost once per
+/// iteration (two to start, none after the last narrowing: 26 for 25
+/// iterations, where evaluating both interior points afresh took 50), and
+/// narrows the interval exactly as that search does: the same ends, to
+/// rounding, around the closed-form minimum of a parabola.
+#[test]
+fn the_golden_section_search_reuses_its_interior_point() {
+    let minimum = 0.3141;
+    let cost = |x: f64| (x - minimum) * (x - minimum);
+    let calls = std::cell::Cell::new(0usize);
+    let (mut lo, mut hi) = (-1.0, 2.0);
+    golden_section(&mut lo, &mut hi, |x| {
+        calls.set(calls.get() + 1);
+        cost(x)
+    });
+    assert_eq!(calls.get(), 26);
+    // The search as it was: both interior points evaluated every iteration.
+    let (mut lo0, mut hi0) = (-1.0_f64, 2.0_f64);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..25 {
+        let (m1, m2) = (hi0 - g * (hi0 - lo0), lo0 + g * (hi0 - lo0));
+        if cost(m1) < cost(m2) {
+            hi0 = m2;
+        } else {
+            lo0 = m1;
+        }
+    }
+    assert!(
+        (lo - lo0).abs() < 1e-12 && (hi - hi0).abs() < 1e-12,
+        "{lo} {hi} vs {lo0} {hi0}"
+    );
+    // 0.618^25 of the width 3 around the minimum.
+    assert!(lo <= minimum && minimum <= hi, "{lo} {hi}");
+    assert!(hi - lo < 3.0 * g.powi(25) * (1.0 + 1e-9), "{}", hi - lo);
+}
+
+/// A combination listed twice (an RBF pair on the map's grid) is
+/// simulated once and its sample given at both places, the one a
+/// simulation of it gives; the progress counts every listing.
+#[test]
+fn a_combination_listed_twice_is_simulated_once_and_given_twice() {
+    let st = study();
+    let (a, b) = ((500.0 * DEG, 540.0 * DEG), (400.0 * DEG, 560.0 * DEG));
+    let pairs = [a, b, a, a];
+    assert_eq!(first_of_each(&pairs), (vec![0, 1], vec![0, 1, 0, 0]));
+    let progress = AtomicUsize::new(0);
+    let samples = st.evaluate_all(&pairs, &progress);
+    assert_eq!(progress.load(std::sync::atomic::Ordering::Relaxed), 4);
+    assert_eq!(samples.len(), 4);
+    // Compared as printed: a metric a step lacks is NaN, unequal to itself.
+    let text = |s: &Sample| format!("{s:?}");
+    assert_eq!(text(&samples[0]), text(&st.evaluate(a.0, a.1)));
+    assert_eq!(text(&samples[1]), text(&st.evaluate(b.0, b.1)));
+    assert_eq!(text(&samples[2]), text(&samples[0]));
+    assert_eq!(text(&samples[3]), text(&samples[0]));
+    assert_ne!(text(&samples[1]), text(&samples[0]));
 }

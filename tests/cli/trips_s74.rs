@@ -18,7 +18,11 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
     let Some(data) = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv") else {
         return;
     };
-    let text = fs::read_to_string(data).unwrap();
+    // Without its `mz` column: the loads are grouped from `fz` and the
+    // lateral force fitted first, the same with it or without (the five
+    // nominals, curves and σ alike); the aligning-moment fit, half the
+    // run's time, is not what this test is about.
+    let text = without_column(&fs::read_to_string(data).unwrap(), "mz");
     let mut lines = text.lines();
     let header = lines.next().unwrap();
     let rows: Vec<&str> = lines.collect();
@@ -46,6 +50,21 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
         let sigma = report["sigma_percent"].as_f64().unwrap();
         assert!(sigma < 3.5, "every {every}: σ {sigma} %");
     }
+}
+
+/// The CSV `text` without its column `name` (which it must have).
+pub(crate) fn without_column(text: &str, name: &str) -> String {
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let drop = header.iter().position(|c| *c == name).unwrap();
+    text.lines()
+        .map(|l| {
+            let kept: Vec<&str> = (l.split(',').enumerate())
+                .filter(|(i, _)| *i != drop)
+                .map(|(_, c)| c)
+                .collect();
+            kept.join(",") + "\n"
+        })
+        .collect()
 }
 
 /// A rig file with the Tire Test Consortium's channel names and units in

@@ -26,6 +26,7 @@ use crate::jobs::shard::{
 };
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_json_sorted, OutputLock};
+use rayon::prelude::*;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -447,41 +448,44 @@ fn answer(
     let per_unit = |p: &(f64, f64)| [p.0 / k, p.1 / k];
     let constraints = &inv.constraints;
     let reference = inv.reference;
-    let mut targets = Vec::new();
-    for &t in &inv.targets {
-        let mut all = vec![t];
-        all.extend(constraints.iter().copied());
-        let region = map.region(&all).iter().map(per_unit).collect();
-        let curve = map.iso_curve(t.metric, t.value);
-        let span = 2.0 * (input.front[1] - input.front[0]);
-        let bounds = map.bounds();
-        let best =
-            best_on_curve(st, t.metric, &curve, bounds, reference, (t.value, span)).map(|b| {
-                BestAnswer {
-                    k_front: b.k_front / k,
-                    k_rear: b.k_rear / k,
-                    resimulated: b.value,
-                    distance_to_reference: distance((b.k_front, b.k_rear), reference),
-                    at_map_edge: b.edge,
+    // Each target's best combination is a serial search of simulations,
+    // independent of the others': searched side by side, collected in the
+    // file's order.
+    let targets =
+        (inv.targets.par_iter())
+            .map(|&t| {
+                let mut all = vec![t];
+                all.extend(constraints.iter().copied());
+                let region = map.region(&all).iter().map(per_unit).collect();
+                let curve = map.iso_curve(t.metric, t.value);
+                let span = 2.0 * (input.front[1] - input.front[0]);
+                let bounds = map.bounds();
+                let best = best_on_curve(st, t.metric, &curve, bounds, reference, (t.value, span))
+                    .map(|b| BestAnswer {
+                        k_front: b.k_front / k,
+                        k_rear: b.k_rear / k,
+                        resimulated: b.value,
+                        distance_to_reference: distance((b.k_front, b.k_rear), reference),
+                        at_map_edge: b.edge,
+                    });
+                let rbf = net
+                    .filter(|_| t.metric == Metric::Er)
+                    .map(|(net, fit)| rbf_answer(st, net, fit, &t, bounds, (reference, k)));
+                let curve = CurveAnswer {
+                    curve: curve.iter().map(per_unit).collect(),
+                    best,
+                    rbf,
+                    map_reach: MapReach::of(map, t.metric, t.value, unit),
+                };
+                TargetReport {
+                    metric: t.metric,
+                    target: t.value,
+                    tolerance: t.tolerance,
+                    region,
+                    curve,
                 }
-            });
-        let rbf = net
-            .filter(|_| t.metric == Metric::Er)
-            .map(|(net, fit)| rbf_answer(st, net, fit, &t, bounds, (reference, k)));
-        let curve = CurveAnswer {
-            curve: curve.iter().map(per_unit).collect(),
-            best,
-            rbf,
-            map_reach: MapReach::of(map, t.metric, t.value, unit),
-        };
-        targets.push(TargetReport {
-            metric: t.metric,
-            target: t.value,
-            tolerance: t.tolerance,
-            region,
-            curve,
-        });
-    }
+            })
+            .collect();
     Ok(InverseReport {
         unit,
         reference: per_unit(&reference),

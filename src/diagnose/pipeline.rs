@@ -435,13 +435,19 @@ fn beta_against(c: &Campaign, all: &Augmented) -> Result<Vec<Note>, Error> {
 /// the screened ones' rows, and the search of combinations within
 /// `limits` (most effects, screening): without a significant gap nothing
 /// is searched.
-fn searched(
-    ctx: &Context,
+fn searched<'a>(
+    ctx: &Context<'a>,
     effects: &[EffectKind],
     base: &Baseline,
     limits: (usize, bool),
     significant: bool,
-) -> (Vec<Scored>, Vec<usize>, Vec<Ranked>, Vec<Screened>, Search) {
+) -> (
+    Vec<Scored>,
+    Vec<usize>,
+    Vec<Ranked>,
+    Vec<Screened>,
+    Search<'a>,
+) {
     let (singles, order, screened, screened_rows) =
         singles(ctx, effects, base, limits.1, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();

@@ -94,6 +94,16 @@ pub(crate) struct Search<'a> {
     spared: Vec<Spared<'a>>,
 }
 
+/// The singles scored, the cross-validated ones' order, their ranking, the
+/// screened ones' rows, and the search (as the pipeline takes them).
+pub(crate) type Searched<'a> = (
+    Vec<Scored>,
+    Vec<usize>,
+    Vec<Ranked>,
+    Vec<Screened>,
+    Search<'a>,
+);
+
 /// The verdict's search: the best single (`order` ranks the
 /// cross-validated `singles` by held-out error), then greedy additions,
 /// each tried jointly with every remaining effect (`all`: those in `order`

@@ -52,7 +52,7 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Screened, Unseen};
+use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
@@ -67,7 +67,7 @@ use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::{baseline, Baseline};
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{search, Search};
+use crate::diagnose::verdict::search::{search, Searched};
 use crate::diagnose::verdict::{calibration::offsets_matched, rules};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
@@ -435,13 +435,13 @@ fn beta_against(c: &Campaign, all: &Augmented) -> Result<Vec<Note>, Error> {
 /// the screened ones' rows, and the search of combinations within
 /// `limits` (most effects, screening): without a significant gap nothing
 /// is searched.
-fn searched(
-    ctx: &Context,
+fn searched<'a>(
+    ctx: &Context<'a>,
     effects: &[EffectKind],
     base: &Baseline,
     limits: (usize, bool),
     significant: bool,
-) -> (Vec<Scored>, Vec<usize>, Vec<Ranked>, Vec<Screened>, Search) {
+) -> Searched<'a> {
     let (singles, order, screened, screened_rows) =
         singles(ctx, effects, base, limits.1, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();

@@ -412,7 +412,10 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
             )
         }));
     }
-    let sets: Vec<_> = d.screened_sets().collect();
+    let sets: Vec<_> = d
+        .screened_sets()
+        .filter(|s| s.outranked.is_none())
+        .collect();
     if let Some(first) = sets.first() {
         out.push(format!(
             "sets screened, not cross-validated (each removes in sample below {:.0} % − {:.0} points of the gap the set it extends leaves, so none could be added):",
@@ -430,6 +433,37 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
             )
         }));
     }
+    out.extend(outranked_lines(d, w));
+    out
+}
+
+/// The sets a greedy step did not cross-validate, its pick being unable to
+/// read them: each with its least possible held-out J and the step's best.
+fn outranked_lines(d: &Diagnosis, w: usize) -> Vec<String> {
+    let sets: Vec<_> = d
+        .screened_sets()
+        .filter_map(|s| Some((s, s.outranked.as_ref()?)))
+        .collect();
+    if sets.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![format!(
+        "sets not cross-validated (in sample plus {:.0} points, their least possible held-out J is beyond what the step's pick reads of its best set):",
+        sets[0].0.margin_percent
+    )];
+    out.extend(sets.iter().map(|(s, o)| {
+        format!(
+            "  {:<w$} {:>8} {:>11} {:>8} % of what {} leaves, held-out J at least {:.3} against {}'s {:.3}",
+            s.effect,
+            "—",
+            "—",
+            fixed(s.insample_reduction_percent, 1),
+            joined(&s.extends, "+"),
+            o.floor,
+            joined(&o.by, "+"),
+            o.heldout_error,
+        )
+    }));
     out
 }
 

@@ -244,7 +244,8 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
 /// with its in-sample reduction: the paragraphs under the ranking table.
 /// Apart from [`ranking`] so that it reads on a screen.
 fn screened(p: &mut Page, d: &Diagnosis) {
-    let screened_sets: Vec<_> = d.screened_sets().collect();
+    let (outranked, screened_sets): (Vec<_>, Vec<_>) =
+        d.screened_sets().partition(|s| s.outranked.is_some());
     let sets: Vec<String> = screened_sets
         .iter()
         .map(|s| {
@@ -264,6 +265,28 @@ fn screened(p: &mut Page, d: &Diagnosis) {
                 first.threshold_percent,
                 first.margin_percent,
                 sets.join(", ")
+            ),
+        );
+    }
+    let spared: Vec<String> = outranked
+        .iter()
+        .filter_map(|s| {
+            let o = s.outranked.as_ref()?;
+            Some(format!(
+                "{} (held-out J at least {:.3} against {}'s {:.3})",
+                s.effect,
+                o.floor,
+                joined(&o.by, "+"),
+                o.heldout_error
+            ))
+        })
+        .collect();
+    if !spared.is_empty() {
+        p.paragraph(
+            "",
+            &format!(
+                "Sets not cross-validated (their least possible held-out J, in sample plus the margin, is beyond what the step's pick reads of its best set): {}.",
+                spared.join(", ")
             ),
         );
     }

@@ -97,7 +97,8 @@ fn reduction(before: f64, after: f64, jn: f64) -> f64 {
 /// screening) is, in the diagnosis without (`off`), cross-validated to a
 /// held-out reduction of what the set it extends leaves below the
 /// acceptance share, within the margin of its in-sample one, and not the
-/// verdict.
+/// verdict; one a greedy step spared (its pick unable to read it), to a
+/// held-out error at or above the floor it was spared on.
 fn set_screened_rightly(s: &Screened, off: &Diagnosis, what: &str) {
     let row = |effects: &[EffectKind]| {
         off.ranking
@@ -110,6 +111,25 @@ fn set_screened_rightly(s: &Screened, off: &Diagnosis, what: &str) {
     assert!(!same_effects(off.verdict.effects(), &s.effects), "{what}");
     let jn = off.gap.noise_level;
     let extra = reduction(extended.heldout_error_after, larger.heldout_error_after, jn);
+    // A set its step's pick could not read: cross-validated after all, it
+    // lies at or above the floor it was spared on, beyond the step's best.
+    if let Some(o) = &s.outranked {
+        assert!(
+            larger.heldout_error_after >= o.floor,
+            "{what}: {} held out {} below its floor {}",
+            s.effect,
+            larger.heldout_error_after,
+            o.floor
+        );
+        assert!(o.floor > o.heldout_error, "{what}: {s:?}");
+        assert!(
+            extra <= s.insample_reduction_percent + s.margin_percent,
+            "{what}: {} adds {extra:.1} % held out, {:.1} % in sample",
+            s.effect,
+            s.insample_reduction_percent
+        );
+        return;
+    }
     assert!(
         s.insample_reduction_percent + s.margin_percent < s.threshold_percent,
         "{what}: {s:?}"

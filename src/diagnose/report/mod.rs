@@ -139,6 +139,24 @@ pub struct Screened {
     pub delta_bic: f64,
     /// How the all-run fit's global stage searched.
     pub global_search: GlobalSearch,
+    /// A greedy step's set not cross-validated because the step's pick
+    /// could not read it (None: screened below the threshold).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outranked: Option<Outranked>,
+}
+
+/// Why a greedy step's set was not cross-validated: its least possible
+/// held-out error (its in-sample share plus the screening's margin)
+/// lies beyond what the step's pick reads of its best set (the verdict's
+/// parsimony window, or its look-alike window where it is pressed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Outranked {
+    /// The step's best set the pick reads first.
+    pub by: Vec<EffectKind>,
+    /// Its held-out error J.
+    pub heldout_error: f64,
+    /// The spared set's least possible held-out error J.
+    pub floor: f64,
 }
 
 /// Effects whose held-out gaps lie within one another's confounding window (written with the

@@ -87,7 +87,8 @@ fn untried(best: &[EffectKind], tried: &[Vec<EffectKind>]) -> Vec<(usize, usize)
 /// The untried pairs of the best singles in sample (`all` indexing
 /// `singles`), each started by `extend` (the greedy step's starts of a
 /// single extended by an effect), fitted, cross-validated and added to
-/// `combinations` (the search's rows so far, read for the sets tried); the
+/// `combinations` (the search's rows so far, read for the sets tried, with
+/// the sets the greedy steps `spared`); the
 /// one to take ([`rules::pick`]) where
 /// it passes as a whole against the base model, with the pair it was taken
 /// over for parsimony ([`rules::simpler_than`]), if any, and the best
@@ -96,11 +97,13 @@ pub(crate) fn paired<'a>(
     ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
-    combinations: &mut Vec<Ranked>,
+    (combinations, spared): (&mut Vec<Ranked>, &[Vec<EffectKind>]),
     extend: impl Fn(&Scored, EffectKind) -> Vec<Started<'a>> + Sync,
 ) -> Option<(Scored, Option<Simpler>, Vec<EffectKind>)> {
     let best = best_in_sample(singles, all, base);
-    let tried: Vec<Vec<EffectKind>> = combinations.iter().map(|r| r.effects.clone()).collect();
+    let tried: Vec<Vec<EffectKind>> = (combinations.iter().map(|r| r.effects.clone()))
+        .chain(spared.iter().cloned())
+        .collect();
     let kinds: Vec<EffectKind> = best.iter().map(|&i| singles[i].kinds[0]).collect();
     let pairs = untried(&kinds, &tried);
     if pairs.is_empty() {

@@ -200,8 +200,9 @@ pub(crate) enum Step<'a> {
 /// their full fits are screened as well ([`screened_additions`]), none of
 /// the step can be added: the rows, the restricted fits' where they
 /// screened, the full fits' elsewhere. Otherwise the rest are polished too
-/// and every set is cross-validated, as without screening: a step in which
-/// a set could be added is decided on full fits alone.
+/// and every set the step's pick can read is cross-validated, as without
+/// screening: a step in which a set could be added is decided on full
+/// fits alone.
 pub(crate) fn screen_step<'a>(
     ctx: &Context<'a>,
     base: &Baseline,

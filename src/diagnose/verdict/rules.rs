@@ -178,6 +178,66 @@ pub fn reaches(floor: f64, usable: bool, best: f64, best_usable: f64, jn: f64) -
     floor <= best || (usable && floor <= best_usable + PARSIMONY * jn)
 }
 
+/// What a greedy step's pick reads first of the sets cross-validated so
+/// far ([`pick`]): the best whose axles are a tyre and whose every effect
+/// contributes (`top`, its held-out error J, and whether it is `pressed`
+/// on a search bound), and where it is pressed, the best of those not
+/// pressed within its look-alike window (`inside`), which the pick then
+/// reads instead.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reading {
+    /// The best's held-out error.
+    pub top: f64,
+    /// Whether the best is pressed on a search bound.
+    pub pressed: bool,
+    /// The held-out error of the best not pressed inside its window.
+    pub inside: Option<f64>,
+}
+
+/// The [`Reading`] of candidates (in any order); None without one whose
+/// axles are a tyre.
+pub fn reading(candidates: &[Candidate], jn: f64) -> Option<Reading> {
+    let mut ranked = candidates.to_vec();
+    ranked.sort_by(|a, b| a.heldout.total_cmp(&b.heldout));
+    let usable = tyres(&ranked);
+    let top = ranked[*usable.first()?];
+    let inside = inside_ranges(&ranked, &usable, jn).map(|k| ranked[k[0]].heldout);
+    Some(Reading {
+        top: top.heldout,
+        pressed: top.pressed,
+        inside,
+    })
+}
+
+/// Whether a greedy step's set whose least possible held-out error is
+/// `floor` (and which is `pressed` on a search bound or not: its fit on
+/// all runs says, before any fold) can still be read by the step's pick
+/// ([`pick`], [`simpler_than`]), given what it reads of the sets
+/// cross-validated so far (`read`; None: nothing yet, every set can be).
+/// It is read where it could rank first (`floor` below the best's J) or
+/// lie within [`PARSIMONY`] noise levels of the best; and, the best being
+/// pressed and the set not, where it could be read inside the best's
+/// look-alike window: within [`PARSIMONY`] noise levels of the best inside
+/// it, or anywhere in the window while none is. Beyond these, the set
+/// moves neither the pick nor what it passes over, whatever its held-out
+/// error and its other flags turn out to be. As sets are cross-validated
+/// the reading only tightens, so a set once beyond it stays beyond.
+pub fn may_be_read(floor: f64, pressed: bool, read: Option<Reading>, jn: f64) -> bool {
+    let Some(r) = read else {
+        return true;
+    };
+    if floor <= r.top + PARSIMONY * jn {
+        return true;
+    }
+    if !r.pressed || pressed {
+        return false;
+    }
+    match r.inside {
+        Some(first) => floor <= first + PARSIMONY * jn,
+        None => gap_above(floor, jn) <= window(gap_above(r.top, jn), jn).bound,
+    }
+}
+
 /// What the choice of a candidate reads of it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Candidate {

@@ -36,8 +36,9 @@
 //! SCREEN_MARGIN` of the in-sample gap the current set leaves adds none
 //! (the current set, refitted on the same folds, in the base model's
 //! place), and its sets are listed as screened with the set they extend.
-//! Where one set could pass, all are cross-validated: the pick among them
-//! reads every held-out error, as it does without screening.
+//! Where one set could pass, every set the pick among them can read is
+//! cross-validated (`search/spare.rs`): the pick reads them as it does
+//! without screening.
 
 use crate::diagnose::effects::{joined, set_of, EffectKind};
 use crate::diagnose::report::{Ranked, Screened};
@@ -181,6 +182,7 @@ pub(crate) fn screened_row(
         margin_percent: SCREEN_MARGIN,
         delta_bic: base.delta_bic(sc),
         global_search: sc.full.global,
+        outranked: None,
     }
 }
 

@@ -23,6 +23,11 @@
 //! them. Each of these rules is a pure function in
 //! [`crate::diagnose::verdict::rules`], tested there.
 //!
+//! A greedy step cross-validates only the sets its pick can read: a set
+//! whose least possible held-out error (its in-sample share plus the
+//! screening's margin) lies beyond the pick's windows around the step's
+//! best is reported with that bound instead ([`spare`]).
+//!
 //! A candidate's fitted vector is read through its [`Layout`] (the axle
 //! characteristics, each effect's parameters, the roll dynamics), and a
 //! combination starts from [`Layout::combined`] of its members' fits.
@@ -49,12 +54,14 @@ use crate::diagnose::verdict::screening::one_screened_row_per_set;
 use crate::diagnose::verdict::twins::simpler_twin;
 use rayon::prelude::*;
 use rows::{one_row_per_set, worse_than_subsets};
+use spare::{cross_validated, spared_row, Spared};
 
 mod rows;
+mod spare;
 
 /// What the search for a verdict found.
 #[derive(Default)]
-pub(crate) struct Search {
+pub(crate) struct Search<'a> {
     /// The accepted set, if any.
     pub(crate) chosen: Option<Scored>,
     /// Every combination tried, as report rows.
@@ -82,19 +89,32 @@ pub(crate) struct Search {
     /// its first effect's place, [`simpler_twin`]): the single it had been
     /// grown from.
     pub(crate) grown_from: Option<EffectKind>,
+    /// Sets the greedy steps did not cross-validate, their pick being
+    /// unable to read them ([`spare`]), until the search ends.
+    spared: Vec<Spared<'a>>,
 }
+
+/// The singles scored, the cross-validated ones' order, their ranking, the
+/// screened ones' rows, and the search (as the pipeline takes them).
+pub(crate) type Searched<'a> = (
+    Vec<Scored>,
+    Vec<usize>,
+    Vec<Ranked>,
+    Vec<Screened>,
+    Search<'a>,
+);
 
 /// The verdict's search: the best single (`order` ranks the
 /// cross-validated `singles` by held-out error), then greedy additions,
 /// each tried jointly with every remaining effect (`all`: those in `order`
 /// and the screened ones, whose all-run fits start them).
-pub(crate) fn search(
-    ctx: &Context,
+pub(crate) fn search<'a>(
+    ctx: &Context<'a>,
     singles: &[Scored],
     (order, all): (&[usize], &[usize]),
     base: &Baseline,
     limits: (usize, bool),
-) -> Search {
+) -> Search<'a> {
     let mut out = Search::default();
     // A single whose axles are no tyre cannot be the verdict, nor start
     // one; it can still join a set (a steer lag whose axles collapse
@@ -171,13 +191,13 @@ pub(crate) fn search(
 /// leaves a significant gap, the search starts again from the look-alikes
 /// (at most ALTERNATIVE_STARTS), and a set that leaves clearly less of the
 /// gap replaces it.
-fn restarted(
-    ctx: &Context,
+fn restarted<'a>(
+    ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
     limits: (usize, bool),
     found: (Scored, Vec<Simpler>),
-    out: &mut Search,
+    out: &mut Search<'a>,
 ) -> (Scored, Vec<Simpler>) {
     let (scales, jn) = (base.scales(), base.jn);
     let (mut current, mut simpler) = found;
@@ -206,13 +226,13 @@ fn restarted(
 /// Where the set `found` is no verdict, the greedy search from the best
 /// pair of singles in sample ([`paired`]), which replaces it: the truth
 /// can be a pair without the best single.
-fn fallen_back(
-    ctx: &Context,
+fn fallen_back<'a>(
+    ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
     limits: (usize, bool),
     found: (Scored, Vec<Simpler>),
-    out: &mut Search,
+    out: &mut Search<'a>,
 ) -> (Scored, Vec<Simpler>) {
     let scales = base.scales();
     let total = reduction(base.j0, found.0.heldout.combined(&scales), base.jn);
@@ -221,7 +241,10 @@ fn fallen_back(
     }
     let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
     let rows = &mut out.combinations;
-    let Some((pair, over, from)) = paired(ctx, (singles, all), base, rows, extend) else {
+    // A set a greedy step spared was tried all the same.
+    let spared: Vec<Vec<EffectKind>> = out.spared.iter().map(|s| s.row.effects.clone()).collect();
+    let Some((pair, over, from)) = paired(ctx, (singles, all), base, (rows, &spared), extend)
+    else {
         return found;
     };
     out.fallback = Some(Fallback {
@@ -238,12 +261,12 @@ fn fallen_back(
 /// over on its way): accepted (or its simpler twin, [`simpler_twin`]), or
 /// refused; then the report rows tidied: one per set, warned where worse
 /// in sample than a subset, ordered by held-out error.
-fn concluded(
-    ctx: &Context,
+fn concluded<'a>(
+    ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
     (current, simpler): (Scored, Vec<Simpler>),
-    out: &mut Search,
+    out: &mut Search<'a>,
 ) {
     let scales = base.scales();
     let total = reduction(base.j0, current.heldout.combined(&scales), base.jn);
@@ -262,10 +285,15 @@ fn concluded(
         out.ended = Some(base.refused(&current, None, None));
         out.fallback = None;
     }
+    spare::settled(ctx, base, out);
     let chosen = out.chosen.as_ref().map(|c| c.kinds.as_slice());
     one_row_per_set(&mut out.combinations, chosen);
     let members: Vec<&Scored> = all.iter().map(|&i| &singles[i]).collect();
-    worse_than_subsets(&members, &scales, &mut out.combinations);
+    let spared: Vec<(Vec<EffectKind>, f64)> = (out.screened.iter())
+        .filter(|r| r.outranked.is_some())
+        .map(|r| (r.effects.clone(), r.insample_error_after))
+        .collect();
+    worse_than_subsets(&members, &spared, &scales, &mut out.combinations);
     one_screened_row_per_set(&mut out.screened, &out.combinations);
     out.combinations
         .sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
@@ -306,13 +334,13 @@ fn lookalikes(
 /// over on the way, where its axles are a tyre and it leaves clearly less
 /// of the gap than `current` ([`rules::replaces`]). The sets it tries are
 /// report rows either way.
-fn led_by(
-    ctx: &Context,
+fn led_by<'a>(
+    ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
     limits: (usize, bool),
     (lead, current): (&Scored, &Scored),
-    out: &mut Search,
+    out: &mut Search<'a>,
 ) -> Option<(Scored, Vec<Simpler>)> {
     let (scales, jn) = (base.scales(), base.jn);
     let jc = current.heldout.combined(&scales);
@@ -331,14 +359,14 @@ fn led_by(
 /// [`ACCEPT`] of what is left and lowers the BIC. Every set tried goes into
 /// `out.combinations`. Returns the set it ends on and the sets each
 /// accepted step passed over for a simpler one.
-fn greedy(
-    ctx: &Context,
+fn greedy<'a>(
+    ctx: &Context<'a>,
     singles: &[Scored],
     order: &[usize],
     base: &Baseline,
     (max_effects, screening): (usize, bool),
     start: &Scored,
-    out: &mut Search,
+    out: &mut Search<'a>,
 ) -> (Scored, Vec<Simpler>) {
     let (scales, jn) = (base.scales(), base.jn);
     let mut current = start.clone();
@@ -365,7 +393,8 @@ fn greedy(
             }
             Step::Polished(fitted) => fitted,
         };
-        let mut scored: Vec<Scored> = fitted.par_iter().map(|f| ctx.cross_validate(f)).collect();
+        // Only the sets the step's pick can read ([`spare`]).
+        let (mut scored, spared) = cross_validated(ctx, base, &current, fitted, screening);
         scored.sort_by(|a, b| {
             a.heldout
                 .combined(&scales)
@@ -373,6 +402,13 @@ fn greedy(
         });
         out.combinations
             .extend(scored.iter().map(|sc| base.rank(sc)));
+        let bar = spare::best_read(scored.iter(), base);
+        let at = out.combinations.len();
+        out.spared
+            .extend(spared.into_iter().map(|(fitted, x, floor)| {
+                let row = spared_row(&fitted, (x, floor), &current.kinds, bar, base);
+                Spared { at, fitted, row }
+            }));
         // The best set whose axles are a tyre, or a simpler one that does
         // as well where it leaves a parameter idle.
         let ranked: Vec<Candidate> = scored.iter().map(|sc| base.candidate(sc)).collect();

@@ -14,18 +14,22 @@ use crate::diagnose::verdict::score::Scored;
 const WORSE_IN_SAMPLE: f64 = 1e-3;
 
 /// Warns of each set in `combinations` that fits the runs worse in sample
-/// than a set it contains (a single of `singles`, or another of the sets):
+/// than a set it contains (a single of `singles`, a set `spared` with its
+/// in-sample error, or another of the sets):
 /// it contains that set's optimum with its other effects off, so its fit
 /// stopped short of it, or held a parameter the smaller set fits, and its
 /// scores understate the set.
 pub(super) fn worse_than_subsets(
     singles: &[&Scored],
+    spared: &[(Vec<EffectKind>, f64)],
     scales: &[f64; 3],
     combinations: &mut [Ranked],
 ) {
     let subsets: Vec<(Vec<EffectKind>, f64)> = singles
         .iter()
         .map(|s| (s.kinds.clone(), s.insample.combined(scales)))
+        // A set a greedy step spared is still a set fitted.
+        .chain(spared.iter().cloned())
         .chain(
             combinations
                 .iter()

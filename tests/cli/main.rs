@@ -982,3 +982,4 @@ mod trips_s111_rigtir45;
 mod trips_s111_studysim44;
 mod trips_s111_units45;
 mod trips_s111_words44;
+mod trips_s112_metrics47;

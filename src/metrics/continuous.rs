@@ -250,7 +250,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_window_moving: false,
         ay_window_moving: false,
         beta_window_moving: false,
-        total_variance_window_cut: (onset + s.variance_window > t_last).then(|| to - onset),
+        total_variance_window_cut: (onset + s.variance_window > t_last).then_some(to - onset),
     })
 }
 

@@ -397,7 +397,7 @@ fn metrics_of(
         beta_window_moving: settling
             .beta
             .is_some_and(|b| moving(b) || matches!(b, Settling::Drifting { .. })),
-        total_variance_window_cut: (window.1 > t_last).then(|| t_last - window.0),
+        total_variance_window_cut: (window.1 > t_last).then_some(t_last - window.0),
     }
 }
 

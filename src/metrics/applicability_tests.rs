@@ -31,6 +31,8 @@ pub(crate) fn moderate() -> StepMetrics {
         yaw_rate_peak_found_share: None,
         yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
+        yaw_rate_overshoot_noise_bias: None,
+        yaw_rate_peak_time_noise_bias: None,
         yaw_rate_response_time_spread: None,
         ay_response_time_spread: None,
         yaw_rate_gain_spread: None,
@@ -38,6 +40,8 @@ pub(crate) fn moderate() -> StepMetrics {
         steer_logged_late: None,
         yaw_rate_window_moving: false,
         ay_window_moving: false,
+        beta_window_moving: false,
+        total_variance_window_cut: None,
     }
 }
 

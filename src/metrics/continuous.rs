@@ -240,6 +240,8 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_peak_found_share: None,
         yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
+        yaw_rate_overshoot_noise_bias: None,
+        yaw_rate_peak_time_noise_bias: None,
         yaw_rate_response_time_spread: None,
         ay_response_time_spread: None,
         yaw_rate_gain_spread: None,
@@ -247,6 +249,8 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         steer_logged_late: None,
         yaw_rate_window_moving: false,
         ay_window_moving: false,
+        beta_window_moving: false,
+        total_variance_window_cut: (onset + s.variance_window > t_last).then_some(to - onset),
     })
 }
 

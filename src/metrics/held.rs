@@ -9,8 +9,8 @@
 //! Units: s, rad, rad/s, m/s² as in [`super::StepMetrics`].
 
 use super::filter::{below_filter_limit, zero_phase_low_pass};
-use super::noise::{held_noise_scale, noise_deviation, noise_gain, HeldEvery};
-use super::settling::{sideslip_scale, verdict, ChannelSettling, Settling};
+use super::noise::{correlation_sum, held_noise_scale, noise_deviation, noise_gain, HeldEvery};
+use super::settling::{sideslip_scale, verdict, ChannelSettling, NoiseNull, Settling};
 use super::variance::total_variance;
 use super::{
     crossing_spread, divergence, filter_ringing, first_crossing, initial, normalise, peak, pulse,
@@ -42,7 +42,7 @@ pub(crate) fn step_metrics_held(
     every: HeldEvery,
 ) -> Result<StepMetrics, MetricsError> {
     check_record(t, steer, yaw_rate, ay, beta, s)?;
-    let low_pass = LowPass::of(t, s);
+    let low_pass = LowPass::of(t, s, every);
     let c = Channels::read(t, (steer, yaw_rate, ay), s, every, &low_pass)?;
     let times = Crossings::of(t, &c, yaw_rate, every.yaw_rate)?;
     let peak = Peak::of(t, steer, &c, &times, s, &low_pass);
@@ -122,15 +122,17 @@ fn check_record(
 struct LowPass {
     dt: f64,
     hz: Option<f64>,
+    /// How the channels were held between updates.
+    every: HeldEvery,
 }
 
 impl LowPass {
-    fn of(t: &[f64], s: &MetricSettings) -> Self {
+    fn of(t: &[f64], s: &MetricSettings, every: HeldEvery) -> Self {
         let dt = crate::measured::clean::median_interval(t);
         let hz = s
             .filter_hz
             .filter(|f| *f > 0.0 && below_filter_limit(*f, dt));
-        LowPass { dt, hz }
+        LowPass { dt, hz, every }
     }
 
     /// `x` filtered (as it is without a filter).
@@ -149,6 +151,23 @@ impl LowPass {
     /// The noise scale of a channel held `every` samples.
     fn scale(&self, every: usize) -> f64 {
         held_noise_scale(every, self.dt, self.hz)
+    }
+
+    /// The null distribution of a channel held `every` samples whose
+    /// noise was read on `read_on` samples: its noise, white at the
+    /// updates, correlated by the hold over `every` samples and by the
+    /// low-pass run at the updates' interval ([`correlation_sum`]).
+    fn null(&self, every: usize, read_on: usize) -> NoiseNull {
+        let k = every.max(1);
+        let at = k as f64 * self.dt;
+        let filtered = self
+            .hz
+            .filter(|f| below_filter_limit(*f, at))
+            .map_or(1.0, |f| correlation_sum(at, f));
+        NoiseNull {
+            per_dof: k as f64 * filtered,
+            read_on: read_on / k,
+        }
     }
 }
 
@@ -323,19 +342,13 @@ fn metrics_of(
         .as_ref()
         .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
     // The sideslip's spread and noise on the scale of [`sideslip_scale`].
-    let settling = ChannelSettling {
-        yaw_rate: verdict(r, r_noise, 1.0),
-        ay: c.a.as_ref().map(|a| verdict(a, gain * a.noise, 1.0)),
-        beta: beta_n.flatten().map(|nb| {
-            let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, d.steady);
-            verdict(&nb, gain * nb.noise, to_scale)
-        }),
-    };
+    let settling = settling_of(t.len(), c, beta_n.as_ref(), low_pass);
     let tb = match (peak_time, beta_steady) {
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,
     };
     let window = (times.onset, times.onset + s.variance_window);
+    let t_last = t[t.len() - 1];
     let e_r = total_variance(t, &d.values, &r.values, window.0, window.1);
     let e_ay =
         c.a.as_ref()
@@ -368,6 +381,8 @@ fn metrics_of(
         yaw_rate_peak_found_share: peak.spread.map(|s| s.found),
         yaw_rate_peak_stray_share: peak.spread.map(|s| s.stray),
         yaw_rate_overshoot_spread: peak.spread.map(|s| 100.0 * s.overshoot_sd),
+        yaw_rate_overshoot_noise_bias: peak.spread.and_then(|s| s.height_bias).map(|b| 100.0 * b),
+        yaw_rate_peak_time_noise_bias: peak.spread.and_then(|s| s.time_bias),
         yaw_rate_response_time_spread: spreads[0],
         ay_response_time_spread: spreads[1],
         yaw_rate_gain_spread: crossing_spread::gain_spread(r, d),
@@ -376,6 +391,40 @@ fn metrics_of(
         steer_logged_late: None,
         yaw_rate_window_moving: moving(settling.yaw_rate),
         ay_window_moving: settling.ay.is_some_and(moving),
+        // A sideslip's window moves where it has not settled at all (a
+        // grip limit's slide drifts without slowing): its steady value is
+        // that window's mean either way.
+        beta_window_moving: settling
+            .beta
+            .is_some_and(|b| moving(b) || matches!(b, Settling::Drifting { .. })),
+        total_variance_window_cut: (window.1 > t_last).then_some(t_last - window.0),
+    }
+}
+
+/// The verdict on each channel of `c` (and the sideslip, `beta_n`) of a
+/// record of `n` samples, judged against its noise after `low_pass`.
+fn settling_of(
+    n: usize,
+    c: &Channels,
+    beta_n: Option<&Option<Normalised>>,
+    low_pass: &LowPass,
+) -> ChannelSettling {
+    let (every, gain) = (low_pass.every, low_pass.gain());
+    ChannelSettling {
+        yaw_rate: verdict(
+            &c.r,
+            gain * c.r.noise,
+            1.0,
+            low_pass.null(every.yaw_rate, n),
+        ),
+        ay: c.a.as_ref().map(|a| {
+            let null = low_pass.null(every.ay, n);
+            verdict(a, gain * a.noise, 1.0, null)
+        }),
+        beta: beta_n.and_then(|nb| nb.as_ref()).map(|nb| {
+            let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, c.d.steady);
+            verdict(nb, gain * nb.noise, to_scale, low_pass.null(every.beta, n))
+        }),
     }
 }
 

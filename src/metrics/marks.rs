@@ -4,7 +4,11 @@
 //! steady window the response still moves in, timed from a steer logged
 //! late against the responses, or a response time at or below 0 (the 90 %
 //! crossing before the steer reaches half its step: noise, or channels
-//! out of step, never a lag). One function decides them: the terminal's
+//! out of step, never a lag), or over a total-variance window the record
+//! ends inside. Every value read from a steady window's mean (the response
+//! times, peak and overshoot, the gain, steady ay and sideslip, TB, and
+//! the total variances, whose normalised responses divide by it) carries
+//! its window's mark. One function decides them: the terminal's
 //! table prints them after the values (`jobs/metrics/table.rs`) and
 //! `metrics --json` carries them (`marks`), so that a reader of either
 //! sees the same metrics qualified.
@@ -26,6 +30,9 @@ pub enum Mark {
     /// A response time at or below 0: the 90 % crossing comes before the
     /// steer reaches half its step.
     BeforeTheSteer,
+    /// A total variance integrated over less than its window: the record
+    /// ends first.
+    WindowCut,
 }
 
 impl Mark {
@@ -36,6 +43,7 @@ impl Mark {
             Mark::MovingWindow => "  (moving window)",
             Mark::SteerMisaligned => "  (steer misaligned)",
             Mark::BeforeTheSteer => "  (before the steer)",
+            Mark::WindowCut => "  (window cut short)",
         }
     }
 }
@@ -56,6 +64,8 @@ pub enum MarkedMetric {
     YawRateGain,
     /// `ay_steady`.
     AySteady,
+    /// `beta_steady`.
+    BetaSteady,
     /// `tb`.
     Tb,
     /// `yaw_rate_total_variance`.
@@ -94,69 +104,8 @@ impl StepMetrics {
 
     /// The marks of these metrics (metrics without one are left out).
     pub fn marks(&self) -> Marks {
-        use Mark::{BeforeTheSteer, MovingWindow, NoSteadyState, SteerMisaligned};
-        use MarkedMetric as M;
-        let (yaw, ay) = self.drifting_channels();
-        let late = self.steer_logged_late.is_some();
-        let moving = self.yaw_rate_window_moving && !yaw;
-        let ay_time = self.ay_response_time;
-        let ay_moving = self.ay_window_moving && !ay && ay_time.is_some();
-        let before = |t: Option<f64>| t.is_some_and(|t| t <= 0.0);
-        let peak = self.yaw_rate_peak_time.is_some();
-        let overshoot = self.yaw_rate_overshoot.is_some();
-        let rows: [(MarkedMetric, Vec<(bool, Mark)>); 10] = [
-            (
-                M::YawRateResponseTime,
-                vec![
-                    (yaw, NoSteadyState),
-                    (moving, MovingWindow),
-                    (late, SteerMisaligned),
-                    (before(Some(self.yaw_rate_response_time)), BeforeTheSteer),
-                ],
-            ),
-            (M::YawRatePeakTime, vec![(moving && peak, MovingWindow)]),
-            (
-                M::YawRateOvershoot,
-                vec![
-                    (yaw && overshoot, NoSteadyState),
-                    (moving && overshoot, MovingWindow),
-                ],
-            ),
-            (
-                M::AyResponseTime,
-                vec![
-                    (ay && ay_time.is_some(), NoSteadyState),
-                    (ay_moving, MovingWindow),
-                    (late, SteerMisaligned),
-                    (before(ay_time), BeforeTheSteer),
-                ],
-            ),
-            (M::YawRateGain, vec![(yaw, NoSteadyState)]),
-            (
-                M::AySteady,
-                vec![(ay && self.ay_steady.is_some(), NoSteadyState)],
-            ),
-            (M::Tb, vec![(yaw && self.tb.is_some(), NoSteadyState)]),
-            (
-                M::YawRateTotalVariance,
-                vec![(yaw, NoSteadyState), (late, SteerMisaligned)],
-            ),
-            (
-                M::AyTotalVariance,
-                vec![
-                    (ay && self.ay_total_variance.is_some(), NoSteadyState),
-                    (late, SteerMisaligned),
-                ],
-            ),
-            (
-                M::Er,
-                vec![
-                    ((yaw || ay) && self.er.is_some(), NoSteadyState),
-                    (late, SteerMisaligned),
-                ],
-            ),
-        ];
-        rows.into_iter()
+        rows_of(self)
+            .into_iter()
             .map(|(metric, flags)| {
                 let on: Vec<Mark> = flags.into_iter().filter(|f| f.0).map(|f| f.1).collect();
                 (metric, on)
@@ -164,6 +113,141 @@ impl StepMetrics {
             .filter(|(_, on)| !on.is_empty())
             .collect()
     }
+}
+
+/// A markable metric with its candidate marks, each with whether it holds.
+type Row = (MarkedMetric, Vec<(bool, Mark)>);
+
+/// What the marks of `m` are decided on.
+struct Flags {
+    /// The yaw rate and the lateral acceleration drift without slowing.
+    yaw: bool,
+    ay: bool,
+    /// The steer was logged late.
+    late: bool,
+    /// The yaw rate's, ay's and sideslip's windows still move.
+    moving: bool,
+    ay_window: bool,
+    beta: bool,
+    /// The total-variance window is cut short by the record's end.
+    cut: bool,
+}
+
+impl Flags {
+    fn of(m: &StepMetrics) -> Self {
+        let (yaw, ay) = m.drifting_channels();
+        Flags {
+            yaw,
+            ay,
+            late: m.steer_logged_late.is_some(),
+            moving: m.yaw_rate_window_moving && !yaw,
+            ay_window: m.ay_window_moving && !ay,
+            beta: m.beta_window_moving && m.beta_steady.is_some(),
+            cut: m.total_variance_window_cut.is_some(),
+        }
+    }
+}
+
+/// Each markable metric of `m` with its candidate marks and whether each
+/// holds: the times and the overshoot, then the steady values and the
+/// total variances ([`value_rows`]).
+fn rows_of(m: &StepMetrics) -> Vec<Row> {
+    use Mark::{BeforeTheSteer, MovingWindow, NoSteadyState, SteerMisaligned};
+    use MarkedMetric as M;
+    let f = Flags::of(m);
+    let ay_time = m.ay_response_time;
+    let before = |t: Option<f64>| t.is_some_and(|t| t <= 0.0);
+    let peak = m.yaw_rate_peak_time.is_some();
+    let overshoot = m.yaw_rate_overshoot.is_some();
+    let mut rows = vec![
+        (
+            M::YawRateResponseTime,
+            vec![
+                (f.yaw, NoSteadyState),
+                (f.moving, MovingWindow),
+                (f.late, SteerMisaligned),
+                (before(Some(m.yaw_rate_response_time)), BeforeTheSteer),
+            ],
+        ),
+        (M::YawRatePeakTime, vec![(f.moving && peak, MovingWindow)]),
+        (
+            M::YawRateOvershoot,
+            vec![
+                (f.yaw && overshoot, NoSteadyState),
+                (f.moving && overshoot, MovingWindow),
+            ],
+        ),
+        (
+            M::AyResponseTime,
+            vec![
+                (f.ay && ay_time.is_some(), NoSteadyState),
+                (f.ay_window && ay_time.is_some(), MovingWindow),
+                (f.late, SteerMisaligned),
+                (before(ay_time), BeforeTheSteer),
+            ],
+        ),
+    ];
+    rows.extend(value_rows(m, &f));
+    rows
+}
+
+/// The steady values' and the total variances' rows of [`rows_of`]. A
+/// total variance divides each response by its steady window's step, so
+/// a window the response still moves in marks it as it marks the gain;
+/// one the record ends inside marks it cut short.
+fn value_rows(m: &StepMetrics, f: &Flags) -> [Row; 7] {
+    use Mark::{MovingWindow, NoSteadyState, SteerMisaligned, WindowCut};
+    use MarkedMetric as M;
+    let (ay_steady, tb) = (m.ay_steady.is_some(), m.tb.is_some());
+    let (e_ay, er) = (m.ay_total_variance.is_some(), m.er.is_some());
+    [
+        (
+            M::YawRateGain,
+            vec![(f.yaw, NoSteadyState), (f.moving, MovingWindow)],
+        ),
+        (
+            M::AySteady,
+            vec![
+                (f.ay && ay_steady, NoSteadyState),
+                (f.ay_window && ay_steady, MovingWindow),
+            ],
+        ),
+        (M::BetaSteady, vec![(f.beta, MovingWindow)]),
+        (
+            M::Tb,
+            vec![
+                (f.yaw && tb, NoSteadyState),
+                ((f.moving || f.beta) && tb, MovingWindow),
+            ],
+        ),
+        (
+            M::YawRateTotalVariance,
+            vec![
+                (f.yaw, NoSteadyState),
+                (f.moving, MovingWindow),
+                (f.late, SteerMisaligned),
+                (f.cut, WindowCut),
+            ],
+        ),
+        (
+            M::AyTotalVariance,
+            vec![
+                (f.ay && e_ay, NoSteadyState),
+                (f.ay_window && e_ay, MovingWindow),
+                (f.late, SteerMisaligned),
+                (f.cut && e_ay, WindowCut),
+            ],
+        ),
+        (
+            M::Er,
+            vec![
+                ((f.yaw || f.ay) && er, NoSteadyState),
+                ((f.moving || f.ay_window) && er, MovingWindow),
+                (f.late, SteerMisaligned),
+                (f.cut && er, WindowCut),
+            ],
+        ),
+    ]
 }
 
 #[cfg(test)]
@@ -203,5 +287,39 @@ mod tests {
             );
         }
         assert_eq!(marks.get(&MarkedMetric::YawRateGain), None);
+    }
+
+    /// A yaw rate and ay still moving in their windows mark every value
+    /// read from those windows' means (the gain, steady ay, TB, the total
+    /// variances), and a record ending inside the variance window marks
+    /// the variances cut short; a settled run marks none of them.
+    #[test]
+    fn every_value_read_from_a_moving_window_is_marked() {
+        let m = crate::metrics::applicability::tests::moderate();
+        assert_eq!(m.marks(), Marks::new());
+        let mut moving = m;
+        moving.yaw_rate_window_moving = true;
+        moving.ay_window_moving = true;
+        moving.total_variance_window_cut = Some(2.1);
+        let marks = moving.marks();
+        for metric in [
+            MarkedMetric::YawRateGain,
+            MarkedMetric::AySteady,
+            MarkedMetric::YawRateTotalVariance,
+            MarkedMetric::AyTotalVariance,
+            MarkedMetric::Er,
+        ] {
+            assert!(
+                marks[&metric].contains(&Mark::MovingWindow),
+                "{metric:?}: {marks:?}"
+            );
+        }
+        for metric in [
+            MarkedMetric::YawRateTotalVariance,
+            MarkedMetric::AyTotalVariance,
+            MarkedMetric::Er,
+        ] {
+            assert!(marks[&metric].contains(&Mark::WindowCut), "{metric:?}");
+        }
     }
 }

@@ -48,7 +48,10 @@
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
 use settling::{sideslip_scale, SETTLED_SPREAD};
-pub use settling::{AyLimit, AyLimitSource, Ceiling, ChannelSettling, Settling, JUDGED_NOISES};
+pub use settling::{
+    AyLimit, AyLimitSource, Ceiling, ChannelSettling, Settling,
+    FALSE_ALARM as SETTLING_FALSE_ALARM, JUDGED_NOISES,
+};
 
 pub mod applicability;
 pub(crate) mod continuous;
@@ -309,6 +312,18 @@ pub struct StepMetrics {
     /// deviation over the same copies, percentage points of the step.
     #[serde(default)]
     pub yaw_rate_overshoot_spread: Option<f64>,
+    /// How far the run's noise lifts the overshoot on average, percentage
+    /// points of the step: the overshoot less its extrapolation to no
+    /// noise over copies with a quarter, a half and all of the run's noise
+    /// variance added again (SIMEX, `peak.rs`); the highest of a noisy curve lies above
+    /// the curve's. `None` without a peak or without noise.
+    #[serde(default)]
+    pub yaw_rate_overshoot_noise_bias: Option<f64>,
+    /// How far the run's noise moves the peak time on average, s, read as
+    /// `yaw_rate_overshoot_noise_bias` is (a peak that falls slower than
+    /// it rises is found late).
+    #[serde(default)]
+    pub yaw_rate_peak_time_noise_bias: Option<f64>,
     /// How far the run's own noise moves the yaw-rate response time: its
     /// standard deviation over the peak's noisy copies (`crossing_spread.rs`),
     /// s; `None` without noise (a simulation) or where most copies do not
@@ -347,6 +362,17 @@ pub struct StepMetrics {
     /// read against the mean of a moving window.
     #[serde(default)]
     pub ay_window_moving: bool,
+    /// The sideslip still moves in its steady window, as
+    /// `yaw_rate_window_moving` says of the yaw rate: its steady value is
+    /// the mean of a moving window.
+    #[serde(default)]
+    pub beta_window_moving: bool,
+    /// The length of the total-variance window where the record ends
+    /// before `variance_window` from the steer onset does, s: E_r, E_ay and
+    /// Er integrate over this much, not the window set. `None` where the
+    /// whole window is in the record.
+    #[serde(default)]
+    pub total_variance_window_cut: Option<f64>,
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).
@@ -434,6 +460,8 @@ struct Normalised {
     noise: f64,
     /// Samples in the shorter of the initial and steady windows.
     samples: usize,
+    /// Samples in the steady window.
+    steady_samples: usize,
     /// Where the steady window's trend heads ([`settling::trend`]).
     trend: Option<settling::Trend>,
     /// How it moves inside the steady window ([`steady_inside::Inside`]).
@@ -457,7 +485,8 @@ fn normalise(
     let (xs, sd) = window_mean(t, x, t_last - s.steady_window, t_last);
     let step = xs - x0;
     let in_window = |from: f64, to: f64| t.iter().filter(|&&v| v >= from && v <= to).count();
-    let samples = in_window(t_first, pre_end).min(in_window(t_last - s.steady_window, t_last));
+    let steady_samples = in_window(t_last - s.steady_window, t_last);
+    let samples = in_window(t_first, pre_end).min(steady_samples);
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
@@ -470,6 +499,7 @@ fn normalise(
         spread: sd / step.abs(),
         noise,
         samples,
+        steady_samples,
         trend,
         inside,
     })

@@ -24,7 +24,11 @@ use super::Normalised;
 use serde::{Deserialize, Serialize};
 
 mod limit;
+mod null;
 pub use limit::{AyLimit, AyLimitSource, Ceiling};
+use null::noise_alone;
+pub(super) use null::NoiseNull;
+pub use null::FALSE_ALARM;
 
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
@@ -388,7 +392,10 @@ fn beyond_noise(spread: f64, noise: f64) -> f64 {
 /// finer than the step is known to calls a noisy short log unsettled for
 /// its noise; `√(2/N)` is also the relative deviation of a sample
 /// variance, which the spread beyond the noise is judged by.
-pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
+/// The band is also widened to the spread beyond the noise that the
+/// noise alone exceeds at [`FALSE_ALARM`] ([`noise_alone`], `null` the
+/// filtered noise's correlation and the record's length).
+pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64, null: NoiseNull) -> Settling {
     let raw_noise = n.noise * n.steady.abs();
     if n.steady.abs() < JUDGED_NOISES * raw_noise {
         return Settling::NotJudged {
@@ -396,7 +403,8 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
             noise: raw_noise,
         };
     }
-    let band = 2.0 * n.noise * to_scale * (2.0 / n.samples.max(1) as f64).sqrt();
+    let band = (2.0 * n.noise * to_scale * (2.0 / n.samples.max(1) as f64).sqrt())
+        .max(noise_alone(noise * to_scale, n.steady_samples, null));
     let mut beyond = beyond_noise(n.spread * to_scale, noise * to_scale);
     // A response whose spread passes but that turns inside its window by
     // more than the spread allows (an overshoot not decayed) has not

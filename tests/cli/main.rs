@@ -984,5 +984,6 @@ mod trips_s111_units45;
 mod trips_s111_words44;
 mod trips_s112_folds47;
 mod trips_s112_lead;
+mod trips_s112_metrics47;
 mod trips_s112_perfdiag46;
 mod trips_s112_perfstep46;

@@ -120,6 +120,14 @@ class StepMetrics:
     yaw_rate_overshoot_spread: Optional[float]
     """How far the run's own noise moves the overshoot: its standard
     deviation over the same copies, percentage points (an upper estimate)."""
+    yaw_rate_overshoot_noise_bias: Optional[float]
+    """How far the run's noise lifts the overshoot on average, percentage
+    points: the overshoot less its extrapolation to no noise over copies
+    with a quarter, a half and all of the run's noise variance added (SIMEX; None
+    without a peak or without noise)."""
+    yaw_rate_peak_time_noise_bias: Optional[float]
+    """How far the run's noise moves the peak time on average, s, read as
+    ``yaw_rate_overshoot_noise_bias`` is."""
     yaw_rate_response_time_spread: Optional[float]
     """How far the run's own noise moves the yaw-rate response time: its
     standard deviation over the peak's noisy copies, the initial and steady
@@ -146,6 +154,14 @@ class StepMetrics:
     ay_window_moving: bool
     """Whether ``ay`` still moves in its steady window: its response time is
     read against a moving window's mean."""
+    beta_window_moving: bool
+    """Whether the sideslip has not settled in its steady window: its
+    steady value is a moving window's mean."""
+    total_variance_window_cut: Optional[float]
+    """The length of the total-variance window where the record ends before
+    ``variance_window`` from the steer onset does, s: E_r, E_ay and Er
+    integrate over this much (None where the whole window is in the
+    record)."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":

@@ -67,7 +67,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let fixed = |v: f64| crate::format::fixed(v, 4);
     let (yaw, ay) = m.drifting_channels();
     let moving = m.yaw_rate_window_moving && !yaw;
-    let ay_moving = m.ay_window_moving && !ay && m.ay_response_time.is_some();
+    let ay_moving = m.ay_window_moving && !ay;
+    let beta_moving = m.beta_window_moving && m.beta_steady.is_some();
     let marks = m.marks();
     let of = |metric: MarkedMetric| marks.get(&metric).map_or(&[][..], |v| v.as_slice());
     use MarkedMetric as M;
@@ -113,13 +114,14 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "steady sideslip",
             opt(m.beta_steady, 180.0 / std::f64::consts::PI),
             "deg",
-            &[],
+            of(M::BetaSteady),
         ),
         row("TB", opt(m.tb, 1.0), "s·deg", of(M::Tb)),
     ];
     out.extend(variance_rows(m, &marks));
     out.extend(unsteady_note(yaw, ay));
-    out.extend((moving || ay_moving).then(|| moving_note(moving, ay_moving)));
+    out.extend((moving || ay_moving || beta_moving).then(|| moving_note(moving, ay_moving)));
+    out.extend(m.total_variance_window_cut.map(cut_note));
     out.extend(m.steer_logged_late.map(misaligned_note));
     out.extend(before_note(&marks));
     out.extend(notes_after(m, yaw || moving));
@@ -159,12 +161,14 @@ fn before_note(marks: &Marks) -> Option<String> {
 }
 
 /// The line after the table saying what "(moving window)" marks: the
-/// yaw rate's metrics (`yaw`) and the ay response time (`ay`).
+/// yaw rate's metrics (`yaw`), the ay metrics (`ay`), or where neither
+/// moves, the steady sideslip's and TB.
 fn moving_note(yaw: bool, ay: bool) -> String {
     let which = match (yaw, ay) {
         (true, true) => "the yaw rate and the lateral acceleration still move",
         (true, false) => "the yaw rate still moves",
-        _ => "the lateral acceleration still moves",
+        (false, true) => "the lateral acceleration still moves",
+        (false, false) => "the sideslip still moves",
     };
     let overshoot = match yaw {
         true => "; no overshoot is measured where no maximum stands out above that mean (the steady value it would be bounded by is not in the record, and the overshoot may be larger), and one found is read against that mean",
@@ -172,6 +176,16 @@ fn moving_note(yaw: bool, ay: bool) -> String {
     };
     format!(
         "  moving window: {which} in the steady window (see the warning), so the metrics marked \"(moving window)\" are read against the mean of a window the response passes through, not a steady state it holds{overshoot}: a record held until the response settles reads them"
+    )
+}
+
+/// The line after the table saying what "(window cut short)" marks: total
+/// variances integrated over the `span` s the record holds after the
+/// steer's onset, less than the window set.
+fn cut_note(span: f64) -> String {
+    let span = crate::format::readable(span, 3);
+    format!(
+        "  window cut short: the record ends {span} s after the steer's onset, inside the total-variance window (variance_window), so the total variances marked \"(window cut short)\" integrate over those {span} s only and compare with no run measured over the whole window: a longer record reads them"
     )
 }
 

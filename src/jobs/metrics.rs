@@ -446,35 +446,22 @@ fn peak_moved_by_noise(m: &StepMetrics) -> Option<String> {
     ) + &noise_bias_said(m))
 }
 
-/// What the run's noise does to the peak on average (`metrics/peak.rs`):
-/// the highest of a noisy curve lies above the curve's, so the overshoot
-/// reads high, and a peak that falls slower than it rises is found late.
-/// Said with the estimates without it and their spreads; empty where the
-/// copies give no bias.
+/// What the run's noise does to the overshoot on average
+/// (`metrics/peak.rs`): the highest of a noisy curve lies above the
+/// curve's, so the overshoot reads high. Said with the estimate without
+/// it and its spread; empty where the copies give no bias. The peak
+/// time's shift is not said: its extrapolation scattered more than the
+/// shift (round 48: 20 seeds, RMS error 0.066 s corrected against 0.050 s
+/// read).
 fn noise_bias_said(m: &StepMetrics) -> String {
-    let (Some(tp), Some(bt)) = (m.yaw_rate_peak_time, m.yaw_rate_peak_time_noise_bias) else {
+    let (Some(o), Some(b)) = (m.yaw_rate_overshoot, m.yaw_rate_overshoot_noise_bias) else {
         return String::new();
     };
-    let sd_t = m.yaw_rate_peak_time_spread.unwrap_or(0.0);
-    let (lift, without) = match (m.yaw_rate_overshoot, m.yaw_rate_overshoot_noise_bias) {
-        (Some(o), Some(b)) => (
-            format!(
-                "the overshoot by {} points and ",
-                crate::format::signed(b, 2)
-            ),
-            format!(
-                "the overshoot is about {} % (±{} points) and ",
-                crate::format::fixed(o - b, 2),
-                crate::format::fixed(m.yaw_rate_overshoot_spread.unwrap_or(0.0), 1)
-            ),
-        ),
-        _ => (String::new(), String::new()),
-    };
     format!(
-        "; the noise also biases them: a maximum of a noisy curve lies above the curve's, and copies with a quarter, a half and all of the run's noise variance added again, extrapolated to none (SIMEX), move {lift}the peak time by {} s on average, so without that bias {without}the peak time about {} s (±{} s)",
-        crate::format::signed(bt, 3),
-        crate::format::readable(tp - bt, 3),
-        crate::format::readable(sd_t, 2),
+        "; the noise also biases the overshoot: a maximum of a noisy curve lies above the curve's, and copies with a quarter, a half and all of the run's noise variance added again, extrapolated to none (SIMEX), lift it by {} points on average, so without that bias the overshoot is about {} % (±{} points); the peak time's shift is not estimated (its extrapolation scatters more than the shift)",
+        crate::format::signed(b, 2),
+        crate::format::fixed(o - b, 2),
+        crate::format::fixed(m.yaw_rate_overshoot_spread.unwrap_or(0.0), 1),
     )
 }
 

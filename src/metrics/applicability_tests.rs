@@ -32,7 +32,6 @@ pub(crate) fn moderate() -> StepMetrics {
         yaw_rate_peak_stray_share: None,
         yaw_rate_overshoot_spread: None,
         yaw_rate_overshoot_noise_bias: None,
-        yaw_rate_peak_time_noise_bias: None,
         yaw_rate_response_time_spread: None,
         ay_response_time_spread: None,
         yaw_rate_gain_spread: None,

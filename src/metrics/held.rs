@@ -382,7 +382,6 @@ fn metrics_of(
         yaw_rate_peak_stray_share: peak.spread.map(|s| s.stray),
         yaw_rate_overshoot_spread: peak.spread.map(|s| 100.0 * s.overshoot_sd),
         yaw_rate_overshoot_noise_bias: peak.spread.and_then(|s| s.height_bias).map(|b| 100.0 * b),
-        yaw_rate_peak_time_noise_bias: peak.spread.and_then(|s| s.time_bias),
         yaw_rate_response_time_spread: spreads[0],
         ay_response_time_spread: spreads[1],
         yaw_rate_gain_spread: crossing_spread::gain_spread(r, d),

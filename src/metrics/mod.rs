@@ -319,11 +319,6 @@ pub struct StepMetrics {
     /// the curve's. `None` without a peak or without noise.
     #[serde(default)]
     pub yaw_rate_overshoot_noise_bias: Option<f64>,
-    /// How far the run's noise moves the peak time on average, s, read as
-    /// `yaw_rate_overshoot_noise_bias` is (a peak that falls slower than
-    /// it rises is found late).
-    #[serde(default)]
-    pub yaw_rate_peak_time_noise_bias: Option<f64>,
     /// How far the run's own noise moves the yaw-rate response time: its
     /// standard deviation over the peak's noisy copies (`crossing_spread.rs`),
     /// s; `None` without noise (a simulation) or where most copies do not

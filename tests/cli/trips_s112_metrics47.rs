@@ -83,7 +83,7 @@ fn the_noise_bias_of_the_overshoot_is_estimated_and_said() {
     assert!((truth - 16.90).abs() < 0.01, "{truth}");
     let bias = j["yaw_rate_overshoot_noise_bias"].as_f64().unwrap_or(0.0);
     assert!(bias.abs() < 0.005, "{bias}: {j}");
-    assert!(!w.contains("biases them"), "{w}");
+    assert!(!w.contains("biases the overshoot"), "{w}");
     let (mut read, mut corrected) = (Vec::new(), Vec::new());
     let mut said = 0;
     for seed in 1..=SEEDS {
@@ -92,7 +92,7 @@ fn the_noise_bias_of_the_overshoot_is_estimated_and_said() {
         let b = j["yaw_rate_overshoot_noise_bias"].as_f64().unwrap();
         read.push(o);
         corrected.push(o - b);
-        if w.contains("biases them") {
+        if w.contains("biases the overshoot") {
             let without = format!("the overshoot is about {:.2} %", o - b);
             assert!(w.contains(&without), "{without}: {w}");
             said += 1;

@@ -125,9 +125,6 @@ class StepMetrics:
     points: the overshoot less its extrapolation to no noise over copies
     with a quarter, a half and all of the run's noise variance added (SIMEX; None
     without a peak or without noise)."""
-    yaw_rate_peak_time_noise_bias: Optional[float]
-    """How far the run's noise moves the peak time on average, s, read as
-    ``yaw_rate_overshoot_noise_bias`` is."""
     yaw_rate_response_time_spread: Optional[float]
     """How far the run's own noise moves the yaw-rate response time: its
     standard deviation over the peak's noisy copies, the initial and steady

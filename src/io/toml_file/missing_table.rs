@@ -71,7 +71,25 @@ impl TomlSource {
             return None;
         }
         let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
+        // The file without the key and the lines after it up to its first
+        // header: a table it then lacks is required (serde: "missing field
+        // `vehicle`"); an optional one (`[integrator]`, `[simulation]`
+        // written already) is no table lost, and the key is sent home.
+        let first_header = self.text[line_start..]
+            .split_inclusive('\n')
+            .scan(line_start, |at, l| {
+                let here = *at;
+                *at += l.len();
+                Some((here, l))
+            })
+            .find(|(_, l)| l.trim_start().starts_with('['))
+            .map_or(self.text.len(), |(at, _)| at);
+        let without = format!("{}{}", &self.text[..line_start], &self.text[first_header..]);
+        let lacked = reparse(&without);
         let table = super::home::listed(expected).into_iter().find(|t| {
+            if lacked.as_deref() != Some(format!("missing field `{t}`").as_str()) {
+                return false;
+            }
             let written = |l: &str| {
                 l.trim_start()
                     .strip_prefix(t)

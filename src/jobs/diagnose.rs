@@ -423,13 +423,9 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(sets.iter().map(|s| {
             format!(
-                "  {:<w$} {:>8} {:>11} {:>8} % of what {} leaves (J in sample {:.3})",
-                s.effect,
-                "—",
-                "—",
-                fixed(s.insample_reduction_percent, 1),
-                joined(&s.extends, "+"),
-                s.insample_error_after,
+                "{} (J in sample {:.3})",
+                screened_row(s, w),
+                s.insample_error_after
             )
         }));
     }
@@ -453,18 +449,28 @@ fn outranked_lines(d: &Diagnosis, w: usize) -> Vec<String> {
     )];
     out.extend(sets.iter().map(|(s, o)| {
         format!(
-            "  {:<w$} {:>8} {:>11} {:>8} % of what {} leaves, held-out J at least {:.3} against {}'s {:.3}",
-            s.effect,
-            "—",
-            "—",
-            fixed(s.insample_reduction_percent, 1),
-            joined(&s.extends, "+"),
+            "{}, held-out J at least {:.3} against {}'s {:.3}",
+            screened_row(s, w),
             o.floor,
             joined(&o.by, "+"),
             o.heldout_error,
         )
     }));
     out
+}
+
+/// A set not cross-validated as a row of the ranking's table: its name,
+/// no held-out figures, its in-sample share of what the set it extends
+/// leaves.
+fn screened_row(s: &crate::diagnose::report::Screened, w: usize) -> String {
+    format!(
+        "  {:<w$} {:>8} {:>11} {:>8} % of what {} leaves",
+        s.effect,
+        "—",
+        "—",
+        fixed(s.insample_reduction_percent, 1),
+        joined(&s.extends, "+"),
+    )
 }
 
 #[cfg(test)]

@@ -30,8 +30,7 @@
 //! dimensionless.
 //!
 //! The noise also biases the peak: the highest of a noisy curve lies above
-//! the curve's, and a peak that falls slower than it rises is found late.
-//! Copies at a quarter and a half of the run's noise variance, with those
+//! the curve's. Copies at a quarter and a half of the run's noise variance, with those
 //! at all of it, give the overshoot's bias by SIMEX (Cook & Stefanski
 //! 1994): [`noise_bias`]. The peak time's shift is not estimated: its
 //! extrapolation scattered more than the shift (round 48).
@@ -121,7 +120,10 @@ pub(super) fn peak_spread(
     }
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(SEED);
     let mut z = vec![0.0; v.len()];
-    let mut times = vec![Vec::with_capacity(DRAWS); LEVELS.len()];
+    let mut copy = vec![0.0; v.len()];
+    // The peak times of the run's own level (the spread reported), and
+    // every level's heights (the overshoot's bias).
+    let mut times = Vec::with_capacity(DRAWS);
     let mut heights = vec![Vec::with_capacity(DRAWS); LEVELS.len()];
     let mut stray = 0;
     for _ in 0..DRAWS {
@@ -130,14 +132,14 @@ pub(super) fn peak_spread(
         // The filter is linear: the copy is v plus the filtered noise.
         let filtered = filter(&z);
         for (k, lambda) in LEVELS.iter().enumerate() {
-            let copy: Vec<f64> = v
-                .iter()
-                .zip(&filtered)
-                .map(|(a, b)| a + lambda.sqrt() * b)
-                .collect();
+            for ((c, a), b) in copy.iter_mut().zip(v).zip(&filtered) {
+                *c = a + lambda.sqrt() * b;
+            }
             match peak_index(t, &copy, from, level) {
                 Some(i) if (t[i] - centre).abs() <= half.abs() => {
-                    times[k].push(t[i]);
+                    if k == 0 {
+                        times.push(t[i]);
+                    }
                     heights[k].push(copy[i]);
                 }
                 Some(_) if k == 0 => stray += 1,
@@ -147,9 +149,9 @@ pub(super) fn peak_spread(
     }
     let top = peak_index(t, v, from, level).map_or(f64::NAN, |i| v[i]);
     Some(PeakSpread {
-        sd: deviation(&times[0]),
+        sd: deviation(&times),
         overshoot_sd: deviation(&heights[0]),
-        found: times[0].len() as f64 / DRAWS as f64,
+        found: times.len() as f64 / DRAWS as f64,
         stray: stray as f64 / DRAWS as f64,
         height_bias: noise_bias(top, &heights).filter(|b| b.is_finite()),
     })

@@ -111,8 +111,9 @@ pub struct LackingRun {
     /// ([`crate::diagnose::report::worth::worth`]).
     pub worth: Worth,
     /// Where the words recommend it but weakly (within 2 of its own
-    /// uncertainty, [`weak`]): its ratio and the chance one run misleads,
-    /// as the terminal says; `None` otherwise ([`LackingRun::weak_of`]).
+    /// uncertainty, [`weak`]): its ratio and the chance one run misleads;
+    /// `None` otherwise. Set once from [`LackingRun::weak_of`]; the words
+    /// read it, so the terminal and the JSON say the same.
     pub weak: Option<Weak>,
 }
 
@@ -200,7 +201,7 @@ fn pair_words(p: &PairRun) -> String {
         r.expected, r.uncertainty
     );
     match judged(r) {
-        Worth::Separates => match r.weak_of() {
+        Worth::Separates => match r.weak {
             Some(w) => format!("{a} from {b}: {run}; {measured}; {}", w.words()),
             None => format!("{a} from {b}: {run}; {measured}"),
         },
@@ -232,7 +233,7 @@ fn judged(r: &LackingRun) -> Worth {
 fn has_run(p: &PairRun) -> bool {
     p.best
         .as_ref()
-        .is_some_and(|r| judged(r) == Worth::Separates && r.weak_of().is_none())
+        .is_some_and(|r| judged(r) == Worth::Separates && r.weak.is_none())
 }
 
 impl SeparatingRuns {
@@ -261,7 +262,7 @@ mod tests {
     use super::*;
 
     fn pair(worth: Worth) -> PairRun {
-        PairRun {
+        let mut p = PairRun {
             reference: EffectKind::RollSteer,
             other: EffectKind::CorneringStiffness,
             best: Some(LackingRun {
@@ -283,7 +284,10 @@ mod tests {
             }),
             largest: 39.4,
             replayed: 12,
-        }
+        };
+        let r = p.best.as_mut().unwrap();
+        r.weak = r.weak_of();
+        p
     }
 
     /// The advice follows the design's worth: a run worth driving is
@@ -328,6 +332,7 @@ mod tests {
         let mut p = pair(worth);
         let r = p.best.as_mut().unwrap();
         (r.expected, r.uncertainty) = (expected, uncertainty);
+        r.weak = r.weak_of();
         p
     }
 
@@ -371,11 +376,7 @@ mod tests {
     /// that its numbers put within its uncertainty carry none.
     #[test]
     fn the_json_says_weak_where_the_words_do() {
-        let run = |p: PairRun| {
-            let mut r = p.best.unwrap();
-            r.weak = r.weak_of();
-            serde_json::to_value(&r).unwrap()
-        };
+        let run = |p: PairRun| serde_json::to_value(p.best.unwrap()).unwrap();
         let putnam = run(expecting(Worth::Separates, 277.9, 268.9));
         let sigmas = putnam["weak"]["sigmas"].as_f64().unwrap();
         let wrong = putnam["weak"]["wrong"].as_f64().unwrap();

@@ -53,8 +53,8 @@ impl TomlSource {
 
     /// serde's "unknown field `key`, expected one of …" for a key before
     /// the file's first header, as the table it belongs to with its header
-    /// lost: one of the names expected that the file has no header of and
-    /// under which, written above the key's line, the key reads.
+    /// lost: the required table the file lacks with the key's lines set
+    /// aside, under which, written above the key's line, the key reads.
     pub(super) fn headless_table(
         &self,
         message: &str,
@@ -75,41 +75,29 @@ impl TomlSource {
         // header: a table it then lacks is required (serde: "missing field
         // `vehicle`"); an optional one (`[integrator]`, `[simulation]`
         // written already) is no table lost, and the key is sent home.
-        let first_header = self.text[line_start..]
-            .split_inclusive('\n')
-            .scan(line_start, |at, l| {
-                let here = *at;
-                *at += l.len();
-                Some((here, l))
-            })
-            .find(|(_, l)| l.trim_start().starts_with('['))
-            .map_or(self.text.len(), |(at, _)| at);
+        let first_header = headers.first().map_or(self.text.len(), |(_, at)| {
+            self.text
+                .split_inclusive('\n')
+                .take(at - 1)
+                .map(str::len)
+                .sum()
+        });
         let without = format!("{}{}", &self.text[..line_start], &self.text[first_header..]);
-        let lacked = reparse(&without);
-        let table = super::home::listed(expected).into_iter().find(|t| {
-            if lacked.as_deref() != Some(format!("missing field `{t}`").as_str()) {
-                return false;
-            }
-            let written = |l: &str| {
-                l.trim_start()
-                    .strip_prefix(t)
-                    .is_some_and(|r| r.trim_start().starts_with(['=', '.']))
-            };
-            if headers
-                .iter()
-                .any(|(h, _)| h == t || h.starts_with(&format!("{t}.")))
-                || self.text.lines().any(written)
-            {
-                return false;
-            }
-            let mut probe = self.text.clone();
-            probe.insert_str(line_start, &format!("[{t}]\n"));
-            reparse(&probe).is_none_or(|m| {
-                !m.starts_with(&format!("unknown field `{key}`"))
-                    && !m.starts_with("invalid type")
-                    && !m.starts_with("duplicate key")
-            })
-        })?;
+        let lacked = reparse(&without)?;
+        let table = lacked
+            .strip_prefix("missing field `")?
+            .strip_suffix('`')
+            .filter(|t| super::home::listed(expected).contains(t))?;
+        let mut probe = self.text.clone();
+        probe.insert_str(line_start, &format!("[{table}]\n"));
+        let reads = reparse(&probe).is_none_or(|m| {
+            !m.starts_with(&format!("unknown field `{key}`"))
+                && !m.starts_with("invalid type")
+                && !m.starts_with("duplicate key")
+        });
+        if !reads {
+            return None;
+        }
         let problem = MissingTable {
             table: table.to_string(),
             tables: headers,

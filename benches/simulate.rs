@@ -12,30 +12,22 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::manoeuvre::{Manoeuvre, StepSteer};
 use handling::metrics::{simulated_step_metrics, MetricSettings};
-use handling::sim::{Integrator, Method, Tolerances};
+use handling::sim::peer::PeerStepSteer;
+use handling::sim::{Integrator, Method, Pair, Tolerances};
 use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel};
 use handling::vehicle::{State, Vehicle, VehicleModel};
 
 fn step_steer(c: &mut Criterion) {
-    let model = VehicleModel::new(
-        Vehicle::compact_sedan(),
-        Tyre::Pac89(Pac89::adams_example()),
-        Tyre::Pac89(Pac89::adams_example()),
-    );
-    let man = Manoeuvre::StepSteer(StepSteer {
-        speed: 22.2222,
-        amplitude: 0.012,
-        trim: 0.0,
-        start: 1.0,
-        rise_time: 0.1,
-        end: 10.0,
-    });
+    // The peer comparison's job (`handling::sim::peer`): its model and
+    // manoeuvre for every id of the group.
+    let job = PeerStepSteer::new();
+    let (model, man) = (&job.model, &job.manoeuvre);
     let integ = Integrator {
         method: Method::Rk4,
         ..Integrator::default()
     };
     c.bench_function("step_steer_10s_1khz_pac89_load_transfer", |b| {
-        b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| integ.run(black_box(model), black_box(man), State::default()))
     });
     let tol = Tolerances::default();
     let dopri = Integrator {
@@ -45,25 +37,25 @@ fn step_steer(c: &mut Criterion) {
     // Stable ids: `<group>/<variant>`.
     let mut g = c.benchmark_group("step_steer_10s_pac89_load_transfer");
     g.bench_function("rk4_1ms", |b| {
-        b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| integ.run(black_box(model), black_box(man), State::default()))
     });
     // The default: the error-controlled solution (what the metrics are
     // measured on), rows every 0.1 s.
     let coarse = Integrator { step: 0.1, ..dopri };
     g.bench_function("dopri5", |b| {
-        b.iter(|| coarse.simulate(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| coarse.simulate(black_box(model), black_box(man), State::default()))
     });
     // The same and every GB/T 6323 metric from the dense output.
     g.bench_function("dopri5_metrics", |b| {
         let settings = MetricSettings::default();
         b.iter(|| {
-            let sim = coarse.simulate(black_box(&model), black_box(&man), State::default());
-            simulated_step_metrics(&coarse, &model, &man, &sim, &settings).unwrap()
+            let sim = coarse.simulate(black_box(model), black_box(man), State::default());
+            simulated_step_metrics(&coarse, model, man, &sim, &settings).unwrap()
         })
     });
     // With a row every 1 ms (the history a scenario writes by default).
     g.bench_function("dopri5_rows_1ms", |b| {
-        b.iter(|| dopri.run(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| dopri.run(black_box(model), black_box(man), State::default()))
     });
     // The same two by DOP853 (`method = "dop853"`) at the same tolerances.
     let dop853 = Integrator {
@@ -71,47 +63,29 @@ fn step_steer(c: &mut Criterion) {
         ..coarse
     };
     g.bench_function("dop853", |b| {
-        b.iter(|| dop853.simulate(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| dop853.simulate(black_box(model), black_box(man), State::default()))
     });
     let dop853_rows = Integrator {
         step: 1e-3,
         ..dop853
     };
     g.bench_function("dop853_rows_1ms", |b| {
-        b.iter(|| dop853_rows.run(black_box(&model), black_box(&man), State::default()))
+        b.iter(|| dop853_rows.run(black_box(model), black_box(man), State::default()))
     });
     // The solver alone as `peer/scipy_peer.py` runs SciPy's `solve_ivp`
     // (RK45) against it: rtol 1e-10, atol 1e-13, no largest step, (β, r)
     // every 10 ms from the dense output. The job of the ≥ 300× SciPy target
     // (`examples/peer_jobs.rs` times the same).
-    let scipy = Tolerances {
-        rtol: 1e-10,
-        atol: 1e-13,
-        max_step: f64::INFINITY,
-    };
-    let grid: Vec<f64> = (0..=1000).map(|i| f64::from(i) * 0.01).collect();
     g.bench_function("solver_rtol_1e-10", |b| {
-        let mut states = Vec::with_capacity(grid.len());
-        b.iter(|| {
-            let sol = coarse
-                .solve_dopri5(black_box(&model), black_box(&man), State::default(), &scipy)
-                .expect("a (β, r) model has a dense solution");
-            sol.states_into(&grid, &mut states);
-            sol.stats
-        })
+        let mut states = Vec::with_capacity(job.grid.len());
+        b.iter(|| black_box(&job).solve_into(&coarse, Pair::Dopri5, &mut states))
     });
     // The same job by DOP853 (Dormand & Prince's 8(5,3) pair): about half
     // the right-hand sides, its error below SciPy's RK45's at the same
     // tolerance (`vehicle::tests::dop853`).
     g.bench_function("solver_rtol_1e-10_dop853", |b| {
-        let mut states = Vec::with_capacity(grid.len());
-        b.iter(|| {
-            let sol = coarse
-                .solve_dop853(black_box(&model), black_box(&man), State::default(), &scipy)
-                .expect("a (β, r) model has a dense solution");
-            sol.states_into(&grid, &mut states);
-            sol.stats
-        })
+        let mut states = Vec::with_capacity(job.grid.len());
+        b.iter(|| black_box(&job).solve_into(&coarse, Pair::Dop853, &mut states))
     });
     g.finish();
 }

@@ -26,37 +26,21 @@ use handling::equilibria::sweep;
 use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitSettings};
 use handling::io::sweep::load_sweep;
-use handling::manoeuvre::{Manoeuvre, StepSteer};
 use handling::optim::Pso;
-use handling::sim::{Integrator, Method, Tolerances};
+use handling::sim::peer::PeerStepSteer;
+use handling::sim::{Integrator, Method, Pair, Tolerances};
 use handling::tyre::{Pac89, Tyre};
-use handling::vehicle::{Kinematics, State, Vehicle, VehicleModel};
+use handling::vehicle::State;
 use std::path::Path;
 use std::sync::atomic::AtomicUsize;
 use std::time::Instant;
 
-/// The solver's embedded pair in the solver-alone jobs.
-#[derive(Clone, Copy)]
-enum Pair {
-    /// Dormand–Prince 5(4).
-    Dopri5,
-    /// Dormand & Prince's 8(5,3).
-    Dop853,
-}
-
-impl Pair {
-    fn name(self) -> &'static str {
-        match self {
-            Pair::Dopri5 => "dopri5",
-            Pair::Dop853 => "dop853",
-        }
-    }
-    /// What its states file's name carries after the tolerance.
-    fn suffix(self) -> &'static str {
-        match self {
-            Pair::Dopri5 => "",
-            Pair::Dop853 => "_dop853",
-        }
+/// A pair's name in the JSON and what its states file's name carries
+/// after the tolerance.
+fn names(pair: Pair) -> (&'static str, &'static str) {
+    match pair {
+        Pair::Dopri5 => ("dopri5", ""),
+        Pair::Dop853 => ("dop853", "_dop853"),
     }
 }
 
@@ -80,29 +64,16 @@ fn main() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     std::fs::create_dir_all(root.join("peer/out")).expect("peer/out");
 
-    // Step steer.
-    let mut model = VehicleModel::new(
-        Vehicle::compact_sedan(),
-        Tyre::Pac89(Pac89::adams_example()),
-        Tyre::Pac89(Pac89::adams_example()),
-    );
-    model.options.kinematics = Kinematics::Exact;
-    model.options.load_transfer = true;
-    let man = Manoeuvre::StepSteer(StepSteer {
-        speed: 22.2222,
-        amplitude: 0.012,
-        trim: 0.0,
-        start: 1.0,
-        rise_time: 0.1,
-        end: 10.0,
-    });
+    // Step steer (`handling::sim::peer`: its model and manoeuvre).
+    let job = PeerStepSteer::new();
+    let (model, man) = (&job.model, &job.manoeuvre);
     let tol = Tolerances::default();
     let integ = Integrator {
         step: 0.01,
         method: Method::Dopri5(tol),
         ..Integrator::default()
     };
-    let (h, sol) = integ.run_dopri5(&model, &man, State::default(), &tol);
+    let (h, sol) = integ.run_dopri5(model, man, State::default(), &tol);
     let sol = sol.expect("a (β, r) model has a dense solution");
     let csv: String = std::iter::once("t,yaw_rate,beta\n".to_string())
         .chain(
@@ -114,14 +85,14 @@ fn main() {
         .collect();
     std::fs::write(root.join("peer/out/step_crate.csv"), csv).expect("write");
     let step_steer = median_seconds(repeats * 10, || {
-        std::hint::black_box(integ.run_dopri5(&model, &man, State::default(), &tol));
+        std::hint::black_box(integ.run_dopri5(model, man, State::default(), &tol));
     });
 
     // The same step steer as SciPy runs it: the solver alone, (β, r) at the
     // 10 ms grid from the dense output, at SciPy's own tolerances and with no
     // largest step (the job above evaluates the whole model at every output
     // time, for ay, forces and loads, which SciPy's job does not return).
-    let grid: Vec<f64> = (0..=1000).map(|i| f64::from(i) * 0.01).collect();
+    let grid = &job.grid;
     let mut solver_only = Vec::new();
     let jobs = [
         (1e-6, 1e-9, Pair::Dopri5),
@@ -136,12 +107,8 @@ fn main() {
             max_step: f64::INFINITY,
         };
         let solve = |out: &mut Vec<[f64; 2]>| {
-            let sol = match pair {
-                Pair::Dopri5 => integ.solve_dopri5(&model, &man, State::default(), &tol),
-                Pair::Dop853 => integ.solve_dop853(&model, &man, State::default(), &tol),
-            }
-            .expect("a (β, r) model has a dense solution");
-            sol.states_into(&grid, out);
+            let sol = job.solution(&integ, pair, &tol);
+            sol.states_into(grid, out);
             sol.stats
         };
         let mut states = Vec::with_capacity(grid.len());
@@ -153,14 +120,15 @@ fn main() {
                     .map(|(t, x)| format!("{t},{:e},{:e}\n", x[1], x[0])),
             )
             .collect();
-        let file = format!("peer/out/step_solver_{rtol:e}{}.csv", pair.suffix());
+        let (name, suffix) = names(pair);
+        let file = format!("peer/out/step_solver_{rtol:e}{suffix}.csv");
         std::fs::write(root.join(&file), csv).expect("write");
         let seconds = median_seconds(repeats * 10, || {
             std::hint::black_box(solve(&mut states));
         });
         solver_only.push(format!(
-            "{{\"file\": \"{file}\", \"method\": \"{}\", \"rtol\": {rtol:e}, \"atol\": {atol:e}, \"seconds\": {seconds:e}, \"steps\": {}, \"evaluations\": {}}}",
-            pair.name(), stats.accepted, stats.evaluations
+            "{{\"file\": \"{file}\", \"method\": \"{name}\", \"rtol\": {rtol:e}, \"atol\": {atol:e}, \"seconds\": {seconds:e}, \"steps\": {}, \"evaluations\": {}}}",
+            stats.accepted, stats.evaluations
         ));
     }
 

@@ -25,7 +25,7 @@ use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::measured::derivative::{speed_derivative, speed_derivative_at};
 use crate::vehicle::{
-    Inputs, LoadTransferSeed, ModelScalars, Outputs, State, StateVector, VehicleModel,
+    Inputs, LoadTransferSeed, ModelScalars, Outputs, State, StateVector, SteerCosine, VehicleModel,
 };
 use std::sync::atomic::AtomicUsize;
 
@@ -282,6 +282,8 @@ struct Driven<'a> {
     /// The adaptive method's seeds ([`Adaptive`]).
     adaptive: Adaptive,
     load_tolerance: f64,
+    /// The cosine of the last front steer ([`SteerCosine`]).
+    cosine: SteerCosine,
     load_evaluations: u64,
     /// The inputs and outputs of the last evaluation.
     last: (Inputs, Outputs),
@@ -301,6 +303,7 @@ impl<'a> Driven<'a> {
             history: [(f64::NAN, 0.0); 2],
             adaptive: Adaptive::default(),
             load_tolerance: tolerance,
+            cosine: SteerCosine::default(),
             load_evaluations: 0,
             last: (Inputs::steady(0.0, 0.0, friction), Outputs::default()),
             progress: None,

@@ -29,6 +29,7 @@
 
 mod driven;
 pub mod ode;
+pub mod peer;
 mod progress;
 pub mod tangent;
 #[cfg(test)]

@@ -82,12 +82,12 @@ const TRIG_MAX: f64 = 1e5;
 
 /// `x` where the mask `m` is all ones, `y` where it is zero.
 #[inline(always)]
-fn blend(m: u64, x: f64, y: f64) -> f64 {
+pub(crate) fn blend(m: u64, x: f64, y: f64) -> f64 {
     f64::from_bits((x.to_bits() & m) | (y.to_bits() & !m))
 }
 
 #[inline(always)]
-fn mask(b: bool) -> u64 {
+pub(crate) fn mask(b: bool) -> u64 {
     0u64.wrapping_sub(b as u64)
 }
 

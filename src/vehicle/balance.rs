@@ -451,14 +451,14 @@ pub(super) fn projection<T: Scalar>(exact: bool, steer: T) -> T {
 
 impl VehicleModel {
     /// The force balance of one right-hand side at road-wheel steer `steer`
-    /// and roll `phi`, with the front's lag state, its kinematic slip
-    /// angle and the rear slip angle.
+    /// (`cos_steer` its projection, [`projection`]) and roll `phi`, with the
+    /// front's lag state, its kinematic slip angle and the rear slip angle.
     pub(super) fn balance<T: Scalar>(
         &self,
         sc: &ModelScalars<T>,
         tyres: &impl AxleTyres<T>,
         inp: &Inputs,
-        (steer, phi): (T, T),
+        (steer, cos_steer, phi): (T, T, T),
         [lag_front, kin_front, alpha_rear]: [T; 3],
     ) -> Balance<T> {
         let e = &sc.effects;
@@ -489,7 +489,7 @@ impl VehicleModel {
             fx: sc.wheel_forces(self.vehicle.mass, inp.ax),
             // Without compliance the wheel's steer, hence the projection,
             // does not depend on the force: one cosine per evaluation.
-            fixed_projection: projection(exact_kinematics, steer),
+            fixed_projection: cos_steer,
             inv_mass: sc.loads.inv_mass,
             road,
             exact_kinematics,

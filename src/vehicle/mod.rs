@@ -56,7 +56,7 @@ pub use effects::{
 pub use loads::{implicit_root, LoadTransferSeed};
 pub use params::Vehicle;
 pub use rates::StateVector;
-pub(crate) use rates::{LoadSolve, LOAD_TOLERANCE};
+pub(crate) use rates::{LoadSolve, SteerCosine, LOAD_TOLERANCE};
 pub use scalar::{ModelScalars, Scalar};
 
 use crate::tyre::{Tyre, TyreModel};

@@ -55,6 +55,37 @@ pub(crate) struct RatesOf<T> {
     pub(crate) evaluations: u32,
 }
 
+/// The cosine of the last front road-wheel steer a run's right-hand side
+/// projected its front force by: a step steer holds one steer over most of
+/// its stages, and `cos` was 3 % of a PAC89 right-hand side (profiled,
+/// session 113). The C library's cosine of the same number, so the same
+/// bits.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SteerCosine {
+    steer: u64,
+    cos: f64,
+}
+
+impl Default for SteerCosine {
+    fn default() -> Self {
+        Self {
+            steer: 0f64.to_bits(),
+            cos: 1.0,
+        }
+    }
+}
+
+impl SteerCosine {
+    /// `cos steer`, computed only when `steer` is not the last one's.
+    #[inline]
+    pub(crate) fn of(&mut self, steer: f64) -> f64 {
+        if steer.to_bits() != self.steer {
+            (self.steer, self.cos) = (steer.to_bits(), steer.cos());
+        }
+        self.cos
+    }
+}
+
 impl VehicleModel {
     /// A wheel's lateral force of `tyre` at slip angle `alpha` and load
     /// `fz` on the road of `inp`.
@@ -234,25 +265,28 @@ impl VehicleModel {
         seed: &mut LoadTransferSeed,
         tolerance: f64,
     ) -> (StateVector, Outputs) {
-        self.rates_in(&self.scalars(inp.friction), x, inp, seed, tolerance)
+        let sc = self.scalars(inp.friction);
+        let mut cosine = SteerCosine::default();
+        self.rates_in(&sc, x, inp, (seed, &mut cosine), tolerance)
     }
 
     /// [`VehicleModel::rates`] with the model's numbers `sc` already built
     /// ([`VehicleModel::scalars`] of `inp.friction`): an integrator, whose
-    /// road does not change, builds them once per run, not once per stage.
+    /// road does not change, builds them once per run, not once per stage;
+    /// and with the cosine of its last steer kept in `cosine`.
     pub(crate) fn rates_in(
         &self,
         sc: &ModelScalars<f64>,
         x: &StateVector,
         inp: &Inputs,
-        seed: &mut LoadTransferSeed,
+        (seed, cosine): (&mut LoadTransferSeed, &mut SteerCosine),
         tolerance: f64,
     ) -> (StateVector, Outputs) {
         let tyres = PlainTyres {
             tyres: [&self.front, &self.rear],
         };
         let solve = LoadSolve::Solved(seed, tolerance);
-        let o = self.rates_of(sc, &tyres, x, inp, inp.steer, solve);
+        let o = self.rates_with(sc, &tyres, x, inp, (inp.steer, Some(cosine)), solve);
         let outputs = Outputs {
             beta_rate: o.dx[0],
             yaw_acceleration: o.dx[1],
@@ -282,6 +316,20 @@ impl VehicleModel {
         steer: T,
         solve: LoadSolve<'_, T>,
     ) -> RatesOf<T> {
+        self.rates_with(sc, tyres, x, inp, (steer, None), solve)
+    }
+
+    /// [`VehicleModel::rates_of`] with the cosine of the front steer taken
+    /// from `cosine` where one is kept (plain numbers only).
+    fn rates_with<T: Scalar>(
+        &self,
+        sc: &ModelScalars<T>,
+        tyres: &impl AxleTyres<T>,
+        x: &[T; 6],
+        inp: &Inputs,
+        (steer, cosine): (T, Option<&mut SteerCosine>),
+        solve: LoadSolve<'_, T>,
+    ) -> RatesOf<T> {
         let v = &self.vehicle;
         let e = &sc.effects;
         let u = inp.speed.max(MIN_SPEED);
@@ -291,7 +339,13 @@ impl VehicleModel {
         let (kin_f, kin_r) = self.kinematic_slip_at(beta, vy, r, u, steer);
         let lagged = e.lagged();
         let alpha_rear = if lagged { x[3] } else { kin_r };
-        let balance = self.balance(sc, tyres, inp, (steer[0], phi), [x[2], kin_f, alpha_rear]);
+        let exact = self.options.kinematics == Kinematics::Exact;
+        let cos_steer = match cosine {
+            Some(c) if T::PLAIN && exact => T::from(c.of(steer[0].re())),
+            _ => projection(exact, steer[0]),
+        };
+        let at = (steer[0], cos_steer, phi);
+        let balance = self.balance(sc, tyres, inp, at, [x[2], kin_f, alpha_rear]);
         let (mut ay, mut s, evaluations, seed) = match solve {
             LoadSolve::Solved(seed, tolerance) => {
                 let (ay, s, n) = balance.solve(tyres, seed, tolerance);

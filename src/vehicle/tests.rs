@@ -507,6 +507,44 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     }
 }
 
+/// The steer cosine a run keeps between right-hand sides (`SteerCosine`)
+/// changes no bit: over steers repeated, changed, signed zeros and a NaN,
+/// the PAC89 sedan's derivatives and outputs with one cache kept across
+/// the calls are those of a fresh cache each call (`rates`), and the
+/// cached cosine is the C library's of the same steer.
+#[test]
+fn the_kept_steer_cosine_is_the_steers_own_to_the_bit() {
+    let m = crate::sim::peer::PeerStepSteer::new().model;
+    let sc = m.scalars(1.0);
+    let mut kept = SteerCosine::default();
+    let x = [0.004, 0.12, 0.0, 0.0, 0.0, 0.0];
+    let steers = [
+        0.0,
+        0.0,
+        0.012,
+        0.012,
+        -0.0,
+        0.011,
+        0.012,
+        f64::NAN,
+        0.3,
+        0.3,
+    ];
+    for steer in steers {
+        assert_eq!(kept.of(steer).to_bits(), steer.cos().to_bits(), "{steer}");
+        let inp = Inputs::steady(steer, 22.2, 1.0);
+        let (mut a, mut b) = (LoadTransferSeed::default(), LoadTransferSeed::default());
+        let fresh = m.rates(&x, &inp, &mut a, LOAD_TOLERANCE);
+        let cached = m.rates_in(&sc, &x, &inp, (&mut b, &mut kept), LOAD_TOLERANCE);
+        let bits = |(dx, o): &(StateVector, Outputs)| {
+            let mut v: Vec<u64> = dx.iter().map(|d| d.to_bits()).collect();
+            v.extend([o.ay, o.fy_front, o.fy_rear, o.alpha_front].map(f64::to_bits));
+            v
+        };
+        assert_eq!(bits(&fresh), bits(&cached), "{steer}");
+    }
+}
+
 mod dop853;
 mod dopri5;
 mod equilibrium;

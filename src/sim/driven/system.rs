@@ -24,9 +24,13 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
                 ay: [self.last.1.ay; 3],
                 slope: self.seeds[0].slope,
             };
-            let (dx, o) = self
-                .model
-                .rates_in(&self.scalars, &full, &inp, &mut seed, f64::INFINITY);
+            let (dx, o) = self.model.rates_in(
+                &self.scalars,
+                &full,
+                &inp,
+                (&mut seed, &mut self.cosine),
+                f64::INFINITY,
+            );
             self.load_evaluations += u64::from(o.load_iterations);
             return std::array::from_fn(|i| dx[i]);
         }
@@ -35,7 +39,7 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
             &self.scalars,
             &full,
             &inp,
-            &mut self.seeds[j],
+            (&mut self.seeds[j], &mut self.cosine),
             self.load_tolerance,
         );
         if self.stage.is_none() {

@@ -54,6 +54,11 @@ pub(super) fn each<const N: usize>(f: impl FnMut(usize) -> f64) -> [f64; N] {
 pub(super) struct Stages<const N: usize> {
     pub(super) a: [[f64; N]; 14],
     pub(super) on: [bool; N],
+    /// Where C·D vanishes (B is zero there).
+    pub(super) small: [bool; N],
+    /// C·D where it does not vanish, 1 where it does: a divisor that never
+    /// is zero, its quotient discarded there.
+    pub(super) cd_safe: [f64; N],
     pub(super) f: [f64; N],
     pub(super) mu: [f64; N],
     pub(super) g: [f64; N],
@@ -96,15 +101,18 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
     let bcd_camber: [f64; N] = each(|i| -(a[5][i] * g[i].abs()) + 1.0);
     let w: [f64; N] = each(|i| z[i] * z[i] + 1.0);
     let cd: [f64; N] = each(|i| c[i] * d[i]);
-    // B = BCD/(C·D), zero where C·D vanishes (`stiffness_factor`): read
-    // by the load derivatives only.
+    // Where C·D vanishes B is zero (`stiffness_factor`). The divisions
+    // below are by `cd_safe`, C·D where it does not vanish and 1 where it
+    // does (a quotient then discarded), and the zero is selected by a bit
+    // mask: with a branch per lane the compiler took the divisions out of
+    // the vector lanes, twelve scalar divisions each behind a branch
+    // (profiled, session 113). The same quotients, so the same bits.
+    let small: [bool; N] = std::array::from_fn(|i| cd[i].abs() < 1e-12);
+    let cd_safe: [f64; N] = each(|i| select(small[i], 1.0, cd[i]));
+    // B = BCD/(C·D): read by the load derivatives only.
     let b: [f64; N] = each(|i| {
         let bcd = a[3][i] * (z[i] * 2.0 / w[i]) * bcd_camber[i];
-        if cd[i].abs() < 1e-12 {
-            0.0
-        } else {
-            bcd / cd[i]
-        }
+        select(small[i], 0.0, bcd / cd_safe[i])
     });
     let e: [f64; N] = each(|i| a[6][i] * f[i] + a[7][i]);
     let sh: [f64; N] = each(|i| a[8][i] * g[i] + a[9][i] * f[i] + a[10][i]);
@@ -115,11 +123,7 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
     // on (profiled); a few ulp of B·x apart from the one-wheel method's.
     let bx: [f64; N] = each(|i| {
         let num = a[3][i] * (z[i] * 2.0) * bcd_camber[i];
-        let b_mu = if cd[i].abs() < 1e-12 {
-            0.0
-        } else {
-            num / (w[i] * cd[i] * mu[i])
-        };
+        let b_mu = select(small[i], 0.0, num / (w[i] * cd_safe[i] * mu[i]));
         b_mu * (s[i].alpha.to_degrees() + sh[i])
     });
     let inner = kernels::atan(bx);
@@ -128,6 +132,8 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
     Stages {
         a,
         on,
+        small,
+        cd_safe,
         f,
         mu,
         g,
@@ -143,6 +149,13 @@ pub(super) fn stages<const N: usize>(tyres: [&Pac89; N], s: &[SlipState; N]) -> 
         phi,
         outer,
     }
+}
+
+/// `x` where `m`, `y` elsewhere, by a bit mask, not a branch (so that a
+/// lane's choice keeps the arithmetic around it in vector lanes).
+#[inline(always)]
+pub(super) fn select(m: bool, x: f64, y: f64) -> f64 {
+    kernels::blend(kernels::mask(m), x, y)
 }
 
 /// Lane `i`'s load in N, zero where it gives no force (`on[i]` false).

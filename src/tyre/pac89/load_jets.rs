@@ -13,7 +13,7 @@
 //! [`super::lanes::Stages`]); a lane off the ground or without friction has
 //! zero force and derivatives.
 
-use super::lanes::{each, force, stages};
+use super::lanes::{each, force, select, stages};
 use super::Pac89;
 use crate::tyre::{kernels, SlipState, Tyre};
 
@@ -153,8 +153,8 @@ fn jets(tyres: [&Pac89; 4], s: &[SlipState; 4]) -> LoadJets {
         let k = a[3][i] * st.bcd_camber[i];
         let (bcd1, bcd2) = (k * q1, k * q2);
         // BCD = B·C·D differentiated twice; B is held at zero where C·D vanishes.
-        let cd = c[i] * d;
-        let inv_cd = if cd.abs() < 1e-12 { 0.0 } else { 1.0 / cd };
+        // Selected, not branched (as `stages`' B): the same bits.
+        let inv_cd = select(st.small[i], 0.0, 1.0 / st.cd_safe[i]);
         let b1 = (bcd1 - b * c[i] * d1) * inv_cd;
         let b2 = (bcd2 - 2.0 * b1 * c[i] * d1 - b * c[i] * d2) * inv_cd;
         let x = s[i].alpha.to_degrees() + st.sh[i];

@@ -82,26 +82,12 @@ fn dop853_follows_the_linear_bicycles_step_response_in_closed_form() {
     assert!(sol.stats.accepted < 100, "{:?}", sol.stats);
 }
 
-/// The peer comparison's job (as `dopri5.rs`'s `peer_step`): the compact
-/// sedan on four PAC89 wheels with load transfer and exact kinematics, a
-/// 10 s step of 0.012 rad in 0.1 s at 80 km/h.
+/// The peer comparison's job (`sim::peer`): the compact sedan on four
+/// PAC89 wheels with load transfer and exact kinematics, a 10 s step of
+/// 0.012 rad in 0.1 s at 80 km/h.
 fn peer_step() -> (VehicleModel, Manoeuvre) {
-    let mut model = VehicleModel::new(
-        Vehicle::compact_sedan(),
-        Tyre::Pac89(Pac89::adams_example()),
-        Tyre::Pac89(Pac89::adams_example()),
-    );
-    model.options.kinematics = Kinematics::Exact;
-    model.options.load_transfer = true;
-    let man = Manoeuvre::StepSteer(StepSteer {
-        speed: 22.2222,
-        amplitude: 0.012,
-        trim: 0.0,
-        start: 1.0,
-        rise_time: 0.1,
-        end: 10.0,
-    });
-    (model, man)
+    let job = crate::sim::peer::PeerStepSteer::new();
+    (job.model, job.manoeuvre)
 }
 
 /// The ≥ 300× job by DOP853 at SciPy's rtol 1e-10 against Dormand–Prince

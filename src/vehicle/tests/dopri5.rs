@@ -119,25 +119,13 @@ fn dopri5_alone_has_no_solution_with_states_beyond_beta_and_r() {
         .is_none());
 }
 
-/// The peer comparison's job (`benches/simulate.rs`,
-/// `examples/peer_jobs.rs`): the compact sedan on four PAC89 wheels (the
+/// The peer comparison's job (`sim::peer`, as `benches/simulate.rs` and
+/// `examples/peer_jobs.rs` run it): the compact sedan on four PAC89 wheels (the
 /// Adams example) with load transfer and exact kinematics, a 10 s step of
 /// 0.012 rad in 0.1 s at 80 km/h.
 fn peer_step() -> (VehicleModel, Manoeuvre) {
-    let model = VehicleModel::new(
-        Vehicle::compact_sedan(),
-        Tyre::Pac89(Pac89::adams_example()),
-        Tyre::Pac89(Pac89::adams_example()),
-    );
-    let man = Manoeuvre::StepSteer(StepSteer {
-        speed: 22.2222,
-        amplitude: 0.012,
-        trim: 0.0,
-        start: 1.0,
-        rise_time: 0.1,
-        end: 10.0,
-    });
-    (model, man)
+    let job = crate::sim::peer::PeerStepSteer::new();
+    (job.model, job.manoeuvre)
 }
 
 /// The solver alone at SciPy's rtol 1e-10 (the ≥ 300× job) against a

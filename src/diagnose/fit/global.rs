@@ -85,6 +85,15 @@ pub fn global_best<F: Fn(&[f64]) -> Augmented + Sync>(
 /// `start`; the lowest of them, its cost and the replays made (a point
 /// is replayed only until it is known not to be lower than the best so
 /// far, [`Residuals::cost_below`]).
+///
+/// The cells are replayed nearest the start's cell first ([`visit_order`]):
+/// most candidates are not the answer, their optimum lies next to the
+/// effect off where their search starts, and once a low best is known the
+/// cells beyond it stop after their first runs. The point returned is the
+/// one an index-order scan returns whatever the order: the lowest cost,
+/// among equal costs the start, then the cell of lowest index (a stopped
+/// replay is certainly above the best, so every comparison that decides
+/// is one of full costs).
 fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
@@ -92,28 +101,66 @@ fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     cells: usize,
 ) -> (Vec<f64>, f64, usize) {
     let p0 = problem.clamp(start);
-    let d = searched.len();
-    let mut best = (problem.cost(&p0), p0.clone());
+    // The best so far: its cost, its cell's index (None: the start) and
+    // its point.
+    let mut best: (f64, Option<usize>, Vec<f64>) = (problem.cost(&p0), None, p0.clone());
     problem.keep_last();
-    let total = cells.pow(d as u32);
+    let ranges = &problem.bounds[searched.clone()];
+    let order = visit_order(&p0[searched.clone()], ranges, cells);
+    let total = order.len();
     let mut q = p0.clone();
-    for index in 0..total {
+    for index in order {
         let mut rest = index;
-        for (k, slot) in q[searched.clone()].iter_mut().enumerate() {
-            let (lo, hi) = problem.bounds[searched.start + k];
+        for (slot, (lo, hi)) in q[searched.clone()].iter_mut().zip(ranges) {
             *slot = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
             rest /= cells;
         }
         // Only a point below the best counts: with a best that is not a
         // number, any finite one (no bound then).
         let c = problem.cost_below(&q, best.0);
-        // A replay that fails (a cost not finite) is no candidate start.
-        if c.is_finite() && (best.0.is_nan() || c < best.0) {
-            best = (c, q.clone());
+        // A replay that fails (a cost not finite) is no candidate start;
+        // an equal cost wins only over a cell of higher index.
+        let tie = c == best.0 && best.1.is_some_and(|b| index < b);
+        if c.is_finite() && (best.0.is_nan() || c < best.0 || tie) {
+            best = (c, Some(index), q.clone());
             problem.keep_last();
         }
     }
-    (best.1, best.0, total + 1)
+    (best.2, best.0, total + 1)
+}
+
+/// The grid's cell indices (the first parameter's cell the fastest
+/// digit, `cells` per parameter of `ranges`) ordered by their distance,
+/// in cells summed over the parameters, from the cell that holds `p0`,
+/// index order among equals.
+fn visit_order(p0: &[f64], ranges: &[(f64, f64)], cells: usize) -> Vec<usize> {
+    let home: Vec<usize> = p0
+        .iter()
+        .zip(ranges)
+        .map(|(x, (lo, hi))| {
+            let at = (x - lo) / (hi - lo) * cells as f64;
+            // A point box (hi = lo) or a value that is not a number sits
+            // in the first cell.
+            if at.is_finite() {
+                (at.max(0.0) as usize).min(cells - 1)
+            } else {
+                0
+            }
+        })
+        .collect();
+    let distance = |index: usize| {
+        let mut rest = index;
+        home.iter()
+            .map(|&h| {
+                let k = rest % cells;
+                rest /= cells;
+                k.abs_diff(h)
+            })
+            .sum::<usize>()
+    };
+    let mut order: Vec<usize> = (0..cells.pow(ranges.len() as u32)).collect();
+    order.sort_by_key(|&index| (distance(index), index));
+    order
 }
 
 /// The swarm search of a fit: PSO over the bounds of the parameters in
@@ -246,6 +293,65 @@ mod tests {
             (best[1] - (2.0 + 2.5 * 38.0 / 9.0)).abs() < 1e-12,
             "{best:?}"
         );
+    }
+
+    /// The grid as it was before it visited nearest the start first:
+    /// every cell in index order, each replayed whole, the lowest cost
+    /// kept (the start among equals, then the first).
+    fn index_order_grid(
+        problem: &Problem<fn(&[f64]) -> Augmented>,
+        start: &[f64],
+        searched: Range<usize>,
+        cells: usize,
+    ) -> (Vec<f64>, f64) {
+        let mut best = (problem.cost(start), start.to_vec());
+        let mut q = start.to_vec();
+        for index in 0..cells.pow(searched.len() as u32) {
+            let mut rest = index;
+            for k in searched.clone() {
+                let (lo, hi) = problem.bounds[k];
+                q[k] = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
+                rest /= cells;
+            }
+            let c = problem.cost(&q);
+            if c.is_finite() && c < best.0 {
+                best = (c, q.clone());
+            }
+        }
+        (best.1, best.0)
+    }
+
+    #[test]
+    fn the_grid_visits_nearest_the_start_first_and_returns_what_an_index_order_scan_returns() {
+        let box3 = [(0.0, 3.0), (0.0, 3.0)];
+        // From the centre cell: it, its four neighbours, the corners.
+        assert_eq!(
+            visit_order(&[1.5, 1.5], &box3, 3),
+            [4, 1, 3, 5, 7, 0, 2, 6, 8]
+        );
+        // From a corner (and a value that is not a number: the first cell).
+        let from_corner = [0, 1, 3, 2, 4, 6, 5, 7, 8];
+        assert_eq!(visit_order(&[0.0, 0.0], &box3, 3), from_corner);
+        assert_eq!(visit_order(&[f64::NAN, 0.0], &box3, 3), from_corner);
+        assert_eq!(visit_order(&[3.0], &[(0.0, 3.0)], 3), [2, 1, 0]);
+        let runs = runs();
+        let two = problem(&runs, &[B, B]);
+        let start = [21.0, 13.5];
+        let (best, cost, points) = grid(&two, &start, 0..2, 5);
+        assert_eq!(points, 26);
+        assert_eq!((best, cost), index_order_grid(&two, &start, 0..2, 5));
+        // A fourth parameter the model does not read: its cells tie to the
+        // bit, and the cell of lowest index wins, as in index order,
+        // though the start's (its last cell) is visited first.
+        let four = problem(&runs, &[B, B, D, (0.0, 1.0)]);
+        let start = [9.0, 13.0, 0.7, 0.95];
+        let (best, cost, _) = grid(&four, &start, 2..4, 5);
+        assert_eq!(best, [9.0, 13.0, 1.0, 0.1]);
+        assert_eq!((best, cost), index_order_grid(&four, &start, 2..4, 5));
+        // At a start as good as every cell, the start.
+        let start = [9.0, 13.0, 1.0, 0.95];
+        let (best, _, _) = grid(&four, &start, 3..4, 9);
+        assert_eq!(best, start);
     }
 
     #[test]

@@ -21,8 +21,7 @@ use crate::diagnose::fit::{
 };
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::model::replay::{Prepared, SharedReplays};
-use crate::diagnose::model::Augmented;
-use crate::diagnose::model::Observed;
+use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::CalibrationSource;
 use crate::diagnose::timing::{record_split, Phase, Recorder, Stamps};
 use crate::diagnose::verdict::candidate::Setting;
@@ -468,11 +467,12 @@ impl<'a> Context<'a> {
         pso: &Pso,
     ) -> (Vec<f64>, GlobalSearch) {
         let held = s.layout.restricted_from();
-        // Each start replayed, the lowest so far kept: the global stage
-        // starts from it without replaying it again.
+        // Each start replayed, the lowest so far kept (the global stage starts
+        // there, no replay again); one above it stops early: only it is read.
         let mut tried: Vec<(f64, Vec<f64>)> = Vec::with_capacity(starts.len() + 3);
+        let lowest = |t: &[(f64, Vec<f64>)]| t.iter().map(|t| t.0).fold(f64::INFINITY, f64::min);
         for p in starts {
-            let c = problem.cost(p);
+            let c = problem.cost_below(p, lowest(&tried));
             if tried.iter().all(|(t, _)| c < *t) {
                 problem.keep_last();
             }
@@ -509,7 +509,7 @@ impl<'a> Context<'a> {
                         *slot = *mean;
                     }
                 }
-                tried.push((problem.cost(&q), q));
+                tried.push((problem.cost_below(&q, lowest(&tried)), q));
             }
         }
         // A single's axles are regridded at its effect values where its

@@ -22,6 +22,7 @@
 //! ([`Derivatives`]); the aligning and longitudinal blocks difference
 //! theirs.
 
+mod aligning;
 pub mod data;
 pub mod grouping;
 mod held;

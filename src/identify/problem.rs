@@ -57,7 +57,7 @@ impl Channel {
         let s = q.slip_state();
         match self {
             Channel::LateralForce => t.lateral_force(&s),
-            Channel::AligningMoment => t.forces(&s).mz,
+            Channel::AligningMoment => super::aligning::aligning_moment(t, &s),
             Channel::LongitudinalForce => t.forces(&s).fx,
         }
     }

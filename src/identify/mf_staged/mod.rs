@@ -61,7 +61,7 @@
 //!
 //! Derivatives: each stage's Jacobian is exact, by forward-mode dual
 //! numbers (`num-dual`): the stage's channel evaluated once per row with
-//! the free coefficients as dual variables, in passes of eight directions
+//! the free coefficients as dual variables, in passes of up to 28 directions
 //! ([`crate::tyre::mf::MagicFormula::channel_at`]), the parts of the
 //! formula no free coefficient enters (the lateral force in the `Mz`
 //! stage, …) prepared once per row in plain numbers. Forward differences

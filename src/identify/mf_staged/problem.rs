@@ -30,7 +30,12 @@ pub enum Derivatives {
 }
 
 /// The most directions one pass carries; more parameters take more passes.
-const WIDEST: usize = 8;
+/// A pass evaluates the whole formula's plain part (its arctangents, sines
+/// and cosines) once whatever its width, so a stage of 26 or 27 free
+/// coefficients in one pass of 28 spends a quarter of what four passes of
+/// eight did on them; each direction's derivative is the same arithmetic
+/// at any width (the Jacobian is the same to the bit).
+const WIDEST: usize = 28;
 
 /// Rows from which an evaluation over them is split between threads.
 pub(super) const PARALLEL_ROWS: usize = 2048;
@@ -132,6 +137,8 @@ impl<'a> StageProblem<'a> {
             let width = (n - start).min(WIDEST);
             let b = match width {
                 0..=4 => self.columns::<4>(&plain, start, width),
+                5..=8 => self.columns::<8>(&plain, start, width),
+                9..=16 => self.columns::<16>(&plain, start, width),
                 _ => self.columns::<WIDEST>(&plain, start, width),
             };
             j.columns_mut(start, width).copy_from(&b);

@@ -183,11 +183,14 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
 ) -> Result<StepMetrics, MetricsError> {
     let st = Steps::of(rec, s)?;
     let t_last = st.t_last;
-    let (settling, r_spread) = steady_settling(rec, s, &st);
     let dn = |x: &Sample| (x.steer - st.d0) / st.d_step;
     let rn = |x: &Sample| (x.yaw_rate - st.r0) / st.r_step;
     let an = |x: &Sample| (x.ay - st.a0) / st.a_step;
     let t0 = first_reach(rec, st.t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoHalfStep)?;
+    let (settling, r_spread) = steady_settling(rec, s, &st, t0);
+    // One rule, the sampled metrics' too: `simulate` and `metrics` of
+    // one history flag and mark alike.
+    let [yaw_moving, ay_moving, beta_moving] = settling.windows_moving();
     // From the steer's onset, not t₀: a response may lead the steer's
     // half-way point ([`super`]).
     let onset = first_reach(rec, st.t_first, |x| dn(x) - 0.05).unwrap_or(t0);
@@ -246,9 +249,9 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_gain_spread: None,
         yaw_rate_peak_unmeasured: false,
         steer_logged_late: None,
-        yaw_rate_window_moving: false,
-        ay_window_moving: false,
-        beta_window_moving: false,
+        yaw_rate_window_moving: yaw_moving,
+        ay_window_moving: ay_moving,
+        beta_window_moving: beta_moving,
         total_variance_window_cut: (onset + s.variance_window > t_last).then_some(to - onset),
     })
 }
@@ -336,6 +339,7 @@ fn steady_settling<R: ContinuousRecord + ?Sized>(
     rec: &mut R,
     s: &MetricSettings,
     st: &Steps,
+    t0: f64,
 ) -> (super::ChannelSettling, f64) {
     let (t_first, t_last) = (st.t_first, st.t_last);
     let (rs, as_, bs, b0) = (st.rs, st.as_, st.bs, st.b0);
@@ -368,13 +372,54 @@ fn steady_settling<R: ContinuousRecord + ?Sized>(
     let r_spread = (vr / s.steady_window).sqrt() / st.r_step.abs();
     let a_spread = (va / s.steady_window).sqrt() / st.a_step.abs();
     let b_spread = (vb / s.steady_window).sqrt() / b_scale;
+    let [r_ring, a_ring, b_ring] = ringings(rec, st, t0, t_last - s.steady_window);
+    let b_to = ((bs - b0) / b_scale).abs();
+    let with = super::settling::with_ringing;
     let settling = super::ChannelSettling {
-        yaw_rate: super::Settling::of_spread(r_spread, trend(1, st.r0, st.r_step)),
-        ay: Some(super::Settling::of_spread(
-            a_spread,
-            trend(2, st.a0, st.a_step),
+        yaw_rate: with(
+            super::Settling::of_spread(r_spread, trend(1, st.r0, st.r_step)),
+            r_ring,
+            1.0,
+            0.0,
+        ),
+        ay: Some(with(
+            super::Settling::of_spread(a_spread, trend(2, st.a0, st.a_step)),
+            a_ring,
+            1.0,
+            0.0,
         )),
-        beta: Some(super::Settling::of_spread(b_spread, b_trend)),
+        beta: Some(with(
+            super::Settling::of_spread(b_spread, b_trend),
+            b_ring,
+            b_to,
+            0.0,
+        )),
     };
     (settling, r_spread)
+}
+
+/// Each channel's decaying oscillation (yaw rate, lateral acceleration,
+/// sideslip, each normalised by its own step) from time zero `t0` on,
+/// judged at the steady window starting at `window`
+/// ([`super::settling::ringing`]), read on samples every [`PROBE`]
+/// seconds: the record has no noise, and a swing of a period of a second
+/// or more is resolved far finer than its extrema are judged.
+fn ringings<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    st: &Steps,
+    t0: f64,
+    window: f64,
+) -> [Option<super::settling::ringing::Ringing>; 3] {
+    let n = ((st.t_last - t0) / PROBE).ceil().max(1.0) as usize;
+    let t: Vec<f64> = (0..=n)
+        .map(|i| (t0 + i as f64 * PROBE).min(st.t_last))
+        .collect();
+    let mut x = [Vec::new(), Vec::new(), Vec::new()];
+    for &ti in &t {
+        let v = rec.sample(ti);
+        x[0].push((v.yaw_rate - st.r0) / st.r_step);
+        x[1].push((v.ay - st.a0) / st.a_step);
+        x[2].push((v.beta - st.b0) / (st.bs - st.b0));
+    }
+    x.map(|x| super::settling::ringing::ringing(&t, &x, t0, window, 0.0))
 }

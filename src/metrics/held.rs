@@ -10,7 +10,8 @@
 
 use super::filter::{below_filter_limit, zero_phase_low_pass};
 use super::noise::{correlation_sum, held_noise_scale, noise_deviation, noise_gain, HeldEvery};
-use super::settling::{sideslip_scale, verdict, ChannelSettling, NoiseNull, Settling};
+use super::settling::ringing::ringing;
+use super::settling::{sideslip_scale, verdict, with_ringing, ChannelSettling, NoiseNull};
 use super::variance::total_variance;
 use super::{
     crossing_spread, divergence, filter_ringing, first_crossing, initial, normalise, peak, pulse,
@@ -342,13 +343,15 @@ fn metrics_of(
         .as_ref()
         .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
     // The sideslip's spread and noise on the scale of [`sideslip_scale`].
-    let settling = settling_of(t.len(), c, beta_n.as_ref(), low_pass);
+    let t_last = t[t.len() - 1];
+    let from = (t0, t_last - s.steady_window);
+    let settling = settling_of(t, from, c, beta_n.as_ref(), low_pass);
+    let [yaw_moving, ay_moving, beta_moving] = settling.windows_moving();
     let tb = match (peak_time, beta_steady) {
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,
     };
     let window = (times.onset, times.onset + s.variance_window);
-    let t_last = t[t.len() - 1];
     let e_r = total_variance(t, &d.values, &r.values, window.0, window.1);
     let e_ay =
         c.a.as_ref()
@@ -388,57 +391,40 @@ fn metrics_of(
         yaw_rate_peak_unmeasured: false,
         // Read on the raw record by `step_metrics_held`.
         steer_logged_late: None,
-        yaw_rate_window_moving: moving(settling.yaw_rate),
-        ay_window_moving: settling.ay.is_some_and(moving),
-        // A sideslip's window moves where it has not settled at all (a
-        // grip limit's slide drifts without slowing): its steady value is
-        // that window's mean either way.
-        beta_window_moving: settling
-            .beta
-            .is_some_and(|b| moving(b) || matches!(b, Settling::Drifting { .. })),
+        // One rule, the continuous metrics' too.
+        yaw_rate_window_moving: yaw_moving,
+        ay_window_moving: ay_moving,
+        beta_window_moving: beta_moving,
         total_variance_window_cut: (window.1 > t_last).then_some(t_last - window.0),
     }
 }
 
 /// The verdict on each channel of `c` (and the sideslip, `beta_n`) of a
-/// record of `n` samples, judged against its noise after `low_pass`.
+/// record at times `t`, judged against its noise after `low_pass`, and
+/// on whether it still swings at its steady window (`from`: time zero
+/// and the window's start; [`ringing`]).
 fn settling_of(
-    n: usize,
+    t: &[f64],
+    (t0, window): (f64, f64),
     c: &Channels,
     beta_n: Option<&Option<Normalised>>,
     low_pass: &LowPass,
 ) -> ChannelSettling {
-    let (every, gain) = (low_pass.every, low_pass.gain());
+    let (every, gain, n) = (low_pass.every, low_pass.gain(), t.len());
+    let judged = |x: &Normalised, to_scale: f64, held: usize| {
+        let noise = gain * x.noise;
+        let v = verdict(x, noise, to_scale, low_pass.null(held, n));
+        let ring = ringing(t, &x.values, t0, window, noise);
+        with_ringing(v, ring, to_scale, noise)
+    };
     ChannelSettling {
-        yaw_rate: verdict(
-            &c.r,
-            gain * c.r.noise,
-            1.0,
-            low_pass.null(every.yaw_rate, n),
-        ),
-        ay: c.a.as_ref().map(|a| {
-            let null = low_pass.null(every.ay, n);
-            verdict(a, gain * a.noise, 1.0, null)
-        }),
+        yaw_rate: judged(&c.r, 1.0, every.yaw_rate),
+        ay: c.a.as_ref().map(|a| judged(a, 1.0, every.ay)),
         beta: beta_n.and_then(|nb| nb.as_ref()).map(|nb| {
             let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, c.d.steady);
-            verdict(nb, gain * nb.noise, to_scale, low_pass.null(every.beta, n))
+            judged(nb, to_scale, every.beta)
         }),
     }
-}
-
-/// Whether a yaw rate judged `s` still moves in its steady window: spread
-/// beyond its noise, or drifting towards a steady value (one drifting
-/// without slowing is no steady state at all, marked so by the table).
-fn moving(s: Settling) -> bool {
-    matches!(
-        s,
-        Settling::NotSettled { .. }
-            | Settling::Drifting {
-                converging: true,
-                ..
-            }
-    )
 }
 
 /// How far the run's noise moves the yaw rate's and the lateral

@@ -49,7 +49,7 @@ pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
 use settling::{sideslip_scale, SETTLED_SPREAD};
 pub use settling::{
-    AyLimit, AyLimitSource, Ceiling, ChannelSettling, Settling,
+    AxlesGrip, AyLimit, AyLimitSource, Ceiling, ChannelSettling, Settling,
     FALSE_ALARM as SETTLING_FALSE_ALARM, JUDGED_NOISES,
 };
 

@@ -23,12 +23,17 @@
 use super::Normalised;
 use serde::{Deserialize, Serialize};
 
+mod grip;
 mod limit;
 mod null;
+pub(crate) mod ringing;
+mod trend;
+pub use grip::AxlesGrip;
 pub use limit::{AyLimit, AyLimitSource, Ceiling};
 use null::noise_alone;
 pub(super) use null::NoiseNull;
 pub use null::FALSE_ALARM;
+pub(super) use trend::{part_means, trend, trend_of_parts, Trend, TREND_PARTS};
 
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
@@ -90,6 +95,22 @@ pub enum Settling {
         /// Whether it heads above the window's mean (on the step's scale).
         rising: bool,
     },
+    /// A decaying oscillation still swings at the steady window by more
+    /// than [`SETTLED_SPREAD`] of the step ([`ringing`]): the window's mean
+    /// sits on a crest or a trough, whatever its spread.
+    Oscillating {
+        /// The swing left at the steady window (the envelope of its
+        /// extrema there), a share of the step (of the sideslip's scale).
+        amplitude: f64,
+        /// Its period, s.
+        period: f64,
+        /// Where the oscillation's centre lies from the window's mean, a
+        /// share of the step (of the sideslip's scale), above it where
+        /// positive on the step's scale.
+        centre: f64,
+        /// When its last extremum is, s on the record's clock.
+        last: f64,
+    },
     /// Its step is within [`JUDGED_NOISES`] of its noise: not judged.
     NotJudged {
         /// The step, in the channel's unit (rad/s, m/s², rad).
@@ -127,8 +148,14 @@ impl Settling {
 impl ChannelSettling {
     /// Whether no channel judged has failed to settle.
     pub fn settled(&self) -> bool {
-        let ok =
-            |s: &Settling| !matches!(s, Settling::NotSettled { .. } | Settling::Drifting { .. });
+        let ok = |s: &Settling| {
+            !matches!(
+                s,
+                Settling::NotSettled { .. }
+                    | Settling::Drifting { .. }
+                    | Settling::Oscillating { .. }
+            )
+        };
         ok(&self.yaw_rate) && self.ay.iter().all(ok) && self.beta.iter().all(ok)
     }
 
@@ -140,7 +167,8 @@ impl ChannelSettling {
         let mut most: Option<f64> = None;
         for (_, _, s) in self.named() {
             match s {
-                Settling::NotSettled { .. } => return None,
+                // A swing is no approach a trend carries on to.
+                Settling::NotSettled { .. } | Settling::Oscillating { .. } => return None,
                 Settling::Drifting {
                     converging: false, ..
                 } => return None,
@@ -164,6 +192,35 @@ impl ChannelSettling {
                 _ => None,
             })
             .reduce(f64::max)
+    }
+
+    /// Whether each channel's steady window still moves (the yaw rate's,
+    /// the lateral acceleration's, the sideslip's): spread beyond its
+    /// noise, swinging, or drifting towards a steady value (one drifting
+    /// without slowing is no steady state at all, marked so apart); a
+    /// sideslip's window also where it drifts without slowing (a grip
+    /// limit's slide: its steady value is that window's mean either way).
+    /// The one rule the sampled and the continuous metrics take their
+    /// `*_window_moving` flags from, so `simulate` and `metrics` of one
+    /// history mark alike.
+    pub(super) fn windows_moving(&self) -> [bool; 3] {
+        let moving = |s: Settling| {
+            matches!(
+                s,
+                Settling::NotSettled { .. }
+                    | Settling::Oscillating { .. }
+                    | Settling::Drifting {
+                        converging: true,
+                        ..
+                    }
+            )
+        };
+        [
+            moving(self.yaw_rate),
+            self.ay.is_some_and(moving),
+            self.beta
+                .is_some_and(|b| moving(b) || matches!(b, Settling::Drifting { .. })),
+        ]
     }
 
     /// Each channel with its name and unit.
@@ -192,6 +249,19 @@ impl ChannelSettling {
         gain: f64,
         ceiling: Option<&Ceiling>,
     ) -> Option<String> {
+        self.not_settled_warning_known(gain, ceiling, AxlesGrip::Unknown)
+    }
+
+    /// [`Self::not_settled_warning_within`] of a run that knows whether its
+    /// axles reach their tyres' peak (`axles`): a sideslip moving while
+    /// the yaw rate and lateral acceleration hold is said against it
+    /// ([`grip::words`]).
+    pub fn not_settled_warning_known(
+        &self,
+        gain: f64,
+        ceiling: Option<&Ceiling>,
+        axles: AxlesGrip,
+    ) -> Option<String> {
         let named = self.named();
         let failed: Vec<String> = named
             .iter()
@@ -215,7 +285,7 @@ impl ChannelSettling {
         ) && held(&self.yaw_rate)
             && self.ay.iter().all(held);
         let grip = match grip {
-            true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while the magnitude of its sideslip |β| grows",
+            true => grip::words(axles),
             false => "",
         };
         // The yaw rate's spread or trend, a share of its step, is how far
@@ -234,7 +304,11 @@ impl ChannelSettling {
             } => Some((converging.then_some(heads), false)),
             _ => None,
         };
-        let gain = off.map_or(String::new(), |(off, spread)| {
+        let centre = match self.yaw_rate {
+            Settling::Oscillating { centre, .. } => Some(centre),
+            _ => None,
+        };
+        let gain = off.map_or_else(|| ringing::gain_words(centre, gain), |(off, spread)| {
             let pc = |off: f64| crate::format::significant(100.0 * off, 2);
             let bound = match off {
                 Some(off) if spread => format!(
@@ -360,7 +434,39 @@ fn unsettled_words(name: &str, s: &Settling, ceiling: Option<&Ceiling>) -> Optio
                 )
             ),
         )),
+        Settling::Oscillating {
+            amplitude,
+            period,
+            centre,
+            last,
+        } => Some(ringing::words(name, *amplitude, *period, *centre, *last)),
         _ => None,
+    }
+}
+
+/// `v` where the channel does not still swing at its steady window, else
+/// [`Settling::Oscillating`]: `ring` (its oscillation, [`ringing`]) taken
+/// to `to_scale` times the step, judged with its noise after the filter
+/// `noise` (a share of the step). A channel not judged stays so.
+pub(super) fn with_ringing(
+    v: Settling,
+    ring: Option<ringing::Ringing>,
+    to_scale: f64,
+    noise: f64,
+) -> Settling {
+    match ring {
+        Some(r)
+            if !matches!(v, Settling::NotJudged { .. })
+                && ringing::swing_left(&r, to_scale, noise) >= SETTLED_SPREAD =>
+        {
+            Settling::Oscillating {
+                amplitude: r.amplitude * to_scale,
+                period: r.period,
+                centre: (r.centre - 1.0) * to_scale,
+                last: r.last,
+            }
+        }
+        _ => v,
     }
 }
 
@@ -464,115 +570,6 @@ fn approaching(trend: Option<Trend>, to_scale: f64) -> Settling {
         }
         _ => Settling::Settled,
     }
-}
-
-/// Where a steady window's trend heads, relative to the step.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Trend {
-    /// How far beyond the window's mean the trend heads (a share of the
-    /// step, ≥ 0).
-    pub heads: f64,
-    /// Whether it slows across the window.
-    pub converging: bool,
-    /// Whether it rises (on the step's scale: its limit above the
-    /// window's mean).
-    pub rising: bool,
-}
-
-/// The trend of the normalised response `x` (steady value 1 over the
-/// steady window) at times `t`, over [`TREND_PARTS`] equal parts of the
-/// span from `from` (a steady window before the steady window) to `to`
-/// (the record's end), `noise` the raw noise deviation relative to the
-/// step ([`trend_of_parts`]).
-pub(super) fn trend(t: &[f64], x: &[f64], from: f64, to: f64, noise: f64) -> Option<Trend> {
-    let (means, deviation) = part_means(t, x, (from, to), noise)?;
-    trend_of_parts(means, deviation)
-}
-
-/// The means of `x` over [`TREND_PARTS`] equal parts of [from, to] (times
-/// `t`), with the deviation of two parts' difference for a raw noise
-/// deviation `noise`; none where a part holds no sample.
-pub(super) fn part_means(
-    t: &[f64],
-    x: &[f64],
-    (from, to): (f64, f64),
-    noise: f64,
-) -> Option<([f64; TREND_PARTS], f64)> {
-    let part = (to - from) / TREND_PARTS as f64;
-    let mut sums = [(0.0, 0usize); TREND_PARTS];
-    for (ti, xi) in t.iter().zip(x) {
-        if *ti >= from && *ti <= to {
-            let k = (((ti - from) / part) as usize).min(TREND_PARTS - 1);
-            sums[k].0 += xi;
-            sums[k].1 += 1;
-        }
-    }
-    if sums.iter().any(|s| s.1 == 0) {
-        return None;
-    }
-    // A part's mean is uncertain by σ/√n; two parts' difference by √2 as much.
-    let fewest = sums.iter().map(|s| s.1).min().unwrap_or(1) as f64;
-    Some((
-        sums.map(|(s, n)| s / n as f64),
-        noise * (2.0 / fewest).sqrt(),
-    ))
-}
-
-/// The parts a trend is read over: sixths of the steady window and of the
-/// window before it.
-pub(super) const TREND_PARTS: usize = 12;
-
-/// The most a trend's slope may keep, across the two windows it is read
-/// over, and still be read as slowing: a slope that falls by less than a
-/// third there (thirds' ratio q above 0.935, a time constant over about
-/// five windows) is a drift the record cannot tell from a ramp, and a
-/// geometric limit extrapolated from it (d₂·q/(1 − q), fifteen thirds'
-/// changes and more) is no steady value the record bounds. A logged ramp's
-/// ratio read 0.9999 through the zero-phase filter's ends and was called
-/// settling.
-const SLOWED_BY: f64 = 2.0 / 3.0;
-
-/// Where the trend of a normalised response (steady value 1 over its
-/// steady window) heads, from the means of [`TREND_PARTS`] equal parts
-/// spanning the steady window and the window before it; `deviation` is
-/// the uncertainty of the difference of two parts' means (0 for a
-/// noise-free simulation, where a change below 10⁻⁶ of the step is
-/// rounding).
-///
-/// A trend is one only where every part moves the same way, each by more
-/// than three deviations, over both windows: a ringing response turns back
-/// within them (the spread's to judge), and noise turns a flat one back
-/// and forth. The steady window's thirds' means m₁, m₂, m₃ of a geometric
-/// approach x = L − c·qᵗ form a geometric sequence whose limit is
-/// L = m₃ + d₂·q/(1 − q), with d₁ = m₂ − m₁, d₂ = m₃ − m₂, q = d₂/d₁ < 1; a
-/// trend that does not slow (q ≥ 1, or q⁶ above [`SLOWED_BY`]) heads at
-/// least a window's change beyond its last third.
-pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Option<Trend> {
-    let significant = (3.0 * deviation).max(1e-6);
-    let rising = parts[1] > parts[0];
-    let moves = parts.windows(2).map(|w| w[1] - w[0]);
-    if moves
-        .into_iter()
-        .any(|d| (d > 0.0) != rising || d.abs() < significant)
-    {
-        return None;
-    }
-    let last = &parts[TREND_PARTS / 2..];
-    let [m1, m2, m3] = [0, 2, 4].map(|k| 0.5 * (last[k] + last[k + 1]));
-    let (d1, d2) = (m2 - m1, m3 - m2);
-    if d2.abs() >= d1.abs() || (d2 / d1).powi(TREND_PARTS as i32 / 2) > SLOWED_BY {
-        return Some(Trend {
-            heads: (m3 - 1.0).abs() + (m3 - m1).abs(),
-            converging: false,
-            rising,
-        });
-    }
-    let q = d2 / d1;
-    Some(Trend {
-        heads: (m3 + d2 * q / (1.0 - q) - 1.0).abs(),
-        converging: true,
-        rising,
-    })
 }
 
 #[cfg(test)]

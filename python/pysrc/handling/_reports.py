@@ -92,7 +92,10 @@ class StepMetrics:
     (``converging``) and whether it heads above the window's mean on the
     step's scale (``rising``: False for a sliding car's falling ``ay``),
     ``"approaching"`` (settled, its trend still heading ``heads`` beyond
-    the mean, ``rising`` as above), or ``"not_judged"`` where the
+    the mean, ``rising`` as above), ``"oscillating"`` (a decaying swing
+    still at the steady window: the ``amplitude`` left there and the
+    ``centre`` from the window's mean, shares of the step; its ``period``
+    and its ``last`` extremum's time, s), or ``"not_judged"`` where the
     channel's step is within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""

@@ -12,6 +12,7 @@
 
 use crate::io::Scenario;
 use crate::metrics::{AyLimit, Ceiling, StepMetrics};
+use crate::sim::TimeHistory;
 
 /// The ceiling of scenario `sc`'s lateral acceleration against its step's
 /// steady change `ay_steady` (m/s²).
@@ -30,8 +31,11 @@ pub(super) fn ceiling(sc: &Scenario, ay_steady: f64) -> Ceiling {
 }
 
 /// The metrics' settling warning ([`StepMetrics::settling_warning`]) with
-/// the lateral acceleration's trend bounded by scenario `sc`'s ceiling.
-pub(super) fn settling_warning(sc: &Scenario, m: &StepMetrics) -> Option<String> {
+/// the lateral acceleration's trend bounded by scenario `sc`'s ceiling,
+/// and a sideslip moving beside a settled yaw rate and lateral
+/// acceleration said against what the run `h` knows of its axles' peak
+/// ([`crate::metrics::AxlesGrip`]).
+pub(super) fn settling_warning(sc: &Scenario, h: &TimeHistory, m: &StepMetrics) -> Option<String> {
     let Some(ay) = m.ay_steady else {
         return m.settling_warning();
     };
@@ -40,9 +44,11 @@ pub(super) fn settling_warning(sc: &Scenario, m: &StepMetrics) -> Option<String>
         true => m
             .settling
             .approaching_warning_within(m.yaw_rate_gain, Some(&c)),
-        false => m
-            .settling
-            .not_settled_warning_within(m.yaw_rate_gain, Some(&c)),
+        false => m.settling.not_settled_warning_known(
+            m.yaw_rate_gain,
+            Some(&c),
+            super::own_peak::axles_grip(sc, h),
+        ),
     };
     // Nothing of its own to say where the metrics have (a spread the
     // channels do not name): theirs.

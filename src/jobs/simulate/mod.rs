@@ -11,6 +11,7 @@ pub(crate) mod critical;
 mod grid_peak;
 mod idle_effects;
 mod layout;
+mod lift_offs;
 mod limits;
 pub(crate) mod nominal_load;
 mod own_peak;
@@ -41,7 +42,7 @@ use crate::report::stale::{leftovers, Leftovers, OwnSet};
 use crate::report::{
     refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
 };
-use crate::sim::{LiftOff, Method, MethodName, Simulation, TimeHistory, Wheel};
+use crate::sim::{LiftOff, Method, MethodName, Simulation, TimeHistory};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -118,6 +119,10 @@ struct MetricsFile<'a> {
     notes: &'a [String],
     /// Where the metrics do not describe a handling response.
     warnings: &'a [String],
+    /// The metrics not read as the standards define them, and why: the
+    /// table's marks, as `metrics --json` carries them
+    /// ([`StepMetrics::marks`]).
+    marks: crate::metrics::Marks,
 }
 
 const FILES: [&str; 4] = ["history.csv", "metrics.json", "response.png", "gap.json"];
@@ -272,7 +277,7 @@ fn step_warnings(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) 
     // Where the lateral acceleration heads, bounded by what this car can
     // reach on this road.
     let mut warnings: Vec<String> = metrics
-        .and_then(|m| ay_ceiling::settling_warning(sc, m))
+        .and_then(|m| ay_ceiling::settling_warning(sc, h, m))
         .into_iter()
         .collect();
     // A `[metrics] filter_hz` slow enough to measure itself, said as
@@ -383,46 +388,6 @@ fn replayed_piece(c: &CleaningReport) -> Option<String> {
     ))
 }
 
-/// The wheels' lift-offs in words: a wheel off the ground once in one
-/// line with its interval; a wheel off and back many times (a diverging
-/// run on RK4 chatters on and off at each step) in one line with the
-/// count, the first start and the last end, not a line per interval.
-fn lift_off_lines(lift_offs: &[LiftOff]) -> Vec<String> {
-    let name = |w: Wheel| match w {
-        Wheel::FrontLeft => "front left",
-        Wheel::FrontRight => "front right",
-        Wheel::RearLeft => "rear left",
-        Wheel::RearRight => "rear right",
-    };
-    let wheels = [
-        Wheel::FrontLeft,
-        Wheel::FrontRight,
-        Wheel::RearLeft,
-        Wheel::RearRight,
-    ];
-    wheels
-        .into_iter()
-        .filter_map(|w| {
-            let of: Vec<&LiftOff> = lift_offs.iter().filter(|l| l.wheel == w).collect();
-            let (first, last) = (of.first()?, of.last()?);
-            Some(match of.len() {
-                1 => format!(
-                    "  wheel lift-off: {} off the ground from {:.3} s to {:.3} s",
-                    name(w),
-                    first.start,
-                    first.end
-                ),
-                n => format!(
-                    "  wheel lift-off: {} off the ground {n} times between {:.3} s and {:.3} s (history.csv has each row)",
-                    name(w),
-                    first.start,
-                    last.end
-                ),
-            })
-        })
-        .collect()
-}
-
 impl SimulateReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
@@ -438,7 +403,7 @@ impl SimulateReport {
         // The four loads always add up to the weight; a wheel at zero load
         // has lifted off, and the 2-DOF model then carries its axle on one
         // wheel.
-        out.extend(lift_off_lines(&self.lift_offs));
+        out.extend(lift_offs::lift_off_lines(&self.lift_offs));
         if let Some(r) = &self.replay {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
@@ -480,6 +445,7 @@ impl SimulateReport {
                 lift_offs: &self.lift_offs,
                 notes: &self.notes,
                 warnings: &self.warnings,
+                marks: m.marks(),
             };
             write_json(&files[1], &file)?;
         }

@@ -18,7 +18,7 @@
 
 use crate::io::Scenario;
 use crate::metrics::applicability::{KINEMATIC_GRIP, SLIDING_SIDESLIP};
-use crate::metrics::StepMetrics;
+use crate::metrics::{AxlesGrip, StepMetrics};
 use crate::sim::TimeHistory;
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use std::f64::consts::FRAC_PI_2;
@@ -195,6 +195,37 @@ fn lighter_wheel(sc: &Scenario, h: &TimeHistory, axle: usize, k: usize, loads: [
     }
 }
 
+/// Whether `axle` (0 front, 1 rear) is short of its own tyres' peak at
+/// its largest slip and at the run's end: an axle that slid on the way (a
+/// 0.3 rad step's front at 48° past its peak at 38°) leaves the car the
+/// slide the metrics say.
+fn short_of_peak(sc: &Scenario, h: &TimeHistory, axle: usize) -> bool {
+    let Some(last) = h.len().checked_sub(1) else {
+        return false;
+    };
+    let alpha = [&h.alpha_front, &h.alpha_rear][axle];
+    let largest = (0..alpha.len()).max_by(|&i, &j| alpha[i].abs().total_cmp(&alpha[j].abs()));
+    [Some(last), largest]
+        .into_iter()
+        .flatten()
+        .all(|k| matches!(on_curve(sc, h, axle, k).0, OnCurve::Short { .. }))
+}
+
+/// What the run knows of its axles against their own tyres' peak, for
+/// the settling words ([`AxlesGrip`]): both short of it
+/// ([`short_of_peak`]), or one at it or past it; not known where a tyre
+/// has no friction limit of its own (a linear tyre has no peak).
+pub(super) fn axles_grip(sc: &Scenario, h: &TimeHistory) -> AxlesGrip {
+    let mu = super::unlimited::static_friction(&sc.model, sc.integrator.friction);
+    if !mu.iter().all(|m| m.is_finite() && *m > 0.0) {
+        return AxlesGrip::Unknown;
+    }
+    match short_of_peak(sc, h, 0) && short_of_peak(sc, h, 1) {
+        true => AxlesGrip::BelowPeak,
+        false => AxlesGrip::AtPeak,
+    }
+}
+
 /// A step's steady sideslip beyond
 /// [`SLIDING_SIDESLIP`](crate::metrics::applicability::SLIDING_SIDESLIP)
 /// (10°) with both axles short of their own tyres' peaks at the run's last
@@ -215,17 +246,7 @@ pub(super) fn steady_sideslip(
         .filter(|b| b.abs() > SLIDING_SIDESLIP && b.abs() <= FRAC_PI_2)?;
     let share = m.ay_steady?.abs() / grip?;
     let last = h.len().checked_sub(1)?;
-    // Short at the end and at its largest slip: an axle that slid on the
-    // way (a 0.3 rad step's front at 48° past its peak at 38°) leaves the
-    // car the slide the metrics say.
-    let short = |axle: usize| {
-        let alpha = [&h.alpha_front, &h.alpha_rear][axle];
-        let largest = (0..alpha.len()).max_by(|&i, &j| alpha[i].abs().total_cmp(&alpha[j].abs()));
-        [Some(last), largest]
-            .into_iter()
-            .flatten()
-            .all(|k| matches!(on_curve(sc, h, axle, k).0, OnCurve::Short { .. }))
-    };
+    let short = |axle: usize| short_of_peak(sc, h, axle);
     if share < KINEMATIC_GRIP || !short(0) || !short(1) {
         return None;
     }

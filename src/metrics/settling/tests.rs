@@ -271,3 +271,40 @@ fn an_approach_slower_than_the_windows_can_see_is_no_converging_trend() {
     let slow = approach(30.0);
     assert!(!slow.converging && slow.rising, "{slow:?}");
 }
+
+/// A sideslip spreading beside a settled yaw rate and ay: the grip
+/// limit is no explanation where the run knows its axles stay short
+/// of their peak, a possibility where it does not know, and said as
+/// the run's where an axle reaches its peak.
+#[test]
+fn the_grip_limit_is_said_only_as_far_as_the_run_knows_it() {
+    let c = ChannelSettling {
+        yaw_rate: Settling::Settled,
+        ay: Some(Settling::Settled),
+        beta: Some(Settling::NotSettled { beyond: 0.024 }),
+    };
+    let said = |a| c.not_settled_warning_known(2.4, None, a).unwrap();
+    let below = said(AxlesGrip::BelowPeak);
+    assert!(!below.contains("at its grip limit"), "{below}");
+    assert!(below.contains("no slide at the grip limit"), "{below}");
+    assert!(said(AxlesGrip::Unknown).contains("a possibility this record"));
+    assert!(said(AxlesGrip::AtPeak).contains("an axle here reaches its tyres' peak"));
+    // Where the yaw rate swings too, no grip words at all.
+    let swinging = ChannelSettling {
+        yaw_rate: Settling::Oscillating {
+            amplitude: 0.04,
+            period: 3.7,
+            centre: -0.03,
+            last: 5.25,
+        },
+        ..c
+    };
+    let w = swinging
+        .not_settled_warning_known(2.434, None, AxlesGrip::Unknown)
+        .unwrap();
+    assert!(!w.contains("grip limit"), "{w}");
+    assert!(
+        w.contains("the oscillation's centre is about 2.361 1/s"),
+        "{w}"
+    );
+}

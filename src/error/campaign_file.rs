@@ -38,6 +38,9 @@ pub enum CampaignFileProblem {
     /// Some or all runs with a steer far larger than their yaw rate.
     #[error(transparent)]
     SteerInDegreesRuns(super::SteerInDegreesRuns),
+    /// Runs whose yaw rate `degrees = ["yaw_rate"]` reads 57× small.
+    #[error(transparent)]
+    YawDeclaredRuns(super::YawDeclaredRuns),
     /// A file of another kind given as the campaign.
     #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(kind))]
     NotACampaign {

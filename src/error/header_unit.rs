@@ -8,7 +8,9 @@
 //! ([`DeclaredBy`]). Renaming alone would keep the values in their unit
 //! and read them as SI. Factors: 1° = π/180 rad, 1 km/h = 1/3.6 m/s,
 //! 1 mph = 0.44704 m/s, g = 9.80665 m/s² (standard gravity, CGPM 1901),
-//! 1 lbf = 4.44822 N, 1 psi = 6894.76 Pa.
+//! 1 lbf = 4.44822 N, 1 psi = 6894.76 Pa. A yaw rate in deg/s is advised
+//! the same way, except a campaign's run among runs in rad/s, converted in
+//! its own file (÷ 57.2958: [`YawAdvice`]).
 
 use thiserror::Error;
 
@@ -54,6 +56,68 @@ impl DeclaredBy {
                 format!("`degrees = [\"{column}\"]` under [manoeuvre] in the scenario")
             }
         }
+    }
+}
+
+/// How a `column` in degrees (deg/s) is declared to the reader that read
+/// it (`by`): its own key only (a replay's refusal named `metrics
+/// --degrees` and a campaign's `[runs]`, which a scenario has not).
+pub(super) fn declare(column: &str, by: DeclaredBy) -> String {
+    format!("declare it so: {}", by.declaration(column))
+}
+
+/// What a refusal of a yaw rate in deg/s advises ([`super::UnitSlip::YawRate`],
+/// [`super::UnitSlip::YawRateInDegPerS`]): the run read alone, or with
+/// runs whose yaw rate is in deg/s too, declares the column with its
+/// reader's key; a campaign's run among runs that read in rad/s is
+/// converted in its own file, as `degrees` under [runs] converts every
+/// run's (a campaign has no per-run unit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum YawAdvice {
+    /// Convert the column, or declare it in degrees by this key.
+    Declare(DeclaredBy),
+    /// Convert this run's file: other runs of its campaign read in rad/s.
+    OwnFile(RunsInRadians),
+}
+
+/// A campaign's runs as a refusal of one run's yaw rate in deg/s counts
+/// them ([`YawAdvice::OwnFile`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RunsInRadians {
+    /// The runs refused for a yaw rate in deg/s, this one among them.
+    pub in_degrees: usize,
+    /// The runs whose yaw rate, judged against their steer by a neutral
+    /// car's r = u·δ/l, reads in rad/s.
+    pub radians: usize,
+    /// The campaign's run files.
+    pub of: usize,
+}
+
+impl YawAdvice {
+    /// The advice after "is the column in deg/s?": `convert` (as the
+    /// refusal words it) or declare it; or, in a campaign whose other runs
+    /// read in rad/s, convert this run's file.
+    pub(super) fn words(self, convert: &str) -> String {
+        let r = match self {
+            YawAdvice::Declare(by) => return format!("{convert}, or {}", declare("yaw_rate", by)),
+            YawAdvice::OwnFile(r) => r,
+        };
+        let these = match r.in_degrees {
+            1 => "this run alone logs it so".to_string(),
+            n => format!(
+                "{n} of the campaign's {} runs log it so, this one among them",
+                r.of
+            ),
+        };
+        // A campaign advised so has other runs: "runs" is plural.
+        let (verb, whose) = match r.radians {
+            1 => ("reads", "its"),
+            _ => ("read", "their"),
+        };
+        format!(
+            "{these}, where {} of the campaign's {} runs {verb} {whose} yaw rate in rad/s, judged against {whose} steer by a neutral car's r = u·δ/l: a campaign has no per-run unit (`degrees = [\"yaw_rate\"]` under [runs] would convert every run's yaw rate, those in rad/s too): convert this run's `yaw_rate` to rad/s in its file (÷ 57.2958), or leave the run out of the campaign",
+            r.radians, r.of,
+        )
     }
 }
 

@@ -85,7 +85,9 @@ pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
 pub use foreign_format::ForeignFormat;
-pub use header_unit::{DeclaredBy, HeaderUnit, Quantity, Stated, Unit, UnitAdvice};
+pub use header_unit::{
+    DeclaredBy, HeaderUnit, Quantity, RunsInRadians, Stated, Unit, UnitAdvice, YawAdvice,
+};
 pub use held_turn::{HeldTurn, HeldValue};
 pub use hold_rule::{HoldAgainstRule, HoldRule};
 pub(crate) use input::one_column_separator;
@@ -125,7 +127,7 @@ pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};
 pub use stall::{AskedTurn, StallCause, TurnLimit, LARGE_STEER, NEAR_CRITICAL_GAIN};
 pub use steady::NoSteadyState;
-pub use steer_runs::{OtherRun, SteerInDegreesRuns};
+pub use steer_runs::{OtherRun, SteerInDegreesRuns, YawDeclaredRuns};
 pub use stiffness_unit::{
     argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
     MOST_LOAD_STIFFNESS,

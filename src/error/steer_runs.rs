@@ -6,14 +6,15 @@
 //! every other run is accounted for by name (a swept steer judged by its
 //! lagged yaw rate, a steer neither held nor swept, a run refused before
 //! its steer was judged): "1 of the 8 runs … 6 runs do not" once left the
-//! eighth unsaid.
+//! eighth unsaid. Runs whose yaw rate a `degrees = ["yaw_rate"]` makes
+//! 57× small are refused at that entry instead ([`YawDeclaredRuns`]).
 
 use crate::format::readable;
 
 /// Runs whose yaw rate is far smaller than a neutral car's for their
 /// steer (a steer in degrees or a steering-wheel angle), of a campaign.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}", format!("{} of the {} runs", self.runs.len(), self.of), self.runs.iter().map(|(run, m)| format!("{run} ({}× smaller, median r·l/(u·δ) = {})", readable(1.0 / m, 2), readable(*m, 3))).collect::<Vec<_>>().join(", "), self.advice())]
+#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}", format!("{} of the {} runs", self.runs.len(), self.of), runs_said(&self.runs), self.advice())]
 pub struct SteerInDegreesRuns {
     /// Each run that reads so (its file) and its median r·l/(u·δ).
     pub runs: Vec<(String, f64)>,
@@ -79,42 +80,132 @@ impl SteerInDegreesRuns {
         }
         let held =
             (self.radians > 0).then(|| held_in_radians(&self.radians.to_string(), self.radians));
-        let said: Vec<String> = held.into_iter().chain(self.others()).collect();
+        let said: Vec<String> = held.into_iter().chain(others_said(&self.others)).collect();
         format!("{other}: {}. {fix}", said.join("; "))
     }
+}
 
-    /// The other runs by name, by what their steer was judged by.
-    fn others(&self) -> Vec<String> {
-        let group = |kind: OtherRun, one: &str, many: &str| {
-            let names: Vec<&str> = self
-                .others
+/// Runs by name, grouped by what their steer was judged by ([`OtherRun`]).
+fn others_said(others: &[(String, OtherRun)]) -> Vec<String> {
+    let group = |kind: OtherRun, one: &str, many: &str| {
+        let names: Vec<&str> = others
+            .iter()
+            .filter(|(_, k)| *k == kind)
+            .map(|(n, _)| n.as_str())
+            .collect();
+        let verb = if names.len() == 1 { one } else { many };
+        (!names.is_empty()).then(|| format!("{} {verb}", names.join(", ")))
+    };
+    [
+        group(
+            OtherRun::Swept,
+            "reads in radians by its swept steer against the lagged yaw rate",
+            "read in radians by their swept steer against the lagged yaw rate",
+        ),
+        group(
+            OtherRun::Unjudged,
+            "holds no held or swept steer to judge its unit by",
+            "hold no held or swept steer to judge their unit by",
+        ),
+        group(
+            OtherRun::Refused,
+            "was refused for another reason before its steer was judged",
+            "were refused for other reasons before their steer was judged",
+        ),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// The runs of a campaign that `degrees = ["yaw_rate"]` under [runs]
+/// reads 57× small: their yaw rate, in rad/s as `FORMATS.md` asks, read
+/// as deg/s is far smaller than a neutral car's for their steer. Refused
+/// at that `degrees` entry, which is what to mend: the runs' own refusal
+/// asked whether `steer` was in degrees (round 48). The runs that read
+/// right so log the yaw rate in deg/s, and are named to convert in their
+/// files (a campaign has no per-run unit).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("`degrees` under [runs] declares `yaw_rate` in deg/s for every run, and so read the yaw rate is far too small in {} of the {} runs: {}, as a yaw rate in rad/s read as deg/s is 57× smaller: {} in rad/s, as FORMATS.md asks. {}", self.runs.len() + self.by_ay.len(), self.of, self.said(), if self.runs.len() + self.by_ay.len() == 1 { "that run logs it" } else { "those runs log it" }, self.advice())]
+pub struct YawDeclaredRuns {
+    /// Each run that reads so (its file) and its median r·l/(u·δ).
+    pub runs: Vec<(String, f64)>,
+    /// Each run whose yaw rate reads far smaller than `ay` over its speed
+    /// (its file) and its ay/(speed·yaw_rate).
+    pub by_ay: Vec<(String, f64)>,
+    /// The campaign's run files.
+    pub of: usize,
+    /// The runs whose yaw rate, converted, reads right against their
+    /// steer (held or swept): in deg/s in their files.
+    pub right: Vec<String>,
+    /// The campaign's other runs, their steer not judged ([`OtherRun`]).
+    pub others: Vec<(String, OtherRun)>,
+}
+
+/// Runs with their median r·l/(u·δ), as both refusals list them.
+fn runs_said(runs: &[(String, f64)]) -> String {
+    runs.iter()
+        .map(|(run, m)| {
+            format!(
+                "{run} ({}× smaller, median r·l/(u·δ) = {})",
+                readable(1.0 / m, 2),
+                readable(*m, 3)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl YawDeclaredRuns {
+    /// The runs that read so, by what judged them: their steer, their `ay`.
+    fn said(&self) -> String {
+        let steer = (!self.runs.is_empty()).then(|| {
+            format!(
+                "far smaller than a neutral car's for the steer in {}",
+                runs_said(&self.runs)
+            )
+        });
+        let ay = (!self.by_ay.is_empty()).then(|| {
+            let each: Vec<String> = self
+                .by_ay
                 .iter()
-                .filter(|(_, k)| *k == kind)
-                .map(|(n, _)| n.as_str())
+                .map(|(run, m)| format!("{run} (ay/(speed·yaw_rate) = {})", readable(*m, 3)))
                 .collect();
-            let verb = if names.len() == 1 { one } else { many };
-            (!names.is_empty()).then(|| format!("{} {verb}", names.join(", ")))
+            format!(
+                "far smaller than `ay` over the speed, where a car's lateral acceleration is about speed × yaw_rate, in {}",
+                each.join(", ")
+            )
+        });
+        [steer, ay]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+
+    /// What to do: leave `yaw_rate` out of `degrees`; the runs that read
+    /// right only so converted in their files; the runs not judged named.
+    fn advice(&self) -> String {
+        let out = "take \"yaw_rate\" out of `degrees` under [runs]";
+        let unjudged = others_said(&self.others);
+        let unjudged = match unjudged.is_empty() {
+            true => String::new(),
+            false => format!(" ({})", unjudged.join("; ")),
         };
-        [
-            group(
-                OtherRun::Swept,
-                "reads in radians by its swept steer against the lagged yaw rate",
-                "read in radians by their swept steer against the lagged yaw rate",
+        match self.right.len() {
+            0 => format!("{out}{unjudged}"),
+            n => format!(
+                "{} {} right so, by {} steer against {} yaw rate: {} {} in deg/s, and a campaign has no per-run unit: {out} and convert the yaw rate of {} to rad/s in {} (÷ 57.2958){unjudged}",
+                self.right.join(", "),
+                if n == 1 { "reads" } else { "read" },
+                if n == 1 { "its" } else { "their" },
+                if n == 1 { "its" } else { "their" },
+                if n == 1 { "it" } else { "they" },
+                if n == 1 { "logs it" } else { "log it" },
+                self.right.join(", "),
+                if n == 1 { "its file" } else { "their files" },
             ),
-            group(
-                OtherRun::Unjudged,
-                "holds no held or swept steer to judge its unit by",
-                "hold no held or swept steer to judge their unit by",
-            ),
-            group(
-                OtherRun::Refused,
-                "was refused for another reason before its steer was judged",
-                "were refused for other reasons before their steer was judged",
-            ),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+        }
     }
 }
 

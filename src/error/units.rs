@@ -10,12 +10,8 @@ use super::number::Num;
 use crate::format::{fixed, plural, significant};
 use thiserror::Error;
 
-/// How a `column` in degrees (deg/s) is declared to the reader that read
-/// it (`by`): its own key only (a replay's refusal named `metrics
-/// --degrees` and a campaign's `[runs]`, which a scenario has not).
-pub(super) fn declare(column: &str, by: super::DeclaredBy) -> String {
-    format!("declare it so: {}", by.declaration(column))
-}
+/// How a `column` in degrees is declared ([`super::header_unit`]).
+pub(super) use super::header_unit::declare;
 
 /// A column whose values are in another unit than `FORMATS.md`'s.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
@@ -23,7 +19,7 @@ pub(super) fn declare(column: &str, by: super::DeclaredBy) -> String {
 pub enum UnitSlip {
     /// A yaw rate beyond what any car reaches, over more than 1 % of the
     /// run (a spike alone is repaired later).
-    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3, or {}", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3), declare("yaw_rate", *by))]
+    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? {}", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3), by.words("divide it by 57.3"))]
     YawRate {
         /// The first yaw rate beyond the limit, as read.
         value: f64,
@@ -31,8 +27,9 @@ pub enum UnitSlip {
         p99: f64,
         /// The largest yaw rate accepted, rad/s.
         limit: f64,
-        /// Where the reader takes the column in degrees.
-        by: super::DeclaredBy,
+        /// What to do: declare the column in degrees (where the reader
+        /// takes it so), or convert this run's file.
+        by: super::YawAdvice,
     },
     /// A lateral acceleration beyond what any car reaches, over more than
     /// 1 % of the run.
@@ -174,7 +171,7 @@ pub enum UnitSlip {
     },
     /// A yaw rate whose speed × yaw rate is 57 times the lateral
     /// acceleration: in deg/s, below the size check's limit.
-    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? Convert it, or {}", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning), declare("yaw_rate", *by))]
+    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? {}", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning), by.words("Convert it"))]
     YawRateInDegPerS {
         /// The yaw rate at the first turning sample, as read.
         value: f64,
@@ -184,8 +181,9 @@ pub enum UnitSlip {
         samples: usize,
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
-        /// Where the reader takes the column in degrees.
-        by: super::DeclaredBy,
+        /// What to do: declare the column in degrees (where the reader
+        /// takes it so), or convert this run's file.
+        by: super::YawAdvice,
     },
     /// A yaw rate 57 times too small against `ay`: declared in deg/s while
     /// in rad/s.

@@ -80,12 +80,20 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
     let taken = take_sweeps(path, &mut c, fz, &mut errors)?;
     errors.extend(sample_errors(path, &c, &taken));
     refuse_all(path, errors)?;
-    check_units(path, &c, &taken)?;
-    check_shapes(path, &c, &taken)?;
-    let pressure = match c.take_optional("pressure") {
-        Some(p) => Some(checked_pressure(path, &c, p)?),
-        None => None,
+    // The pressure's unit is judged on its own cells, apart from the
+    // loads' and forces': a file with loads in kN and pressures in bar
+    // is refused for both at once, not mended and rerun to hear of the
+    // second (round 48).
+    let pressure = c.take_optional("pressure");
+    let (pressure, pressure_slip) = match pressure.map(|p| checked_pressure(path, &c, p)) {
+        Some(Err(e)) => (None, Some(e)),
+        p => (p.and_then(Result::ok), None),
     };
+    let units = check_units(path, &c, &taken).and_then(|()| check_shapes(path, &c, &taken));
+    refuse_all(
+        path,
+        [units.err(), pressure_slip].into_iter().flatten().collect(),
+    )?;
     let Taken {
         fz,
         lateral,

@@ -6,7 +6,7 @@
 //! median time step.
 
 use super::columns::Columns;
-use crate::error::{DeclaredBy, InputError, SpeedUnit, UnitSlip};
+use crate::error::{DeclaredBy, InputError, SpeedUnit, UnitSlip, YawAdvice};
 use crate::measured::clean::{median, quantile};
 use std::path::Path;
 
@@ -118,7 +118,7 @@ pub(super) fn check_yaw_rate(
                 value: r[i],
                 p99,
                 limit: MAX_YAW_RATE,
-                by,
+                by: YawAdvice::Declare(by),
             }
             .into(),
         )),
@@ -234,7 +234,7 @@ impl RatioBands {
                 median: m,
                 samples,
                 turning: TURNING,
-                by,
+                by: YawAdvice::Declare(by),
             };
             return ("yaw_rate", slip);
         }

@@ -988,3 +988,4 @@ mod trips_s112_metrics47;
 mod trips_s112_perfdiag46;
 mod trips_s112_perfstep46;
 mod trips_s113_settle48;
+mod trips_s113_units48;

@@ -36,10 +36,12 @@ mod few_runs;
 mod glob;
 mod kind;
 mod levelled;
+mod pieces;
 mod rig_model;
 mod run_checks;
 mod runs;
 pub(crate) mod swept;
+mod yaw_unit;
 
 use super::paths::beside;
 use super::rig::read_rig;
@@ -60,6 +62,7 @@ use crate::error::{
     named, BeyondSignal, CampaignReason, GivenTyres, InputError, InputProblem, Limit, NameKind,
     OptionsError, ParamError, ParamReason, TyreSourceError,
 };
+use crate::io::AngleColumn;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::vehicle::Vehicle;
 use run_checks::file_error;
@@ -117,6 +120,19 @@ struct CampaignFile {
     sensors: SensorPositions,
 }
 
+/// A refusal of what a `degrees` entry declares (`declared`), at that
+/// entry of the campaign file.
+fn degrees_entry<'a>(
+    src: &'a TomlSource,
+    declared: &'a [AngleColumn],
+) -> impl Fn(AngleColumn, InputProblem) -> InputError + 'a {
+    move |column, problem| {
+        let k = declared.iter().position(|c| *c == column);
+        let key = k.map_or("runs.degrees".into(), |k| format!("runs.degrees[{k}]"));
+        src.located(src.key_span(&key), problem)
+    }
+}
+
 /// Loads a campaign from a TOML file or a folder.
 pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let folder = path.is_dir();
@@ -150,13 +166,14 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let declared = f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]);
     degrees::check_declared(&src, declared, &files)?;
     let copied = |first, second| runs::refuse_copy(&src, f.runs.as_ref(), &files, (first, second));
+    let at_degrees = degrees_entry(&src, declared);
     let (runs, mut notes, cleaning, calibration, top_speeds) = read_runs(
         &files,
         (f.runs.as_ref().and_then(|r| r.segment), declared),
         f.diagnose.min_speed,
         f.vehicle.wheelbase(),
         &mut inputs,
-        &copied,
+        (&copied, &at_degrees),
     )?;
     notes.splice(0..0, folder_notes);
     let unread = src.unread_vehicle_keys().into_iter().map(|u| u.note());

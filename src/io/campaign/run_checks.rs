@@ -53,6 +53,10 @@ pub(super) struct SteerInDegrees {
     pub own: InputError,
 }
 
+/// The runs whose held steer reads in radians (their files), and the
+/// others not in degrees with what judged them ([`OtherRun`]).
+pub(super) type Judged = (Vec<String>, Vec<(String, OtherRun)>);
+
 /// A declared angle column a run lacks, with its refusal were no run to
 /// have it.
 type Lacking = Vec<(AngleColumn, InputError)>;
@@ -87,7 +91,10 @@ pub(super) fn checked_run(
     let declared = ctx.degrees.contains(&AngleColumn::Steer);
     // Where other runs read in radians, `degrees` under [runs] is the
     // wrong advice for a run in degrees: the campaign decides its words.
-    let in_degrees = match ctx.files.len() > 1 && !declared {
+    // So too where `degrees` declares the yaw rate, which then reads 57×
+    // small: the campaign refuses that entry (`yaw_unit.rs`).
+    let yaw_declared = ctx.degrees.contains(&AngleColumn::YawRate);
+    let in_degrees = match (ctx.files.len() > 1 || yaw_declared) && !declared {
         true => steer_in_degrees(&run, wheelbase, min_speed),
         false => None,
     };
@@ -131,9 +138,10 @@ pub(super) fn checked_run(
 pub(super) fn in_degrees_refusal(
     mut refused: Vec<(usize, InputError)>,
     in_degrees: Vec<(usize, Box<SteerInDegrees>)>,
-    (judged_radians, others): (usize, Vec<(String, OtherRun)>),
+    (judged_radians, others): (Vec<String>, Vec<(String, OtherRun)>),
     of: usize,
 ) -> (Vec<InputError>, usize) {
+    let judged_radians = judged_radians.len();
     let runs = refused.len() + in_degrees.len();
     match (in_degrees.first(), judged_radians) {
         (None, _) => {}

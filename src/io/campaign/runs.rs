@@ -6,17 +6,16 @@
 //! ([`crate::measured::clean`]), cut into segments if asked, `ay` levelled
 //! by a logged roll ([`super::levelled`]). Units: SI, rad.
 
+use super::pieces::{pieces_note, top_speeds, uncut_note, Cutting};
 use super::run_checks::{
-    checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal, SteerInDegrees,
+    checked_run, file_error, in_degrees_refusal, Judged, RunContext, RunRefusal, SteerInDegrees,
 };
 use crate::error::{CampaignFileProblem, InputError, InputProblem, OtherRun, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
 use crate::io::AngleColumn;
 use crate::measured::calibration::{calibrate, CalibrationReport};
-use crate::measured::clean::{
-    clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece,
-};
+use crate::measured::clean::{clean_run, CleanSettings, CleaningReport};
 use crate::measured::MeasuredRun;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -251,10 +250,6 @@ fn file_refusal(
     }
 }
 
-/// The runs whose held steer reads in radians, and the others not in
-/// degrees with what judged them ([`OtherRun`]).
-type Judged = (usize, Vec<(String, OtherRun)>);
-
 /// Counting a run in [`Judged`].
 trait Taken {
     /// Run file `p` judged as `other` (`None`: its held steer, radians).
@@ -264,7 +259,7 @@ trait Taken {
 impl Taken for Judged {
     fn taken(&mut self, p: &Path, other: Option<OtherRun>) {
         match other {
-            None => self.0 += 1,
+            None => self.0.push(p.display().to_string()),
             Some(o) => self.1.push((p.display().to_string(), o)),
         }
     }
@@ -286,20 +281,25 @@ fn file_lacking(
     }
 }
 
+/// How a refusal is placed in the campaign file: a run whose samples an
+/// earlier one holds, by `copied(earlier, run)` ([`refuse_copy`]); a
+/// problem of what a `degrees` entry declares, at that entry.
+pub(super) type Placed<'a> = (
+    &'a dyn Fn(usize, usize) -> InputError,
+    &'a dyn Fn(AngleColumn, InputProblem) -> InputError,
+);
+
 /// Reads, checks, calibrates and cleans every run, cut into segments if
-/// asked; a run whose samples an earlier one holds is refused by
-/// `copied(earlier, run)` ([`refuse_copy`]).
+/// asked; refusals placed in the campaign file by `placed` ([`Placed`]).
 pub(super) fn read_runs(
     files: &[PathBuf],
     (segment, degrees): (Option<f64>, &[AngleColumn]),
     min_speed: f64,
     wheelbase: f64,
     inputs: &mut Vec<PathBuf>,
-    copied: &dyn Fn(usize, usize) -> InputError,
+    (copied, at_degrees): Placed,
 ) -> Result<ReadRuns, InputError> {
-    let mut raw = Vec::new();
-    let mut runs = Vec::new();
-    let mut notes = Vec::new();
+    let (mut raw, mut runs, mut notes) = (Vec::new(), Vec::new(), Vec::new());
     let clean = CleanSettings::diagnosis(min_speed);
     let mut cleaning = CleaningReport::new(min_speed);
     // A declared column some files lack (a sideslip sensor on some runs)
@@ -310,7 +310,7 @@ pub(super) fn read_runs(
     // Every run is checked before any is refused: a campaign of eight runs
     // with three bad ones is mended in one pass, not three.
     let (mut refused, mut in_degrees) = (Vec::new(), Vec::new());
-    let mut judged: Judged = (0, Vec::new());
+    let mut judged: Judged = (Vec::new(), Vec::new());
     let ctx = RunContext {
         files,
         degrees,
@@ -354,7 +354,8 @@ pub(super) fn read_runs(
             }
         }
     }
-    let (refused, count) = all_refused(refused, (in_degrees, judged), files.len(), &raw);
+    let declared = (degrees, at_degrees);
+    let (refused, count) = all_refused(refused, (in_degrees, judged), declared, files.len(), &raw);
     let passed = raw.iter().map(|r| r.path.display().to_string()).collect();
     if let Some(e) = InputError::runs_refused(refused, (count, files.len()), passed) {
         return Err(e);
@@ -377,12 +378,27 @@ pub(super) fn read_runs(
 /// yet: that check needs the base model fitted to every run, and a second
 /// sign slip was heard only once the first was mended (round 39).
 fn all_refused(
-    refused: Vec<(usize, InputError)>,
+    mut refused: Vec<(usize, InputError)>,
     (in_degrees, judged): (Vec<(usize, Box<SteerInDegrees>)>, Judged),
+    (degrees, at_degrees): (
+        &[AngleColumn],
+        &dyn Fn(AngleColumn, InputProblem) -> InputError,
+    ),
     of: usize,
     raw: &[MeasuredRun],
 ) -> (Vec<InputError>, usize) {
-    let (mut refused, count) = in_degrees_refusal(refused, in_degrees, judged, of);
+    // A yaw rate in deg/s among runs in rad/s, and runs a declared
+    // `yaw_rate` reads 57× small: `yaw_unit.rs`.
+    super::yaw_unit::own_file_advice(&mut refused, &judged, degrees, of);
+    let runs = refused.len() + in_degrees.len();
+    let in_degrees = super::yaw_unit::declared_refusal(
+        in_degrees,
+        (&judged, &mut refused),
+        (degrees, at_degrees),
+        of,
+    );
+    let (mut refused, _) = in_degrees_refusal(refused, in_degrees, judged, of);
+    let count = runs;
     if refused.iter().any(sign_refused) {
         refused.extend(beta_unchecked(raw));
     }
@@ -416,66 +432,6 @@ fn beta_unchecked(raw: &[MeasuredRun]) -> Option<InputError> {
     Some(file_error(&first.path, problem))
 }
 
-/// The pieces cut into segments so far: the longest (s, said when none
-/// was cut) and whether any was.
-#[derive(Default)]
-struct Cutting {
-    longest: f64,
-    was_cut: bool,
-}
-
-impl Cutting {
-    /// `piece` cut into segments of `seg` s, appended to `runs`, the kept
-    /// ones listed in `cleaning`'s pieces.
-    fn cut(
-        &mut self,
-        piece: MeasuredRun,
-        seg: f64,
-        cleaning: &mut CleaningReport,
-        runs: &mut Vec<MeasuredRun>,
-    ) {
-        self.longest = self.longest.max(piece.t[piece.t.len() - 1] - piece.t[0]);
-        let cut = segments(piece, seg);
-        self.was_cut |= cut.len() > 1;
-        cleaning.pieces.extend(cut.iter().filter_map(Piece::kept));
-        runs.extend(cut);
-    }
-}
-
-/// The note on what cleaning run `name` left to replay (`cleaning`'s
-/// glitches from `listed` and pieces from `kept` on are the run's): none,
-/// or its time gaps and pieces where it is not one piece whole.
-fn pieces_note(
-    name: &str,
-    cleaning: &CleaningReport,
-    (listed, kept): (usize, usize),
-    min_speed: f64,
-) -> Option<String> {
-    let gaps: Vec<String> = cleaning.glitches[listed..]
-        .iter()
-        .filter(|g| g.kind == GlitchKind::TimeGap)
-        .map(|g| format!("{:.3}–{:.3} s", g.t, g.t + g.value))
-        .collect();
-    let pieces = cleaning.pieces.len() - kept;
-    if pieces == 0 {
-        return Some(format!(
-            "{name}: nothing left to replay (every sample below min_speed = {min_speed} m/s, or in pieces too short)"
-        ));
-    }
-    if gaps.is_empty() && pieces == 1 {
-        return None;
-    }
-    let gaps = if gaps.is_empty() {
-        String::new()
-    } else {
-        format!("time gaps at {}; ", gaps.join(", "))
-    };
-    Some(match pieces {
-        1 => format!("{name}: {gaps}one piece left to replay"),
-        k => format!("{name}: {gaps}split into {k} pieces replayed separately"),
-    })
-}
-
 /// The notes on a column declared in degrees that some of the `files`
 /// runs lack (with the files); the refusal of those that all of them lack,
 /// every such column in one (refused one at a time, `degrees = ["roll",
@@ -505,31 +461,11 @@ fn absent_notes(
     }
 }
 
-/// Each raw run's file and top speed, m/s.
-fn top_speeds(raw: &[MeasuredRun]) -> Vec<(String, f64)> {
-    raw.iter()
-        .map(|r| {
-            let top = r.speed.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            (r.path.display().to_string(), top)
-        })
-        .collect()
-}
-
-/// The note of a `segment` (s) that cut no piece, the `longest` lasting
-/// less than one and a half segments: asked for and silently without
-/// effect, a segment of 1e9 s read as if it had cut the logs.
-fn uncut_note(segment: f64, longest: f64) -> String {
-    format!(
-        "segment = {} s under [runs] cut nothing: the longest piece lasts {} s, less than one and a half segments, so every piece is replayed whole",
-        crate::error::Num(segment),
-        crate::format::fixed(longest, 1)
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::run_checks::steer_against_yaw;
     use super::*;
+    use crate::measured::clean::segments;
 
     fn run(t: Vec<f64>) -> MeasuredRun {
         let n = t.len();

@@ -85,7 +85,14 @@ fn column_named(name: &str, checked: &[&str], known: &[&str]) -> Option<(&'stati
     // (`steering_angle` may be the handwheel's: a did-you-mean says it).
     let rig = super::RIG_NAMES.iter().find(|(rig, _)| *rig == lower);
     let rig = rig.and_then(|(_, ours)| listed.iter().copied().find(|c| c == ours));
-    let c = all().find(|c| *c == lower).or(rig)?;
+    // A long name of the time (`time`, `Zeit`): `time [ms]` and `time_ms`
+    // are `t` in ms, whose did-you-mean `t` left the values 1000 times too
+    // large (round 48), as `t_ms` is. One rule for every reader of a `t`.
+    let time = super::TIME_NAMES.contains(&lower.as_str()) && listed.contains(&"t");
+    let c = all()
+        .find(|c| *c == lower)
+        .or(rig)
+        .or(time.then_some("t"))?;
     Some((quantity_of(c)?.0, false))
 }
 
@@ -293,6 +300,14 @@ mod tests {
             refused("speed [furlong]", None).unwrap().advice,
             UnitAdvice::UnknownUnit
         );
+        // The time under a long name, in ms: the conversion, not a
+        // renaming alone; in s, a renaming (a slip, said elsewhere).
+        for h in ["time [ms]", "time_ms", "Time (ms)", "timestamp_ms"] {
+            let r = refused(h, None).unwrap_or_else(|| panic!("{h}"));
+            assert_eq!((r.column, r.advice), ("t", UnitAdvice::Convert), "{h}");
+        }
+        assert!(reading("time [s]", (&RUN, &[]), None, &[]).is_none());
+        assert!(refused("time [ms]", None).is_some_and(|r| r.to_string().contains("(÷ 1000)")));
         // `speed_ms` is no unit of a speed after an underscore: a slip.
         assert!(reading("speed_ms", (&RUN, &[]), None, &[]).is_none());
         // A rig's channel name with its unit is the column it stands for.

@@ -11,12 +11,17 @@ use crate::tyre::Tyre;
 use crate::vehicle::Vehicle;
 
 /// The band of a static wheel load over the file's `FNOMIN` a tyre is
-/// chosen for: a road car's wheel carries 0.6–1.2 of its tyre's nominal
-/// load (FNOMIN is chosen near the rated service load, e.g. 4 kN for a
-/// sedan tyre at 3–4.5 kN a wheel), a racing car's 0.4–1.5 with its fuel
-/// and downforce. Beyond a factor of three either way the file belongs to
-/// another class of vehicle (a 30 kN truck tyre at 3 kN: 0.1).
-pub(super) const NOMINAL_SHARE: (f64, f64) = (1.0 / 3.0, 3.0);
+/// chosen for, and past which it is said: a road car's wheel carries
+/// 0.6–1.2 of its tyre's nominal load (FNOMIN is chosen near the rated
+/// service load, e.g. 4 kN for a sedan tyre at 3–4.5 kN a wheel), a racing
+/// car's 0.4–1.5 with its fuel and downforce. The rule: beyond a factor of
+/// two outside the road car's band, 0.3–2.4, the file belongs to another
+/// class of vehicle (a 30 kN truck tyre at 3 kN: 0.1; the 1 kN FSAE tyre
+/// under a sedan: 4.5 at the front, 3.0 at the rear), on either axle
+/// alike. A factor of three either way (1/3–3) let the sedan's rear on the
+/// FSAE tyre (2995 N, 2.995 times its FNOMIN, past its FZMAX of 2 kN)
+/// pass without a word while its front at 4.5 was said (round 48).
+pub(super) const NOMINAL_SHARE: (f64, f64) = (0.6 / 2.0, 1.2 * 2.0);
 
 /// Each axle's (front, rear) static wheel load over its `.tir`'s `FNOMIN`,
 /// where beyond [`NOMINAL_SHARE`]; None for an axle within it or not on a
@@ -52,10 +57,12 @@ pub(crate) fn far_from_nominal_of(vehicle: &Vehicle, [f, r]: [&Tyre; 2]) -> [Opt
         let share = wheel / nominal;
         (!(NOMINAL_SHARE.0..=NOMINAL_SHARE.1).contains(&share)).then(|| {
             format!(
-                "its wheels carry {} N each standing still, {} times the file's FNOMIN = {} N: a Magic Formula describes its tyre about that load, so this is a tyre for another class of vehicle (a car's wheel carries about 0.6–1.2 of its tyre's FNOMIN), and the run is not this car on its own tyres",
+                "its wheels carry {} N each standing still, {} times the file's FNOMIN = {} N: a Magic Formula describes its tyre about that load, so this is a tyre for another class of vehicle (a car's wheel carries about 0.6–1.2 of its tyre's FNOMIN, and one beyond {}–{}, a factor of two outside that, is said on either axle), and the run is not this car on its own tyres",
                 crate::format::significant(wheel, 4),
                 crate::format::fixed(share, 2),
                 crate::format::exact(nominal),
+                crate::format::exact(NOMINAL_SHARE.0),
+                crate::format::exact(NOMINAL_SHARE.1),
             )
         })
     })

@@ -70,12 +70,14 @@ pub(super) fn read_points(
     // file with 2.6, 260 and -1 was refused at -1 alone, and at the two
     // others only once it was mended.
     errors.extend(pressure_units(points, &c, pressure.as_deref(), known));
+    // A car's loads written in kN (the points off the road do not count),
+    // said with the rest: loads in kN beside pressures in bar were said
+    // one at a time (round 48).
+    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
+        errors.push(c.error_at(points, i, "fz", slip.into()));
+    }
     if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
         return Err(e.into());
-    }
-    // A car's loads written in kN; the points off the road do not count.
-    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
-        return Err(c.error_at(points, i, "fz", slip.into()).into());
     }
     Ok(PointColumns {
         file: c,

@@ -145,19 +145,13 @@ fn the_run_a_verdict_leaves_off_is_named_in_the_before_after_block() {
         "{left:?}"
     );
     assert!(left_in(d, "ay").is_empty() && left_in(d, "beta").is_empty());
-    check_words(stdout, d, clean_d, run, &edited);
+    check_words(stdout, d, run, &edited);
 }
 
 /// The words of the run left, on the terminal under the yaw rate's row and
 /// on the page, from `diagnosis.json`'s numbers; its steady offset is the
 /// one added, within a noise floor.
-fn check_words(
-    stdout: &str,
-    d: &serde_json::Value,
-    clean: &serde_json::Value,
-    run: &str,
-    edited: &Path,
-) {
+fn check_words(stdout: &str, d: &serde_json::Value, run: &str, edited: &Path) {
     let all = rows(d, "yaw_rate")
         .into_iter()
         .find(|r| r["part"] == "all")

@@ -437,6 +437,16 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
             ],
             &rows,
         );
+    if d.verdict.effects().is_empty() {
+        return;
+    }
+    // The runs the verdict leaves significant alone, as the terminal's
+    // block says them under each row.
+    for c in crate::diagnose::report::left_in::runs_left_in(&d.shrinkage) {
+        if let Some((head, runs)) = words::runs_left(&c) {
+            p.paragraph("", &head).lines(&runs);
+        }
+    }
 }
 
 /// A channel's noise floor, and where it is stated below the channel's

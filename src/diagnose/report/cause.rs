@@ -229,6 +229,7 @@ mod tests {
             mean_level: None,
             before: after,
             after,
+            bias_after: 0.0,
         }
     }
 

@@ -9,12 +9,13 @@ use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::campaign::StatedFriction;
 use crate::diagnose::effects::EffectKind;
+use crate::diagnose::report::left_in::{runs_left_in, RunLeft};
 use crate::diagnose::report::outcome::{
     ClassMismatch, Closest, Evidence, GapFinding, Narrowed, Note, RankWarning, Refused, Verdict,
     VerdictKind, VerdictWarning,
 };
 use crate::diagnose::report::{
-    words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Shrinkage,
+    words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Part, Shrinkage,
 };
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
@@ -248,36 +249,58 @@ struct ShrinkageJson<'a> {
     change: ChangeKind,
     mean_level: Option<f64>,
     runs: &'a [crate::diagnose::report::RunPart],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    left_in: Option<&'a [RunLeft]>,
 }
 
 /// A part's before and after with the rule the terminal and the page say
 /// it by ([`Shrinkage::change`]): within noise, the share of the gap is
 /// `null`, since a share of noise (−73 %, −138 %) is no change at all;
 /// `unchanged` keeps its share, within the scatter of held-out scores; a
-/// worsening from an RMS at or below the floor has none (`null`).
+/// worsening from an RMS at or below the floor has none (`null`). An
+/// all-samples row carries `left_in` where given: the runs the verdict's
+/// effects leave above noise in its channel (empty: none).
+fn shrinkage_json<'a>(row: &'a Shrinkage, left_in: Option<&'a [RunLeft]>) -> ShrinkageJson<'a> {
+    let (reduction_percent, change) = match row.change() {
+        ChannelChange::WithinNoise => (None, ChangeKind::WithinNoise),
+        ChannelChange::Unchanged(_) => (Some(row.reduction_percent), ChangeKind::Unchanged),
+        ChannelChange::Changed(_) => (Some(row.reduction_percent), ChangeKind::Changed),
+        ChannelChange::Worsened(p) => (
+            p.is_finite().then_some(row.reduction_percent),
+            ChangeKind::Worsened,
+        ),
+    };
+    ShrinkageJson {
+        channel: row.channel,
+        part: &row.part,
+        samples: row.samples,
+        before: row.before,
+        after: row.after,
+        noise_floor: row.noise_floor,
+        reduction_percent,
+        change,
+        mean_level: row.mean_level,
+        runs: &row.runs,
+        left_in,
+    }
+}
+
 impl Serialize for Shrinkage {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let (reduction_percent, change) = match self.change() {
-            ChannelChange::WithinNoise => (None, ChangeKind::WithinNoise),
-            ChannelChange::Unchanged(_) => (Some(self.reduction_percent), ChangeKind::Unchanged),
-            ChannelChange::Changed(_) => (Some(self.reduction_percent), ChangeKind::Changed),
-            ChannelChange::Worsened(p) => (
-                p.is_finite().then_some(self.reduction_percent),
-                ChangeKind::Worsened,
-            ),
-        };
-        ShrinkageJson {
-            channel: self.channel,
-            part: &self.part,
-            samples: self.samples,
-            before: self.before,
-            after: self.after,
-            noise_floor: self.noise_floor,
-            reduction_percent,
-            change,
-            mean_level: self.mean_level,
-            runs: &self.runs,
-        }
-        .serialize(s)
+        shrinkage_json(self, None).serialize(s)
     }
+}
+
+/// The held-out table `rows`, each all-samples row with its channel's
+/// runs left above noise ([`runs_left_in`]), so that a reader of the
+/// table finds them beside the channel's before and after.
+pub(crate) fn shrinkage<S: Serializer>(rows: &[Shrinkage], s: S) -> Result<S::Ok, S::Error> {
+    let left = runs_left_in(rows);
+    let of = |row: &Shrinkage| {
+        (row.part == Part::All)
+            .then(|| left.iter().find(|c| c.channel == row.channel))
+            .flatten()
+            .map(|c| c.left.as_slice())
+    };
+    s.collect_seq(rows.iter().map(|r| shrinkage_json(r, of(r))))
 }

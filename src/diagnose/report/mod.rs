@@ -10,6 +10,7 @@ mod evidence;
 pub mod fold_refits;
 pub(crate) mod gap;
 mod json;
+pub mod left_in;
 mod lookalike;
 mod narrowed;
 pub mod outcome;
@@ -330,7 +331,10 @@ pub struct Diagnosis {
     pub verdict: Verdict,
     /// Confounded effects.
     pub confounded: Vec<Confounded>,
-    /// Before and after on held-out runs, per channel, window and regime.
+    /// Before and after on held-out runs, per channel, window and regime
+    /// (each all-samples row written with the runs the verdict's effects
+    /// leave above noise, `left_in`: [`left_in::runs_left_in`]).
+    #[serde(serialize_with = "json::shrinkage")]
     pub shrinkage: Vec<Shrinkage>,
     /// Held-out replays (measured / base / verdict) for the figures.
     #[serde(skip)]

@@ -134,6 +134,7 @@ mod tests {
                     mean_level: None,
                     before: after,
                     after,
+                    bias_after: 0.0,
                 })
                 .collect(),
         }

@@ -109,6 +109,7 @@ fn run_parts(
                 mean_level: b.mean_level,
                 before: b.rms,
                 after: a.rms,
+                bias_after: a.bias,
             };
             (b.name, share)
         })
@@ -404,6 +405,7 @@ mod tests {
             mean_level: None,
             before,
             after: before,
+            bias_after: 0.0,
         }
     }
 

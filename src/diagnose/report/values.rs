@@ -522,4 +522,10 @@ pub struct RunPart {
     pub before: f64,
     /// Held-out RMS with the verdict's effects.
     pub after: f64,
+    /// Held-out mean residual with the verdict's effects (simulated −
+    /// measured): where a run is left off before the input, whether it is
+    /// a steady offset ([`crate::diagnose::report::left_in`], which writes
+    /// it there; not written for every run and part).
+    #[serde(skip)]
+    pub bias_after: f64,
 }

@@ -15,6 +15,7 @@ use class::{NO_VERDICT, OUTSIDE};
 mod evidence;
 mod fold_words;
 mod gap;
+mod left_in;
 mod lookalikes;
 mod parameters;
 mod rank;
@@ -29,6 +30,7 @@ pub use axles::{
 };
 pub use evidence::evidence;
 pub use gap::band_lines;
+pub use left_in::runs_left;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};

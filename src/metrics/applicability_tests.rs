@@ -108,11 +108,27 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     let said = |e: Option<Overshoot>| applicability_with_grip(&ringing, Some(80.0), None, e);
     // The tyres at a third of their grip, or the car within 2.2° of
     // sideslip: no spin.
-    let w = said(Some(Overshoot::GripUsed(0.35)));
+    let w = said(Some(Overshoot::GripUsed {
+        share: 0.35,
+        sideslip: 0.2,
+    }));
     assert!(
         w[0].contains("using no more than 35 % of their grip: no spin"),
         "{w:?}"
     );
+    // Past the linear part but never sliding (the sedan at 45 m/s: axles
+    // at 65 % of their grip, 5.2° of sideslip): no spin either.
+    let w = said(Some(Overshoot::GripUsed {
+        share: 0.65,
+        sideslip: 5.2_f64.to_radians(),
+    }));
+    assert!(
+        w[0].contains(
+            "using no more than 65 % of their grip and the sideslip within ±5.2° throughout"
+        ),
+        "{w:?}"
+    );
+    assert!(!w[0].contains("spinning"), "{w:?}");
     let w = said(Some(Overshoot::NoGripLimit));
     assert!(
         w[0].contains("on tyres with no friction limit (linear): no grip to lose, no spin"),
@@ -128,7 +144,10 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     // At the limits themselves (half the grip is used, 10° is a
     // slide's least) and beyond, or with nothing to judge by: a spin.
     for e in [
-        Some(Overshoot::GripUsed(KINEMATIC_GRIP)),
+        Some(Overshoot::GripUsed {
+            share: KINEMATIC_GRIP,
+            sideslip: SLIDING_SIDESLIP + 1e-9,
+        }),
         Some(Overshoot::Sideslip(SLIDING_SIDESLIP + 1e-9)),
         None,
     ] {

@@ -373,29 +373,59 @@ fn steady_settling<R: ContinuousRecord + ?Sized>(
     let a_spread = (va / s.steady_window).sqrt() / st.a_step.abs();
     let b_spread = (vb / s.steady_window).sqrt() / b_scale;
     let [r_ring, a_ring, b_ring] = ringings(rec, st, t0, t_last - s.steady_window);
+    let [r_in, a_in, b_in] = insides(rec, st, s.steady_window, b_scale);
     let b_to = ((bs - b0) / b_scale).abs();
     let with = super::settling::with_ringing;
     let settling = super::ChannelSettling {
         yaw_rate: with(
-            super::Settling::of_spread(r_spread, trend(1, st.r0, st.r_step)),
+            super::Settling::of_spread(r_spread, trend(1, st.r0, st.r_step), r_in),
             r_ring,
             1.0,
             0.0,
         ),
         ay: Some(with(
-            super::Settling::of_spread(a_spread, trend(2, st.a0, st.a_step)),
+            super::Settling::of_spread(a_spread, trend(2, st.a0, st.a_step), a_in),
             a_ring,
             1.0,
             0.0,
         )),
         beta: Some(with(
-            super::Settling::of_spread(b_spread, b_trend),
+            super::Settling::of_spread(b_spread, b_trend, b_in),
             b_ring,
             b_to,
             0.0,
         )),
     };
     (settling, r_spread)
+}
+
+/// How each channel (yaw rate, lateral acceleration, sideslip, each
+/// normalised by its step, the sideslip by `b_scale`) moves inside the
+/// steady window of length `window` ([`super::settling::Inside`]): the
+/// means of its equal parts, exact in a record without noise, read as a
+/// measured record's are ([`super::steady_inside::of_means`]), so that
+/// `simulate` and `metrics` on its history judge one window alike.
+fn insides<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    st: &Steps,
+    window: f64,
+    b_scale: f64,
+) -> [super::settling::Inside; 3] {
+    const N: usize = super::settling::TREND_PARTS;
+    let part = window / N as f64;
+    let from = st.t_last - window;
+    let m: [[f64; 4]; N] = std::array::from_fn(|k| {
+        let a = from + k as f64 * part;
+        window_means(rec, (a, (a + part).min(st.t_last)))
+    });
+    let of = |i: usize, x0: f64, step: f64| {
+        super::steady_inside::of_means(&m.map(|p| (p[i] - x0) / step), 0.0)
+    };
+    [
+        of(1, st.r0, st.r_step),
+        of(2, st.a0, st.a_step),
+        of(3, st.b0, b_scale),
+    ]
 }
 
 /// Each channel's decaying oscillation (yaw rate, lateral acceleration,

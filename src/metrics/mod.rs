@@ -459,8 +459,8 @@ struct Normalised {
     steady_samples: usize,
     /// Where the steady window's trend heads ([`settling::trend`]).
     trend: Option<settling::Trend>,
-    /// How it moves inside the steady window ([`steady_inside::Inside`]).
-    inside: steady_inside::Inside,
+    /// How it moves inside the steady window ([`settling::Inside`]).
+    inside: settling::Inside,
 }
 
 /// `x` (raw: `raw`) normalised from its mean over the initial window,

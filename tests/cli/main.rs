@@ -988,5 +988,6 @@ mod trips_s112_metrics47;
 mod trips_s112_perfdiag46;
 mod trips_s112_perfstep46;
 mod trips_s113_floors48;
+mod trips_s113_lead;
 mod trips_s113_settle48;
 mod trips_s113_units48;

@@ -19,10 +19,10 @@ fn too_small(e: &str) -> f64 {
 }
 
 /// The tester's `one_deg` campaign: synth's 100 km/h 2 m/s² step (logged
-/// in rad/s) and its sweep, with `degrees = ["yaw_rate"]`. The step is
-/// refused at its file, row and column with the factor and the fix (the
-/// sweep of this truth by the steer check); `metrics` refuses the same
-/// file with the same words (one rule, read with the run).
+/// in rad/s) and its sweep, with `degrees = ["yaw_rate"]`. Refused at the
+/// `degrees` entry with each run's factor (the step by its steady `ay`,
+/// the sweep by the steer check) and the fix; `metrics` refuses the step
+/// at its row and column with the factor and the fix.
 #[test]
 fn a_yaw_rate_declared_in_degrees_is_refused_by_its_steady_ay_in_diagnose_and_metrics() {
     let dir = tempfile::tempdir().unwrap();
@@ -32,38 +32,52 @@ fn a_yaw_rate_declared_in_degrees_is_refused_by_its_steady_ay_in_diagnose_and_me
     let runs = "[runs]\nfiles = [\"runs/step_100kph_2ms2.csv\", \"runs/sweep_080kph.csv\"]\ndegrees = [\"yaw_rate\"]\n";
     fs::write(&campaign, format!("{vehicle}\n{runs}")).unwrap();
     let said = fails_cleanly("diagnose", &campaign, dir.path());
-    let lines: Vec<&str> = said.lines().collect();
-    assert_eq!(
-        lines[0], "error: 2 of 2 runs refused, in run order:",
+    // Session 113 (units48): both runs read 57× small, so the refusal
+    // stands at the `degrees` entry that makes them so, once, naming each
+    // run and how it was found (the sweep by its steer, the step by its
+    // `ay`).
+    let text = format!("{vehicle}\n{runs}");
+    let line = text.lines().position(|l| l.starts_with("degrees")).unwrap() + 1;
+    assert!(
+        said.starts_with(&format!(
+            "error: {}:{line}:12: `degrees` under [runs] declares `yaw_rate` in deg/s for every run",
+            campaign.display()
+        )),
         "{said}"
     );
     let step = c.join("runs/step_100kph_2ms2.csv");
-    let at = format!("  {}:", step.display());
-    let e = lines[1];
-    assert!(e.starts_with(&at), "{said}");
-    // Row and column: the yaw rate is the file's fourth column.
-    let place = &e[at.len()..e.find(": column `yaw_rate`: ").unwrap()];
-    let (line, column) = place.split_once(':').unwrap();
-    assert!(line.parse::<usize>().unwrap() > 100, "{e}");
-    assert_eq!(column, "4", "{e}");
+    let by_ay = format!("in {} (ay/(speed·yaw_rate) = ", step.display());
+    let at = said.find(&by_ay).unwrap_or_else(|| panic!("{said}"));
+    let rest = &said[at + by_ay.len()..];
+    let factor: f64 = rest[..rest.find(')').unwrap()].parse().unwrap();
     // 57.3 within the noise of the means.
-    let factor = too_small(e);
-    assert!((factor / 57.2958 - 1.0).abs() < 0.03, "{e}");
+    assert!((factor / 57.2958 - 1.0).abs() < 0.03, "{said}");
     assert!(
-        e.contains(
-            "57.3× is a yaw rate in rad/s read as deg/s: was `yaw_rate` declared in degrees"
-        ) && e.contains("Take it out of `degrees`"),
-        "{e}"
+        said.contains(&c.join("runs/sweep_080kph.csv").display().to_string()),
+        "{said}"
+    );
+    assert!(
+        said.contains("take \"yaw_rate\" out of `degrees`"),
+        "{said}"
     );
     assert!(!said.contains("calibration"), "{said}");
+    // `metrics` on the step with the same declaration refuses it at its
+    // row and column (the yaw rate is the file's fourth), by the factor.
     let o = run(&["metrics", step.to_str().unwrap(), "--degrees", "yaw_rate"]);
     assert!(!o.status.success());
     let m = stderr(&o);
-    let words = |s: &str| {
-        let s = &s[s.find(": column `yaw_rate`: ").unwrap()..];
-        s.lines().next().unwrap().to_string()
-    };
-    assert_eq!(words(&m), words(e), "{m}");
+    let place =
+        &m[format!("error: {}:", step.display()).len()..m.find(": column `yaw_rate`: ").unwrap()];
+    let (row, column) = place.split_once(':').unwrap();
+    assert!(row.parse::<usize>().unwrap() > 100, "{m}");
+    assert_eq!(column, "4", "{m}");
+    assert!((too_small(&m) / 57.2958 - 1.0).abs() < 0.03, "{m}");
+    assert!(
+        m.contains(
+            "57.3× is a yaw rate in rad/s read as deg/s: was `yaw_rate` declared in degrees"
+        ) && m.contains("Take it out of `degrees`"),
+        "{m}"
+    );
     // Read as logged, the step is measured.
     assert!(run(&["metrics", step.to_str().unwrap()]).status.success());
 }

@@ -256,7 +256,10 @@ fn applicability(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) 
                 Some(sc.manoeuvre.speed(0.0)),
                 grip.map(Grip::Tyres),
                 match peak_share {
-                    Some(share) => Some(Overshoot::GripUsed(share)),
+                    Some(share) => Some(Overshoot::GripUsed {
+                        share,
+                        sideslip: h.beta.iter().fold(0.0, |m: f64, b| m.max(b.abs())),
+                    }),
                     // Linear tyres are judged by their largest slip angles.
                     None => checks::gripless(sc).then(|| Overshoot::LinearSlip(largest_slip(h))),
                 },

@@ -38,7 +38,7 @@ pub(super) fn target_lines(
     let er = &t.curve;
     out.push(match &er.best {
         Some(b) => format!(
-            "  {name} = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with {name} {:.6} (re-simulated), distance {:.3}{}",
+            "  {name} = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with {name} {:.6} (re-simulated), relative distance {:.3}{}",
             t.target,
             er.curve.len(),
             reference[0],
@@ -134,7 +134,7 @@ fn rbf_line(t: &TargetReport, r: &RbfAnswer, map: &Map, u: StiffnessUnit) -> Str
         RbfFit::Interpolant => "",
     };
     format!(
-        "    RBF answer: ({:.1}, {:.1}) {u}, Er {e:.6} re-simulated ({p:+.2} %), distance {:.3}{extrapolation}{regression}",
+        "    RBF answer: ({:.1}, {:.1}) {u}, Er {e:.6} re-simulated ({p:+.2} %), relative distance {:.3}{extrapolation}{regression}",
         r.k_front, r.k_rear, r.distance_to_reference,
     )
 }
@@ -171,7 +171,7 @@ fn refused_line(
         })
         .collect();
     format!(
-        "    RBF answer: none: the network gives ({:.1}, {:.1}) {u}, distance {:.3}: {}; not an answer{extrapolation}{}",
+        "    RBF answer: none: the network gives ({:.1}, {:.1}) {u}, relative distance {:.3}: {}; not an answer{extrapolation}{}",
         r.k_front,
         r.k_rear,
         r.distance_to_reference,

@@ -78,7 +78,7 @@ fn a_settled_spread_with_a_trend_beyond_the_drift_is_drifting() {
         rising: true,
     };
     assert_eq!(
-        Settling::of_spread(0.01, Some(trend)),
+        Settling::of_spread(0.01, Some(trend), Inside::default()),
         Settling::Drifting {
             heads: 0.089,
             converging: true,
@@ -93,7 +93,7 @@ fn a_settled_spread_with_a_trend_beyond_the_drift_is_drifting() {
         rising: true,
     };
     assert_eq!(
-        Settling::of_spread(0.01, Some(small)),
+        Settling::of_spread(0.01, Some(small), Inside::default()),
         Settling::Approaching {
             heads: 0.5 * SETTLED_DRIFT,
             rising: true
@@ -103,13 +103,16 @@ fn a_settled_spread_with_a_trend_beyond_the_drift_is_drifting() {
         heads: 0.5 * APPROACH_SAID,
         ..small
     };
-    assert_eq!(Settling::of_spread(0.01, Some(tiny)), Settling::Settled);
     assert_eq!(
-        Settling::of_spread(0.03, Some(trend)),
+        Settling::of_spread(0.01, Some(tiny), Inside::default()),
+        Settling::Settled
+    );
+    assert_eq!(
+        Settling::of_spread(0.03, Some(trend), Inside::default()),
         Settling::NotSettled { beyond: 0.03 }
     );
     let channels = ChannelSettling {
-        yaw_rate: Settling::of_spread(0.01, Some(trend)),
+        yaw_rate: Settling::of_spread(0.01, Some(trend), Inside::default()),
         ay: Some(Settling::Settled),
         beta: None,
     };
@@ -231,7 +234,7 @@ fn tyres_with_no_limit_are_bounded_by_the_road() {
 fn a_ramp_spread_beyond_two_percent_is_drifting_and_bounds_no_gain() {
     let ramp = trend_of_parts(parts(|t| 1.0 + 0.1 * t), 0.0).unwrap();
     assert!(!ramp.converging && ramp.rising);
-    let s = Settling::of_spread(0.021, Some(ramp));
+    let s = Settling::of_spread(0.021, Some(ramp), Inside::default());
     assert!(
         matches!(
             s,
@@ -254,7 +257,7 @@ fn a_ramp_spread_beyond_two_percent_is_drifting_and_bounds_no_gain() {
     // A spread without a one-way trend (a response ringing in its window)
     // stays a spread.
     assert_eq!(
-        Settling::of_spread(0.021, None),
+        Settling::of_spread(0.021, None, Inside::default()),
         Settling::NotSettled { beyond: 0.021 }
     );
 }
@@ -307,4 +310,31 @@ fn the_grip_limit_is_said_only_as_far_as_the_run_knows_it() {
         w.contains("the oscillation's centre is about 2.361 1/s"),
         "{w}"
     );
+}
+
+/// A noise-free record whose spread passes (1.3 % of its step) but that
+/// climbs across its window, its parts' means 4.5 % apart with a turn
+/// inside (the sedan at 45 m/s, 0.05 rad): not settled, by the window's
+/// range, as a measured record is judged ([`verdict`]); without the turn,
+/// settled.
+#[test]
+fn a_simulated_window_that_turns_inside_is_unsettled_by_its_range() {
+    let turning = Inside {
+        peak: 0.025,
+        range: 0.045,
+    };
+    assert_eq!(
+        Settling::of_spread(0.013, None, turning),
+        Settling::NotSettled { beyond: 0.045 }
+    );
+    assert_eq!(
+        Settling::of_spread(0.013, None, Inside::default()),
+        Settling::Settled
+    );
+    // A turn below the 2 % a settled response may move is no turn.
+    let small = Inside {
+        peak: 0.015,
+        range: 0.03,
+    };
+    assert_eq!(Settling::of_spread(0.013, None, small), Settling::Settled);
 }

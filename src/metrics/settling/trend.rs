@@ -120,3 +120,20 @@ pub(in crate::metrics) fn trend_of_parts(
         rising,
     })
 }
+
+/// How a steady window's response moves inside it, relative to the step:
+/// read where the trend over two windows finds none (a record ending
+/// 0.6 s after an instant step, read with a 0.3 s window, sat on its
+/// overshoot's decay and read the yaw-rate gain 4.4 % high, its spread
+/// 1.2 % of the step and its two windows holding the rise).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(in crate::metrics) struct Inside {
+    /// The largest distance of a part's mean from the window's mean,
+    /// where the window holds an extremum of the response (a part's mean
+    /// beyond both end parts'), beyond the noise; 0 elsewhere.
+    pub(in crate::metrics) peak: f64,
+    /// The range of the parts' means, beyond the noise: how far the
+    /// window's mean may be off its steady value where the response turns
+    /// inside it (1.6 s record, 0.3 s window: 4.4 % for a gain 4.4 % high).
+    pub(in crate::metrics) range: f64,
+}

@@ -30,6 +30,25 @@ fn fast_step(dir: &Path) -> String {
     format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o))
 }
 
+/// The history's (t, `name`) pairs, as written by `simulate` in `dir`'s
+/// `fast` folder.
+fn column(dir: &Path, name: &str) -> Vec<(f64, f64)> {
+    let h = std::fs::read_to_string(dir.join("fast/history.csv")).unwrap();
+    let mut rows = csv::Reader::from_reader(h.as_bytes());
+    let col = rows
+        .headers()
+        .unwrap()
+        .iter()
+        .position(|c| c == name)
+        .unwrap();
+    rows.records()
+        .map(|r| {
+            let r = r.unwrap();
+            (r[0].parse().unwrap(), r[col].parse().unwrap())
+        })
+        .collect()
+}
+
 #[test]
 fn a_simulated_window_the_yaw_rate_climbs_across_is_unsettled_as_metrics_reads_its_history() {
     let dir = tempfile::tempdir().unwrap();
@@ -43,21 +62,7 @@ fn a_simulated_window_the_yaw_rate_climbs_across_is_unsettled_as_metrics_reads_i
     let measured: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     // The history itself: the yaw rate's last sixth of the window against
     // its first differs by more than the 2 % a settled response allows.
-    let h = std::fs::read_to_string(dir.path().join("fast/history.csv")).unwrap();
-    let mut rows = csv::Reader::from_reader(h.as_bytes());
-    let col = rows
-        .headers()
-        .unwrap()
-        .iter()
-        .position(|c| c == "yaw_rate")
-        .unwrap();
-    let tr: Vec<(f64, f64)> = rows
-        .records()
-        .map(|r| {
-            let r = r.unwrap();
-            (r[0].parse().unwrap(), r[col].parse().unwrap())
-        })
-        .collect();
+    let tr = column(dir.path(), "yaw_rate");
     let mean = |a: f64, b: f64| {
         let v: Vec<f64> = tr
             .iter()
@@ -113,18 +118,9 @@ fn a_simulated_overshoot_past_the_linear_tyres_but_within_a_slides_sideslip_is_n
     // below the limit; the sideslip its largest |β|.
     let share: f64 = number_before(warning, " % of their grip");
     assert!((50.0..100.0).contains(&share), "{warning}");
-    let h = std::fs::read_to_string(dir.path().join("fast/history.csv")).unwrap();
-    let mut rows = csv::Reader::from_reader(h.as_bytes());
-    let col = rows
-        .headers()
-        .unwrap()
+    let largest = column(dir.path(), "beta")
         .iter()
-        .position(|c| c == "beta")
-        .unwrap();
-    let largest = rows
-        .records()
-        .map(|r| r.unwrap()[col].parse::<f64>().unwrap().abs())
-        .fold(0.0, f64::max)
+        .fold(0.0, |m: f64, p| m.max(p.1.abs()))
         .to_degrees();
     assert!(
         warning.contains(&format!("within ±{largest:.1}° throughout")),

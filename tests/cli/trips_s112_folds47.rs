@@ -18,8 +18,8 @@ const LATE_SAMPLES: usize = 15;
 
 /// The campaign `synth --effects sensor_delay --seed 1` writes into
 /// `dir/name`, narrowed to the delay and a relaxation length (the book's
-/// diagnose example).
-fn delay_campaign(dir: &Path, name: &str) -> PathBuf {
+/// diagnose example). Also `trips_s113_floors48`'s.
+pub(super) fn delay_campaign(dir: &Path, name: &str) -> PathBuf {
     let c = synth_campaign(dir, name, &["--effects", "sensor_delay", "--seed", "1"]);
     let v = c.join("vehicle.toml");
     let text = fs::read_to_string(&v).unwrap();

@@ -11,6 +11,7 @@
 //! typed in the all-samples rows of `shrinkage` (`left_in`). The same
 //! campaign without the offset, which the verdict explains, names none.
 
+use super::trips_s112_folds47::delay_campaign;
 use super::*;
 
 /// The run given a gyro offset of its own.
@@ -18,19 +19,6 @@ const OFF_RUN: &str = "step_060kph_2ms2.csv";
 
 /// The offset added to its yaw rate, rad/s.
 const GYRO_OFFSET: f64 = 0.01;
-
-/// The campaign `synth --effects sensor_delay --seed 1` writes into
-/// `dir/name`, narrowed to the delay and a relaxation length (the book's
-/// diagnose example).
-fn delay_campaign(dir: &Path, name: &str) -> PathBuf {
-    let c = synth_campaign(dir, name, &["--effects", "sensor_delay", "--seed", "1"]);
-    let v = c.join("vehicle.toml");
-    let text = fs::read_to_string(&v).unwrap();
-    assert!(text.trim_end().ends_with("seed = 1"), "{text}");
-    let narrowed = "effects = [\"sensor_delay\", \"relaxation_length\"]\n";
-    fs::write(&v, format!("{}\n{narrowed}", text.trim_end())).unwrap();
-    c
-}
 
 /// The all-samples and window rows of `channel` in `d`'s shrinkage.
 fn rows<'a>(d: &'a serde_json::Value, channel: &str) -> Vec<&'a serde_json::Value> {

@@ -139,19 +139,7 @@ fn a_lightly_damped_step_read_on_a_crest_is_not_called_settled() {
 /// says the grip limit as a possibility, not as the explanation.
 #[test]
 fn a_logs_growing_sideslip_names_the_grip_limit_only_as_a_possibility() {
-    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for i in 0..=900 {
-        let t = f64::from(i) / 100.0;
-        let rise = if t > 1.0 {
-            1.0 - (-(t - 1.0) / 0.15).exp()
-        } else {
-            0.0
-        };
-        let r = 0.2 * rise;
-        let beta = -(0.02 * rise + 0.006 * (t - 2.0).max(0.0));
-        let steer = if t > 1.0 { 0.02 } else { 0.0 };
-        csv += &format!("{t:.2},20,{steer},{r:.6},{:.5},{beta:.6}\n", 20.0 * r);
-    }
+    let csv = super::trips_s90_diag::growing_sideslip_log();
     let dir = scratch(&[("run.csv", &csv)]);
     let o = run(&["metrics", dir.path().join("run.csv").to_str().unwrap()]);
     let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));

@@ -106,6 +106,22 @@ fn a_replay_near_the_sensor_estimate_line_gives_the_other_floor_not_a_table_it_l
 /// sideslip grows" (β falls). Now it says the magnitude |β| grows.
 #[test]
 fn a_negative_sideslip_that_keeps_growing_is_said_to_grow_in_magnitude() {
+    let csv = growing_sideslip_log();
+    let dir = scratch(&[("run.csv", &csv)]);
+    let o = run(&["metrics", dir.path().join("run.csv").to_str().unwrap()]);
+    let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+    assert!(
+        said.contains("the yaw rate and lateral acceleration have settled while the sideslip has not: a car at its grip limit can hold them while the magnitude of its sideslip |β| grows, a possibility"),
+        "{said}"
+    );
+    assert!(!said.contains("while its sideslip grows"), "{said}");
+}
+
+/// A 9 s, 100 Hz step (steer 0.02 rad at 1 s, 20 m/s) whose yaw rate and ay
+/// settle in 0.15 s while its negative sideslip keeps growing in magnitude
+/// by 0.006 rad/s from 2 s: a car sliding at its grip limit, as a log
+/// shows it. Also `trips_s113_settle48`'s.
+pub(super) fn growing_sideslip_log() -> String {
     let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
     for i in 0..=900 {
         let t = f64::from(i) / 100.0;
@@ -121,12 +137,5 @@ fn a_negative_sideslip_that_keeps_growing_is_said_to_grow_in_magnitude() {
         let steer = if t > 1.0 { 0.02 } else { 0.0 };
         csv += &format!("{t:.2},20,{steer},{r:.6},{:.5},{beta:.6}\n", 20.0 * r);
     }
-    let dir = scratch(&[("run.csv", &csv)]);
-    let o = run(&["metrics", dir.path().join("run.csv").to_str().unwrap()]);
-    let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
-    assert!(
-        said.contains("the yaw rate and lateral acceleration have settled while the sideslip has not: a car at its grip limit can hold them while the magnitude of its sideslip |β| grows, a possibility"),
-        "{said}"
-    );
-    assert!(!said.contains("while its sideslip grows"), "{said}");
+    csv
 }

@@ -18,14 +18,10 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::above_noise;
-use crate::diagnose::report::parts::Window;
+use crate::diagnose::report::parts::{Window, LEAST_PART_SAMPLES};
 use crate::diagnose::report::values::OFFSET_SHARE;
 use crate::diagnose::report::{Part, RunPart, Shrinkage};
 use serde::Serialize;
-
-/// A run's part counts with at least this many samples: the parts' own
-/// rule (the gap summary's and its runs off in a part).
-pub(crate) const LEAST_SAMPLES: usize = 10;
 
 /// A run's steady residual: off before the input (where the steer holds
 /// still and the response has not begun, only a sensor's zero offset or
@@ -58,7 +54,7 @@ pub struct RunLeft {
     /// The same with the verdict's effects: above
     /// [`SIGNIFICANT_NOISE_FLOORS`].
     pub floors_after: f64,
-    /// The time windows of the run (at least [`LEAST_SAMPLES`] samples)
+    /// The time windows of the run (at least [`LEAST_PART_SAMPLES`] samples)
     /// whose RMS with the verdict stays above the floors, in time order
     /// (written as their labels, as `shrinkage[].part`).
     pub parts: Vec<Part>,
@@ -109,7 +105,7 @@ fn left_of(all: &Shrinkage, rows: &[Shrinkage]) -> Vec<RunLeft> {
     windows.sort_by(|a, b| a.part.order().1.total_cmp(&b.part.order().1));
     all.runs
         .iter()
-        .filter(|r| r.samples >= LEAST_SAMPLES && above_noise(r.after, nf))
+        .filter(|r| r.samples >= LEAST_PART_SAMPLES && above_noise(r.after, nf))
         .map(|r| {
             let parts: Vec<Part> = windows
                 .iter()
@@ -135,11 +131,11 @@ fn left_of(all: &Shrinkage, rows: &[Shrinkage]) -> Vec<RunLeft> {
 }
 
 /// Run `run`'s part of the window row `w` where it is above noise (floor
-/// `nf`) with the verdict on at least [`LEAST_SAMPLES`] samples.
+/// `nf`) with the verdict on at least [`LEAST_PART_SAMPLES`] samples.
 fn off_in<'a>(w: &'a Shrinkage, run: &str, nf: f64) -> Option<&'a RunPart> {
     w.runs
         .iter()
-        .find(|x| x.run == run && x.samples >= LEAST_SAMPLES)
+        .find(|x| x.run == run && x.samples >= LEAST_PART_SAMPLES)
         .filter(|x| above_noise(x.after, nf))
 }
 

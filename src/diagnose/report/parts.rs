@@ -4,6 +4,11 @@
 
 use serde::Serialize;
 
+/// A run's part is judged on its own only with at least this many
+/// samples: fewer say nothing of a part (the gap summary's parts and runs
+/// off in a part, and the runs a verdict leaves, by one rule).
+pub(crate) const LEAST_PART_SAMPLES: usize = 10;
+
 /// A time window of a run, from the start of its input.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Window {

@@ -11,6 +11,7 @@ use crate::diagnose::model::scale::FloorCounting;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, CombinedGap, GapFinding, OffInRight};
+use crate::diagnose::report::parts::LEAST_PART_SAMPLES;
 use crate::diagnose::report::shares::ChannelShare;
 use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::{Part, RunGap, RunPart, Shrinkage};
@@ -214,7 +215,7 @@ fn channel_finding(
     let nf = all.noise_floor;
     let split = rows
         .iter()
-        .filter(|p| p.part != Part::All && p.samples >= 10);
+        .filter(|p| p.part != Part::All && p.samples >= LEAST_PART_SAMPLES);
     let wrong: Vec<(Part, f64)> = split
         .clone()
         .filter(|p| above_noise(p.before, nf))
@@ -260,13 +261,13 @@ fn channel_finding(
 }
 
 /// The runs of a part `p` above three of its noise floors in it (at least
-/// ten samples, the parts' own rule), largest first: a part the pooled RMS
+/// [`LEAST_PART_SAMPLES`], the parts' own rule), largest first: a part the pooled RMS
 /// calls right is not right for them.
 fn off_in(p: &Shrinkage) -> Vec<OffInRight> {
     let mut off: Vec<OffInRight> = p
         .runs
         .iter()
-        .filter(|r| r.samples >= 10 && above_noise(r.before, p.noise_floor))
+        .filter(|r| r.samples >= LEAST_PART_SAMPLES && above_noise(r.before, p.noise_floor))
         .map(|r| OffInRight {
             part: p.part,
             run: r.run.clone(),

@@ -145,20 +145,18 @@ pub fn applicability_measured(
 /// linear part of its curve and the car nowhere near sliding.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Overshoot {
-    /// A simulation's, whose tyres are known: the most of its grip
-    /// either axle used anywhere in the run, `share` (below
-    /// [`KINEMATIC_GRIP`] no tyre passed the linear part of its curve),
-    /// and the run's largest |β|, `sideslip` (rad): beyond the linear
-    /// part and within [`SLIDING_SIDESLIP`] the car did not slide, so it
-    /// did not spin (the sedan at 45 m/s, 0.05 rad, overshot 111 % with
-    /// its axles at 61 and 65 % of their grip and 5.2° of sideslip, and
-    /// was said to lose grip while `metrics` on its history said no
-    /// spin).
+    /// A simulation's, whose tyres are known: the most of its grip either
+    /// axle used, `share` (below [`KINEMATIC_GRIP`] no tyre passed the
+    /// linear part of its curve), and, where both axles stay short of their
+    /// own tyres' peak, the largest |β|, `sideslip` (rad): within
+    /// [`SLIDING_SIDESLIP`] no slide, so no spin (the sedan at 45 m/s,
+    /// 0.05 rad: 111 % at 65 % of its grip and 5.2°, once called a spin).
     GripUsed {
         /// The most of its grip either axle used, a share.
         share: f64,
-        /// The largest |β| in the run, rad.
-        sideslip: f64,
+        /// The largest |β| in the run, rad, where no axle reaches its own
+        /// tyres' peak (none where one does: it may have lost grip).
+        sideslip: Option<f64>,
     },
     /// The largest |β| of a measured run, rad: within
     /// [`SLIDING_SIDESLIP`] the car never slid, so it did not spin.
@@ -374,7 +372,10 @@ fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>
             "the yaw rate overshoots its steady value by {said} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{at}); {ringing}",
             100.0 * share
         ),
-        Some(Overshoot::GripUsed { share, sideslip }) if sideslip <= SLIDING_SIDESLIP => format!(
+        Some(Overshoot::GripUsed {
+            share,
+            sideslip: Some(sideslip),
+        }) if sideslip <= SLIDING_SIDESLIP => format!(
             "the yaw rate overshoots its steady value by {said} % with the tyres using no more than {:.0} % of their grip and the sideslip within ±{}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
             100.0 * share,
             degrees_apart(sideslip)

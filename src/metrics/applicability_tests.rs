@@ -110,7 +110,7 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     // sideslip: no spin.
     let w = said(Some(Overshoot::GripUsed {
         share: 0.35,
-        sideslip: 0.2,
+        sideslip: Some(0.2),
     }));
     assert!(
         w[0].contains("using no more than 35 % of their grip: no spin"),
@@ -120,7 +120,7 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     // at 65 % of their grip, 5.2° of sideslip): no spin either.
     let w = said(Some(Overshoot::GripUsed {
         share: 0.65,
-        sideslip: 5.2_f64.to_radians(),
+        sideslip: Some(5.2_f64.to_radians()),
     }));
     assert!(
         w[0].contains(
@@ -146,7 +146,12 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     for e in [
         Some(Overshoot::GripUsed {
             share: KINEMATIC_GRIP,
-            sideslip: SLIDING_SIDESLIP + 1e-9,
+            sideslip: Some(SLIDING_SIDESLIP + 1e-9),
+        }),
+        // An axle at its own tyres' peak: the sideslip tells nothing.
+        Some(Overshoot::GripUsed {
+            share: 0.65,
+            sideslip: None,
         }),
         Some(Overshoot::Sideslip(SLIDING_SIDESLIP + 1e-9)),
         None,

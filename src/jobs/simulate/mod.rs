@@ -35,7 +35,7 @@ use crate::measured::MeasuredRun;
 use crate::metrics::applicability::{
     applicability_with_grip, schedule_applicability, step_rate_applicability, Grip, Overshoot,
 };
-use crate::metrics::{simulated_step_metrics, StepMetrics};
+use crate::metrics::{simulated_step_metrics, AxlesGrip, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Tone, MEASURED_DOTS};
 use crate::report::progress::Progress;
 use crate::report::stale::{leftovers, Leftovers, OwnSet};
@@ -256,9 +256,12 @@ fn applicability(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) 
                 Some(sc.manoeuvre.speed(0.0)),
                 grip.map(Grip::Tyres),
                 match peak_share {
+                    // The sideslip tells no spin only where no axle
+                    // reaches its own tyres' peak.
                     Some(share) => Some(Overshoot::GripUsed {
                         share,
-                        sideslip: h.beta.iter().fold(0.0, |m: f64, b| m.max(b.abs())),
+                        sideslip: (own_peak::axles_grip(sc, h) == AxlesGrip::BelowPeak)
+                            .then(|| h.beta.iter().fold(0.0, |m: f64, b| m.max(b.abs()))),
                     }),
                     // Linear tyres are judged by their largest slip angles.
                     None => checks::gripless(sc).then(|| Overshoot::LinearSlip(largest_slip(h))),

@@ -149,6 +149,10 @@ def test_diagnosis_is_typed_and_equals_its_json(tmp_path):
     assert d.verdict.reduction_percent == best.reduction_percent
     assert d.verdict.heldout_error_after == best.heldout_error_after
     assert d.verdict.partial is (best.reduction_percent < 50.0)
+    remains = any(w["kind"] == "gap_remains" for w in d.verdict.warning_details)
+    assert d.verdict.extent == (
+        "part" if d.verdict.partial else "most" if remains else "all"
+    )
     assert d.verdict.refused is None and d.verdict.threshold is None
     assert len(d.verdict.warning_details) == len(d.verdict.warnings)
     assert {w["kind"] for w in d.verdict.warning_details} <= {

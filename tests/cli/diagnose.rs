@@ -713,6 +713,17 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     let warnings = v["warning_details"].as_array().unwrap();
     assert_eq!(warnings.len(), 1, "{v}");
     assert_eq!(warnings[0]["kind"], "gap_remains", "{v}");
+    // The JSON says "most of the gap" as the statement does, typed: not
+    // the "explained" and `partial: false` of a verdict that leaves noise.
+    assert_eq!(v["extent"], "most", "{v}");
+    assert_eq!(v["partial"], false, "{v}");
+    assert!(
+        v["statement"]
+            .as_str()
+            .unwrap()
+            .contains("explains most of the gap"),
+        "{v}"
+    );
     assert!(v["warnings"][0]
         .as_str()
         .unwrap()

@@ -472,6 +472,11 @@ class Verdict:
     """Share of the held-out gap above noise removed, % (explained)."""
     partial: Optional[bool] = None
     """The effects explain only part of the gap, below 50 % (explained)."""
+    extent: Optional[str] = None
+    """How much of the gap the effects explain, as ``statement`` says it
+    (explained): ``"all"`` (what they leave is noise), ``"most"`` (50 % or
+    more, a gap above noise remaining: a ``gap_remains`` warning) or
+    ``"part"`` (below 50 %)."""
     warning_details: List[Dict[str, Any]] = field(default_factory=list)
     """The warnings typed (``kind``: ``channel_worsened`` with ``channel``,
     ``before``, ``after``, ``noise_floor``, ``added_percent``, ``causes``;

@@ -11,8 +11,8 @@ use crate::diagnose::campaign::StatedFriction;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::left_in::{runs_left_in, RunLeft};
 use crate::diagnose::report::outcome::{
-    ClassMismatch, Closest, Evidence, GapFinding, Narrowed, Note, RankWarning, Refused, Verdict,
-    VerdictKind, VerdictWarning,
+    ClassMismatch, Closest, Evidence, Extent, GapFinding, Narrowed, Note, RankWarning, Refused,
+    Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::report::{
     words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Part, Shrinkage,
@@ -30,6 +30,8 @@ enum Details<'a> {
         heldout_error_after: f64,
         reduction_percent: f64,
         partial: bool,
+        /// All, most or part of the gap, as the statement says.
+        extent: Extent,
         /// The effect parameters on or near their search bound: the
         /// verdict is then no measurement of those effects.
         on_search_bound: Vec<&'a str>,
@@ -86,6 +88,7 @@ impl Serialize for Verdict {
                     heldout_error_after: e.heldout_error_after,
                     reduction_percent: e.reduction_percent,
                     partial: e.partial(),
+                    extent: e.extent(),
                     on_search_bound: words::effect_parameters_on_bound(&e.warnings)
                         .into_iter()
                         .map(|p| p.name.as_str())

@@ -119,6 +119,22 @@ impl Verdict {
 /// of the gap, and the verdict says what share it leaves.
 pub const EXPLAINS_MOST: f64 = 50.0;
 
+/// How much of the gap above noise a verdict's effects explain, as its
+/// statement says it (`diagnosis.json`'s `extent`): a reader of the JSON
+/// tells "explains the gap" from "explains most of the gap" without
+/// parsing the sentence.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Extent {
+    /// What the effects leave is noise.
+    All,
+    /// At least [`EXPLAINS_MOST`] % removed, but a gap above noise remains
+    /// ([`VerdictWarning::GapRemains`]).
+    Most,
+    /// Below [`EXPLAINS_MOST`] % removed.
+    Part,
+}
+
 /// A held-out error at or below this multiple of the noise level is no
 /// gap (the verdict's rules apply it, `verdict::rules::SIGNIFICANT`; set
 /// here, below them, where the words that say it read it too).
@@ -159,6 +175,18 @@ impl Explained {
     /// [`EXPLAINS_MOST`]).
     pub fn partial(&self) -> bool {
         self.reduction_percent < EXPLAINS_MOST
+    }
+
+    /// How much of the gap the effects explain ([`Extent`]).
+    pub fn extent(&self) -> Extent {
+        let remains = |w: &VerdictWarning| matches!(w, VerdictWarning::GapRemains { .. });
+        if self.partial() {
+            Extent::Part
+        } else if self.warnings.iter().any(remains) {
+            Extent::Most
+        } else {
+            Extent::All
+        }
     }
 
     /// The channels whose gap the effects leave ([`ChannelLeft`]).

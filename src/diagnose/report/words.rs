@@ -44,7 +44,7 @@ pub use warnings::{effect_parameters_on_bound, verdict_warning};
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
-    GapFinding, NotIdentifiable, Note, OutsideLibrary, Refusal, Refused, Verdict, VerdictWarning,
+    Extent, GapFinding, NotIdentifiable, Note, OutsideLibrary, Refusal, Refused, Verdict,
     SIGNIFICANT_GAP,
 };
 use crate::diagnose::report::Confounded;
@@ -63,19 +63,16 @@ pub fn statement(v: &Verdict) -> String {
     match v {
         Verdict::Explained(e) => {
             let left: Vec<&str> = e.channels_left().iter().map(|c| c.name()).collect();
-            let remains = |w: &VerdictWarning| matches!(w, VerdictWarning::GapRemains { .. });
             let head = format!(
                 "{} explains {}the gap{}: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
                 joined(&e.effects, "+"),
                 // "The gap" only where what is left is noise: 53 % said
                 // as "explains the gap" above "the other 47 % is a
                 // further cause" read as a contradiction.
-                if e.partial() {
-                    "part of "
-                } else if e.warnings.iter().any(remains) {
-                    "most of "
-                } else {
-                    ""
+                match e.extent() {
+                    Extent::Part => "part of ",
+                    Extent::Most => "most of ",
+                    Extent::All => "",
                 },
                 if left.is_empty() {
                     String::new()

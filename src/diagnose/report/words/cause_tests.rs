@@ -333,6 +333,10 @@ fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
         "{}",
         statement(&v)
     );
+    // Typed alike (`extent` in diagnosis.json): round 50 read Putnam's
+    // "explains most of the gap" as `kind: explained`, `partial: false`.
+    let Verdict::Explained(e) = &v else { panic!() };
+    assert_eq!(e.extent(), crate::diagnose::report::outcome::Extent::Most);
 }
 
 /// Round 39: one run's steer ×1.25 held 91 % of what the verdict left,

@@ -53,7 +53,14 @@ fn an_explained_verdict_says_how_much_and_whether_part() {
     assert_eq!(
         statement(&explained(42.0)),
         "sensor_delay+relaxation_length explains part of the gap: held-out error 3.628 → 1.073 (noise level 0.941), 42.0 % of the gap above noise removed; the other 58.0 % is not shown to be a gap: the held-out error left is 1.14 × the noise level, within the 1.3 × a gap must exceed (more or longer runs would tell a further cause from noise)"
-    );
+    ); // The extent the sentence says, typed for the JSON.
+    let extent = |v: &Verdict| match v {
+        Verdict::Explained(e) => e.extent(),
+        _ => unreachable!(),
+    };
+    use crate::diagnose::report::outcome::Extent;
+    assert_eq!(extent(&explained(85.3)), Extent::All);
+    assert_eq!(extent(&explained(42.0)), Extent::Part);
 }
 
 #[test]

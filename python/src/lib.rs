@@ -86,6 +86,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<sweeps::PyStudy>()?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate::_bench_simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(spelling::_pythonic, m)?)?;
     m.add_function(wrap_pyfunction!(metrics::metrics, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::equilibria, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::run_shard, m)?)?;

@@ -1,7 +1,6 @@
 """`Tyre.forces` takes `tyre-eval`'s `--mode` (MFeval's useMode) as
-`mode=`, with its choices, its default and its refusals in its words; the
-extension's own Rust unit tests (the spelling of the CLI's options as
-Python's keywords) run in CI beside these (.ci/run)."""
+`mode=`, with its choices, its default and its refusals in its words (the
+spelling of the CLI's options as Python's keywords: test_spelling.py)."""
 
 import warnings
 

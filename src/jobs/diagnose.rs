@@ -360,7 +360,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
 /// the gap above noise removed" does not hide a run left 3.4 floors off.
 fn before_after_lines(d: &Diagnosis) -> Vec<String> {
     let mut out = vec![format!(
-        "held-out before → after (all samples; each channel alone against {SIGNIFICANT_NOISE_FLOORS} noise floors, the verdict's share is of all channels together):"
+        "held-out before → after (all held-out samples; each channel alone against {SIGNIFICANT_NOISE_FLOORS} noise floors, the verdict's share is of all channels together):"
     )];
     let left = runs_left_in(&d.shrinkage);
     for s in d.shrinkage.iter().filter(|s| s.part == Part::All) {

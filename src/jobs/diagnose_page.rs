@@ -420,7 +420,7 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
         .paragraph(
             "",
             &format!(
-                "Held-out RMS over all samples; {after}. {}",
+                "RMS over all held-out samples; {after}. {}",
                 words::channels_alone()
             ),
         )

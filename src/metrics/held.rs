@@ -10,7 +10,7 @@
 
 use super::filter::{below_filter_limit, zero_phase_low_pass};
 use super::noise::{correlation_sum, held_noise_scale, noise_deviation, noise_gain, HeldEvery};
-use super::settling::ringing::ringing;
+use super::settling::ringing::{lift, ringing};
 use super::settling::{sideslip_scale, verdict, with_ringing, ChannelSettling, NoiseNull};
 use super::variance::total_variance;
 use super::{
@@ -402,7 +402,9 @@ fn metrics_of(
 /// The verdict on each channel of `c` (and the sideslip, `beta_n`) of a
 /// record at times `t`, judged against its noise after `low_pass`, and
 /// on whether it still swings at its steady window (`from`: time zero
-/// and the window's start; [`ringing`]).
+/// and the window's start; [`ringing`]), its swing judged less the lift
+/// its noise gives its extrema ([`lift`]: none of a record whose
+/// neighbours differ by its own slope, as `simulate`'s history does).
 fn settling_of(
     t: &[f64],
     (t0, window): (f64, f64),
@@ -415,7 +417,7 @@ fn settling_of(
         let noise = gain * x.noise;
         let v = verdict(x, noise, to_scale, low_pass.null(held, n));
         let ring = ringing(t, &x.values, t0, window, noise);
-        with_ringing(v, ring, to_scale, noise)
+        with_ringing(v, ring, to_scale, gain * lift(x.noise, x.still_noise, held))
     };
     ChannelSettling {
         yaw_rate: judged(&c.r, 1.0, every.yaw_rate),

@@ -453,6 +453,10 @@ struct Normalised {
     spread: f64,
     /// White-noise deviation of the raw normalised signal.
     noise: f64,
+    /// The same read from second differences, which the signal's own
+    /// slope does not enter ([`settling::ringing::still_noise`]): what
+    /// lifts a swing's extrema, where the slope is nil.
+    still_noise: f64,
     /// Samples in the shorter of the initial and steady windows.
     samples: usize,
     /// Samples in the steady window.
@@ -487,12 +491,14 @@ fn normalise(
     }
     let values: Vec<f64> = x.iter().map(|v| (v - x0) / step).collect();
     let noise = sd0 / step.abs();
+    let still_noise = scale * settling::ringing::still_noise(raw) / step.abs();
     let (trend, inside) = steady_inside::steady_reading(t, &values, s.steady_window, t_last, noise);
     Ok(Normalised {
         values,
         steady: step,
         spread: sd / step.abs(),
         noise,
+        still_noise,
         samples,
         steady_samples,
         trend,

@@ -447,8 +447,13 @@ fn unsettled_words(name: &str, s: &Settling, ceiling: Option<&Ceiling>) -> Optio
 
 /// `v` where the channel does not still swing at its steady window, else
 /// [`Settling::Oscillating`]: `ring` (its oscillation, [`ringing`]) taken
-/// to `to_scale` times the step, judged with its noise after the filter
-/// `noise` (a share of the step). A channel not judged stays so.
+/// to `to_scale` times the step, judged with the noise after the filter
+/// that lifts its extrema, `noise` (a share of the step). A channel not
+/// judged stays so. The one judge of a swing: `simulate`'s record with
+/// no noise, a measured one with its lift ([`ringing::lift`]), which on a
+/// history `simulate` wrote is its curvature's (3·10⁻⁷ of the sideslip's
+/// step on the 80 m/s sedan's), so that one history gets one verdict from
+/// both.
 pub(super) fn with_ringing(
     v: Settling,
     ring: Option<ringing::Ringing>,

@@ -161,7 +161,7 @@ fn a_gap_significant_in_most_runs_names_the_runs_it_is_not() {
         .find(|l| l.starts_with("yaw_rate: RMS "))
         .unwrap_or_else(|| panic!("{said}"));
     let expected = format!(
-        "significant in 5 of 8 runs (all but {}); wrong in: ",
+        "significant in 5 of 8 runs (all but {}; RMS over all of each run's samples); wrong in: ",
         named.join("; ")
     );
     assert!(line.contains(&expected), "{line}\n{expected}");

@@ -166,9 +166,12 @@ fn check_words(stdout: &str, d: &serde_json::Value, run: &str, edited: &Path) {
         .iter()
         .map(|p| p.as_str().unwrap())
         .collect();
-    let head = "yaw_rate: 1 of 8 runs still significant alone (above 3 noise floors over the run's samples, as where the gap lies judges a run), which the share removed does not show:";
+    let head = "yaw_rate: 1 of 8 runs still significant alone (above 3 noise floors over the run's held-out samples, the ones the verdict is scored on; where the gap lies reads a run over all its samples, so its figure there can differ), which the share removed does not show:";
+    // Its held-out samples, the all-samples row's part of the run.
+    let samples = r["samples"].as_u64().unwrap();
+    assert_eq!(Some(samples), part_of(all, run).map(|p| p.0), "{r}");
     let line = format!(
-        "{run}: {:.1} → {:.1} noise floors; above them in: {}; off before the input too, where the response has not begun, and steady over the run: mean residual {mean:.4} rad/s ({:.1} noise floors, {:.0} % of its mean square), which reads as a zero offset of that run's yaw_rate sensor of {:+.4} rad/s (a sensor's offset reads as a residual of the opposite sign), the run's own, which the verdict's effects, fitted to every run, do not take up",
+        "{run}: {:.1} → {:.1} noise floors over its {samples} held-out samples; above them in: {}; off before the input too, where the response has not begun, and steady over the run: mean residual {mean:.4} rad/s ({:.1} noise floors, {:.0} % of its mean square), which reads as a zero offset of that run's yaw_rate sensor of {:+.4} rad/s (a sensor's offset reads as a residual of the opposite sign), the run's own, which the verdict's effects, fitted to every run, do not take up",
         f("floors_before"),
         f("floors_after"),
         parts.join(", "),

@@ -1,6 +1,6 @@
 //! The runs a channel's gap stays significant in after the verdict's
 //! effects ([`ChannelRunsLeft`]): each run whose held-out RMS of the
-//! channel over all its samples is still above
+//! channel over its held-out samples is still above
 //! [`SIGNIFICANT_NOISE_FLOORS`] noise floors with the verdict (the rule the
 //! gap's runs are judged by), with its noise floors before and after, the
 //! time windows where its residual stays above them, and, where it is off
@@ -11,6 +11,15 @@
 //! `diagnosis.json` name the same runs. Without it the block said "80 % of
 //! the gap above noise removed" over a run the verdict left 3.4 floors off
 //! (a gyro offset of +0.01 rad/s in one run; round 48).
+//!
+//! The floors are the held-out table's: over the run's held-out samples,
+//! the ones the verdict is scored on ([`RunLeft::samples`]), which are
+//! fewer than the samples where the gap lies reads each run over (a
+//! synth step of 6 s at 100 Hz: 151 held out of 601), so the two figures
+//! of one run differ (the gyro-offset run of round 48's campaign: 3.2
+//! noise floors where the gap lies, 3.1 → 3.1 here), and a reader saw one
+//! contradict the other (round 50): the words say which samples each
+//! counts ([`crate::diagnose::report::words::runs_left`]).
 //!
 //! Floors are RMS over the channel's noise floor (dimensionless); the mean
 //! residual is simulated − measured in the channel's unit (rad/s, m/s²,
@@ -48,7 +57,9 @@ pub struct RunOffset {
 pub struct RunLeft {
     /// The run.
     pub run: String,
-    /// Its held-out RMS with the base model over all its samples, in noise
+    /// Its held-out samples of the channel, which the floors are read over.
+    pub samples: usize,
+    /// Its held-out RMS with the base model over those samples, in noise
     /// floors.
     pub floors_before: f64,
     /// The same with the verdict's effects: above
@@ -121,6 +132,7 @@ fn left_of(all: &Shrinkage, rows: &[Shrinkage]) -> Vec<RunLeft> {
                 .and_then(|_| steady(r.bias_after, r.after, nf));
             RunLeft {
                 run: r.run.clone(),
+                samples: r.samples,
                 floors_before: r.before / nf,
                 floors_after: r.after / nf,
                 parts,
@@ -242,6 +254,7 @@ mod tests {
         let named: Vec<&str> = yaw.left.iter().map(|r| r.run.as_str()).collect();
         assert_eq!(named, ["a", "d", "e", "f"]);
         let a = &yaw.left[0];
+        assert_eq!(a.samples, 200);
         assert!((a.floors_after - 3.35).abs() < 1e-12 && (a.floors_before - 3.35).abs() < 1e-12);
         assert_eq!(
             a.parts,

@@ -93,11 +93,11 @@ fn a_gap_in_a_few_runs_names_them() {
     };
     let one = gap::channel(&finding(1));
     assert!(
-        one.contains("significant in 1 of 8 runs (run0.csv: 0.0065 rad, 3.2 noise floors); wrong in: no part over all runs"),
+        one.contains("significant in 1 of 8 runs (run0.csv: 0.0065 rad, 3.2 noise floors; RMS over all of each run's samples); wrong in: no part over all runs"),
         "{one}"
     );
     let three = gap::channel(&finding(3));
-    assert!(three.contains("(run0.csv: 0.0065 rad, 3.2 noise floors; run1.csv: 0.0065 rad, 3.2 noise floors; run2.csv: 0.0065 rad, 3.2 noise floors)"), "{three}");
+    assert!(three.contains("(run0.csv: 0.0065 rad, 3.2 noise floors; run1.csv: 0.0065 rad, 3.2 noise floors; run2.csv: 0.0065 rad, 3.2 noise floors; RMS over all of each run's samples)"), "{three}");
     // Four are named too (round 38: "significant in 4 of 8 runs" named
     // none); more in `cause_tests`.
     let four = gap::channel(&finding(4));

@@ -166,18 +166,18 @@ fn in_runs(k: usize, runs: usize, rms: impl Fn(usize) -> f64) -> String {
 #[test]
 fn the_runs_a_gap_is_significant_in_are_named_whatever_their_number() {
     let four = in_runs(4, 8, |i| 0.0072 + 0.002 * i as f64);
-    assert!(four.contains("significant in 4 of 8 runs (run0.csv: 0.0072 rad, 3.6 noise floors; run1.csv: 0.0092 rad, 4.6 noise floors; run2.csv: 0.0112 rad, 5.6 noise floors; run3.csv: 0.0132 rad, 6.6 noise floors); wrong in"), "{four}");
+    assert!(four.contains("significant in 4 of 8 runs (run0.csv: 0.0072 rad, 3.6 noise floors; run1.csv: 0.0092 rad, 4.6 noise floors; run2.csv: 0.0112 rad, 5.6 noise floors; run3.csv: 0.0132 rad, 6.6 noise floors; RMS over all of each run's samples); wrong in"), "{four}");
     let seven = in_runs(7, 8, |i| if i < 7 { 0.0070 } else { 0.0040 });
     assert!(
         seven.contains(
-            "significant in 7 of 8 runs (all but run7.csv: 0.0040 rad, 2.0 noise floors); wrong in"
+            "significant in 7 of 8 runs (all but run7.csv: 0.0040 rad, 2.0 noise floors; RMS over all of each run's samples); wrong in"
         ),
         "{seven}"
     );
     // Four within noise are more than three to say "all but": the
     // largest significant ones, in order of their RMS.
     let many = in_runs(20, 24, |i| 0.0070 + 0.0002 * i as f64);
-    assert!(many.contains("significant in 20 of 24 runs (largest: run19.csv: 0.0108 rad, 5.4 noise floors; run18.csv: 0.0106 rad, 5.3 noise floors; run17.csv: 0.0104 rad, 5.2 noise floors; and 17 more); wrong in"), "{many}");
+    assert!(many.contains("significant in 20 of 24 runs (largest: run19.csv: 0.0108 rad, 5.4 noise floors; run18.csv: 0.0106 rad, 5.3 noise floors; run17.csv: 0.0104 rad, 5.2 noise floors; and 17 more; RMS over all of each run's samples); wrong in"), "{many}");
     // All runs, or none: nothing to name.
     assert!(in_runs(8, 8, |_| 0.007).contains("significant in 8 of 8 runs; wrong in"));
     assert!(!in_runs(0, 8, |_| 0.004).contains("significant in 0 of 8 runs ("));
@@ -199,13 +199,18 @@ fn the_runs_a_gap_is_significant_in_are_named_whatever_their_number() {
     };
     let said = gap::channel(&f);
     assert!(said.contains("(largest: run0.csv: 0.0070 rad"), "{said}");
-    assert!(said.contains("; and 2 more)"), "{said}");
+    assert!(
+        said.contains("; and 2 more; RMS over all of each run's samples)"),
+        "{said}"
+    );
     if let GapFinding::Channel { runs, .. } = &mut f {
         *runs = 6;
     }
     let said = gap::channel(&f);
     assert!(
-        said.contains("(all but run5.csv: 0.0040 rad, 2.0 noise floors)"),
+        said.contains(
+            "(all but run5.csv: 0.0040 rad, 2.0 noise floors; RMS over all of each run's samples)"
+        ),
         "{said}"
     );
 }

@@ -229,20 +229,26 @@ fn runs_named(
     }
     let measured_by_all = k + within.len() == runs;
     if measured_by_all && within.len() < k && within.len() <= NAMED_RUNS {
-        return format!(" (all but {})", each(within));
+        return format!(" (all but {}; {OVER_ALL})", each(within));
     }
     if k <= NAMED_RUNS + 1 {
-        return format!(" ({})", each(significant));
+        return format!(" ({}; {OVER_ALL})", each(significant));
     }
     let mut largest = significant.to_vec();
     largest.sort_by(|a, b| b.1.total_cmp(&a.1));
     largest.truncate(NAMED_RUNS);
     format!(
-        " (largest: {}; and {} more)",
+        " (largest: {}; and {} more; {OVER_ALL})",
         each(&largest),
         k - NAMED_RUNS
     )
 }
+
+/// Which samples the runs' figures are read over: all of each run's, not
+/// the held-out ones the verdict's before → after block judges a run left
+/// on ([`super::left_in::runs_left`]), so that one run's two figures (3.2
+/// here, 3.1 → 3.1 there) are not read as one contradicting the other.
+const OVER_ALL: &str = "RMS over all of each run's samples";
 
 /// The terminal's lines for the frequency bands whose yaw-rate response is
 /// off ([`GapFinding::Band`], one per run and band in the report): a band

@@ -1,8 +1,10 @@
 //! The runs a channel's gap stays significant in after the verdict's
 //! effects ([`ChannelRunsLeft`]), in the words the terminal's before →
 //! after block and the page's before-and-after section both print: a
-//! heading naming the channel and how many runs, then one line per run
-//! with its noise floors before → after, the windows it stays above them
+//! heading naming the channel and how many runs, and which samples it
+//! judges them on (the held-out ones, not all the samples where the gap
+//! lies reads a run over), then one line per run with its noise floors
+//! before → after over its held-out samples, the windows it stays above them
 //! in and, where it is off before the input by a steady residual, the
 //! offset of its sensor that reads so. Floors dimensionless; residuals and
 //! offsets in the channel's unit (rad/s, m/s², rad).
@@ -23,7 +25,7 @@ pub fn runs_left(c: &ChannelRunsLeft) -> Option<(String, Vec<String>)> {
         return None;
     }
     let head = format!(
-        "{}: {} of {} runs still significant alone (above {SIGNIFICANT_NOISE_FLOORS} noise floors over the run's samples, as where the gap lies judges a run), which the share removed does not show:",
+        "{}: {} of {} runs still significant alone (above {SIGNIFICANT_NOISE_FLOORS} noise floors over the run's held-out samples, the ones the verdict is scored on; where the gap lies reads a run over all its samples, so its figure there can differ), which the share removed does not show:",
         c.channel.name(),
         c.left.len(),
         c.runs,
@@ -45,8 +47,9 @@ pub fn runs_left(c: &ChannelRunsLeft) -> Option<(String, Vec<String>)> {
     Some((head, lines))
 }
 
-/// One run left: `a.csv: 3.4 → 3.4 noise floors; above them in: before
-/// the input, later; …` and its offset where it has one.
+/// One run left: `a.csv: 3.4 → 3.4 noise floors over its 151 held-out
+/// samples; above them in: before the input, later; …` and its offset
+/// where it has one.
 fn run_left(r: &RunLeft, channel: Channel) -> String {
     let parts = if r.parts.is_empty() {
         "in no window alone (spread over the run)".to_string()
@@ -58,10 +61,11 @@ fn run_left(r: &RunLeft, channel: Channel) -> String {
         .steady_offset
         .map_or(String::new(), |o| steady_offset(&o, channel));
     format!(
-        "{}: {} → {} noise floors; {parts}{offset}",
+        "{}: {} → {} noise floors over its {} held-out samples; {parts}{offset}",
         r.run,
         fixed(r.floors_before, 1),
-        fixed(r.floors_after, 1)
+        fixed(r.floors_after, 1),
+        r.samples
     )
 }
 
@@ -89,6 +93,7 @@ mod tests {
     fn left(run: &str, after: f64, offset: Option<f64>) -> RunLeft {
         RunLeft {
             run: run.into(),
+            samples: 151,
             floors_before: 3.35,
             floors_after: after,
             parts: vec![
@@ -114,10 +119,10 @@ mod tests {
             left: vec![left("runs/b.csv", 3.4, Some(-0.0093))],
         };
         let (head, lines) = runs_left(&one).unwrap();
-        assert_eq!(head, "yaw_rate: 1 of 8 runs still significant alone (above 3 noise floors over the run's samples, as where the gap lies judges a run), which the share removed does not show:");
+        assert_eq!(head, "yaw_rate: 1 of 8 runs still significant alone (above 3 noise floors over the run's held-out samples, the ones the verdict is scored on; where the gap lies reads a run over all its samples, so its figure there can differ), which the share removed does not show:");
         assert_eq!(
             lines,
-            ["runs/b.csv: 3.4 → 3.4 noise floors; above them in: before the input, later; off before the input too, where the response has not begun, and steady over the run: mean residual -0.0093 rad/s (3.1 noise floors, 94 % of its mean square), which reads as a zero offset of that run's yaw_rate sensor of +0.0093 rad/s (a sensor's offset reads as a residual of the opposite sign), the run's own, which the verdict's effects, fitted to every run, do not take up"]
+            ["runs/b.csv: 3.4 → 3.4 noise floors over its 151 held-out samples; above them in: before the input, later; off before the input too, where the response has not begun, and steady over the run: mean residual -0.0093 rad/s (3.1 noise floors, 94 % of its mean square), which reads as a zero offset of that run's yaw_rate sensor of +0.0093 rad/s (a sensor's offset reads as a residual of the opposite sign), the run's own, which the verdict's effects, fitted to every run, do not take up"]
         );
         let six = ChannelRunsLeft {
             left: (0..6)
@@ -138,7 +143,7 @@ mod tests {
             ]
         );
         assert!(
-            lines[0].ends_with("3.4 → 6.1 noise floors; above them in: before the input, later")
+            lines[0].ends_with("3.4 → 6.1 noise floors over its 151 held-out samples; above them in: before the input, later")
         );
         let none = ChannelRunsLeft {
             left: Vec::new(),

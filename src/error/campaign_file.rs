@@ -41,6 +41,9 @@ pub enum CampaignFileProblem {
     /// Runs whose yaw rate `degrees = ["yaw_rate"]` reads 57× small.
     #[error(transparent)]
     YawDeclaredRuns(super::YawDeclaredRuns),
+    /// Runs whose steer `degrees = ["steer"]` reads 57× small.
+    #[error(transparent)]
+    SteerDeclaredRuns(super::SteerDeclaredRuns),
     /// A file of another kind given as the campaign.
     #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(kind))]
     NotACampaign {

@@ -4,10 +4,14 @@
 //! run's steer and would break the runs logged right. It names the runs
 //! that read so, says how many do not, and what to do with each kind;
 //! every other run is accounted for by name (a swept steer judged by its
-//! lagged yaw rate, a steer neither held nor swept, a run refused before
-//! its steer was judged): "1 of the 8 runs … 6 runs do not" once left the
-//! eighth unsaid. Runs whose yaw rate a `degrees = ["yaw_rate"]` makes
-//! 57× small are refused at that entry instead ([`YawDeclaredRuns`]).
+//! lagged yaw rate, a steer neither held nor swept, a run refused for
+//! another reason): "1 of the 8 runs … 6 runs do not" once left the
+//! eighth unsaid. Only runs taken are counted as reading in radians: a
+//! run refused after its steer was judged (another sign convention) is
+//! named as refused (round 49). Runs whose yaw rate a `degrees =
+//! ["yaw_rate"]` makes 57× small are refused at that entry instead
+//! ([`YawDeclaredRuns`]); runs whose steer `degrees = ["steer"]` makes 57×
+//! small likewise ([`super::SteerDeclaredRuns`]).
 
 use crate::format::readable;
 
@@ -47,7 +51,9 @@ pub enum OtherRun {
     Swept,
     /// Its steer is neither held nor swept: its unit was not judged.
     Unjudged,
-    /// Refused for another reason before its steer was judged.
+    /// Refused for another reason (before its steer was judged, or by
+    /// what judging it found: a sign, a ratio no car gives): not taken,
+    /// so never counted among the runs that read in radians.
     Refused,
 }
 
@@ -86,7 +92,7 @@ impl SteerInDegreesRuns {
 }
 
 /// Runs by name, grouped by what their steer was judged by ([`OtherRun`]).
-fn others_said(others: &[(String, OtherRun)]) -> Vec<String> {
+pub(super) fn others_said(others: &[(String, OtherRun)]) -> Vec<String> {
     let group = |kind: OtherRun, one: &str, many: &str| {
         let names: Vec<&str> = others
             .iter()
@@ -109,8 +115,8 @@ fn others_said(others: &[(String, OtherRun)]) -> Vec<String> {
         ),
         group(
             OtherRun::Refused,
-            "was refused for another reason before its steer was judged",
-            "were refused for other reasons before their steer was judged",
+            "was refused for another reason",
+            "were refused for other reasons",
         ),
     ]
     .into_iter()

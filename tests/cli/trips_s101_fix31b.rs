@@ -190,8 +190,8 @@ fn a_sine_replayed_with_its_radian_steer_declared_in_degrees_is_refused_at_the_e
 /// The tester's `camp2.toml`: the same sine in a campaign with
 /// `degrees = ["steer"]` under [runs]. The old binary diagnosed it ("off
 /// by −35.3 to −33.8 dB", a model-form error outside the library: 1/57.3);
-/// now the run is refused as a step run is, asking whether a column
-/// declared in degrees was already in radians.
+/// now it is refused as a step run is: since session 114 at the campaign's
+/// `degrees` entry, naming the run and the factor it reads off by.
 #[test]
 fn a_campaign_sine_with_its_radian_steer_declared_in_degrees_is_refused_with_the_hint() {
     let dir = tempfile::tempdir().unwrap();
@@ -204,9 +204,11 @@ fn a_campaign_sine_with_its_radian_steer_declared_in_degrees_is_refused_with_the
     let said = stderr(&o);
     assert!(!o.status.success(), "{said}");
     assert!(
-        said.contains("sine.csv")
+        said.contains("camp.toml:")
+            && said.contains("`degrees` under [runs] declares `steer` in degrees for every run")
+            && said.contains("sine.csv (57.3× too small")
             && said.contains("a neutral car's")
-            && said.contains("declared in degrees already in radians"),
+            && said.contains("take \"steer\" out of `degrees` under [runs]"),
         "{said}"
     );
 }

@@ -40,6 +40,7 @@ mod pieces;
 mod rig_model;
 mod run_checks;
 mod runs;
+mod steer_unit;
 pub(crate) mod swept;
 mod yaw_unit;
 

@@ -6,7 +6,7 @@
 //! in radians as one refusal naming them all.
 
 use super::swept::swept_per_neutral;
-use crate::error::{CampaignFileProblem, InputError, InputProblem, OtherRun};
+use crate::error::{CampaignFileProblem, DeclaredRun, InputError, InputProblem, OtherRun};
 use crate::io::{read_run_declared, AngleColumn};
 use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::measured::MeasuredRun;
@@ -32,15 +32,19 @@ pub(super) struct RunContext<'a> {
 
 /// Why a run was not taken.
 pub(super) enum RunRefusal {
-    /// Refused before its steer's unit was judged.
+    /// Refused by itself: before its steer's unit was judged, or by what
+    /// judging it found (another sign convention, a yaw rate that ignores
+    /// the steer). Never counted among the runs that read in radians:
+    /// only runs taken are (round 49).
     Run(InputError),
-    /// Its steer judged against its yaw rate reads as radians, and the
-    /// run was refused after.
-    Judged(InputError),
     /// Its steer reads in degrees (or as a steering-wheel angle) where
     /// none is declared so: a refusal of the campaign where other runs
     /// read in radians ([`in_degrees_refusal`]), else the run's own.
     InDegrees(Box<SteerInDegrees>),
+    /// Its steer, declared in degrees, reads 57× small where as logged it
+    /// reads as a car's: refused at that `degrees` entry with the others
+    /// so (`steer_unit.rs`).
+    SteerDeclared(Box<DeclaredRun>),
 }
 
 /// A run whose yaw rate is far smaller than a neutral car's for its steer.
@@ -53,8 +57,9 @@ pub(super) struct SteerInDegrees {
     pub own: InputError,
 }
 
-/// The runs whose held steer reads in radians (their files), and the
-/// others not in degrees with what judged them ([`OtherRun`]).
+/// The runs taken whose held steer reads in radians (their files), and
+/// the others not in degrees with what judged them ([`OtherRun`]), a run
+/// refused for another reason among them.
 pub(super) type Judged = (Vec<String>, Vec<(String, OtherRun)>);
 
 /// A declared angle column a run lacks, with its refusal were no run to
@@ -108,9 +113,9 @@ pub(super) fn checked_run(
                 own,
             })));
         }
-        (judged, _) => judged.map_err(|e| match yaw_per_neutral(&run, wheelbase, min_speed) {
-            Some(_) => RunRefusal::Judged(e),
-            None => RunRefusal::Run(e),
+        (judged, _) => judged.map_err(|e| match declared {
+            true => declared_small(&run, e, wheelbase, min_speed),
+            false => RunRefusal::Run(e),
         })?,
     };
     let judged = match yaw_per_neutral(&run, wheelbase, min_speed) {
@@ -130,7 +135,7 @@ pub(super) fn checked_run(
 
 /// The refusals of a campaign's runs in run order (`refused`, each with
 /// its run's index) with its runs whose steer reads in degrees: where
-/// `judged_radians` runs read in radians, `degrees = ["steer"]` under
+/// `judged_radians` runs taken read in radians, `degrees = ["steer"]` under
 /// [runs], which converts every run, is wrong for those, and the runs in
 /// degrees are one refusal at the first of them naming them all; where
 /// none does, each its own refusal (advising `degrees`). Returns the
@@ -208,6 +213,33 @@ pub(super) fn steer_against_yaw(
             run.path.display()
         )
     }))
+}
+
+/// Run `run`'s refusal `e` by its steer against its yaw rate, its steer
+/// declared in degrees: where `e` is a yaw rate far larger than a neutral
+/// car's for the steer ([`InputProblem::YawAboveSteer`], held or swept)
+/// and the steer as logged (× 180/π, radians) reads as a car's, the run
+/// that declaration makes small, with both ratios; else `e`, the run's own.
+fn declared_small(run: &MeasuredRun, e: InputError, wheelbase: f64, min_speed: f64) -> RunRefusal {
+    let declared = match &e {
+        InputError::Invalid { problem, .. } => match **problem {
+            InputProblem::YawAboveSteer { median, .. } => median,
+            _ => return RunRefusal::Run(e),
+        },
+        _ => return RunRefusal::Run(e),
+    };
+    let mut logged = run.clone();
+    logged.steer.iter_mut().for_each(|d| *d = d.to_degrees());
+    let y = yaw_per_neutral(&logged, wheelbase, min_speed)
+        .or_else(|| swept_per_neutral(&logged, wheelbase, min_speed));
+    match y.filter(|y| steer_problem(y, Wheelbase::Known(wheelbase)).is_none()) {
+        Some(y) => RunRefusal::SteerDeclared(Box::new(DeclaredRun {
+            run: run.path.display().to_string(),
+            declared,
+            logged: y.median,
+        })),
+        None => RunRefusal::Run(e),
+    }
 }
 
 /// The median `r·l/(u·δ)` of a run whose steer is far larger than its yaw

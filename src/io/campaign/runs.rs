@@ -10,7 +10,9 @@ use super::pieces::{pieces_note, top_speeds, uncut_note, Cutting};
 use super::run_checks::{
     checked_run, file_error, in_degrees_refusal, Judged, RunContext, RunRefusal, SteerInDegrees,
 };
-use crate::error::{CampaignFileProblem, InputError, InputProblem, OtherRun, SelectionProblem};
+use crate::error::{
+    CampaignFileProblem, DeclaredRun, InputError, InputProblem, OtherRun, SelectionProblem,
+};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
 use crate::io::AngleColumn;
@@ -227,14 +229,17 @@ fn folder_runs(d: &Path, file: &Path, notes: &mut Vec<String>) -> Result<Vec<Pat
     Ok(found)
 }
 
-/// Run `i`'s refusal filed with the others (`refused`, `in_degrees`),
-/// counting in `radians` a run whose steer was judged to read in radians.
-/// Apart from [`read_runs`] so that it reads on a screen.
+/// Run `i`'s refusal filed with the others (`refused`, the runs of a
+/// steer's unit slip `slips`), a run refused by itself counted among the
+/// others as refused, never among those that read in radians: a run
+/// refused after its steer read so (another sign convention) was counted
+/// there, and other runs' refusals said "5 read in radians" of 4 taken
+/// (round 49). Apart from [`read_runs`] so that it reads on a screen.
 fn file_refusal(
     (i, file): (usize, &Path),
     refusal: RunRefusal,
     refused: &mut Vec<(usize, InputError)>,
-    in_degrees: &mut Vec<(usize, Box<SteerInDegrees>)>,
+    slips: &mut SteerSlips,
     judged: &mut Judged,
 ) {
     match refusal {
@@ -242,17 +247,24 @@ fn file_refusal(
             refused.push((i, e));
             judged.taken(file, Some(OtherRun::Refused));
         }
-        RunRefusal::Judged(e) => {
-            refused.push((i, e));
-            judged.taken(file, None);
-        }
-        RunRefusal::InDegrees(d) => in_degrees.push((i, d)),
+        RunRefusal::InDegrees(d) => slips.0.push((i, d)),
+        RunRefusal::SteerDeclared(d) => slips.1.push((i, d)),
     }
 }
 
+/// The runs refused for their steer's unit, each with its index, which
+/// the campaign refuses together: those that read in degrees undeclared
+/// ([`in_degrees_refusal`]), those a declared `steer` makes 57× small
+/// (`steer_unit.rs`).
+type SteerSlips = (
+    Vec<(usize, Box<SteerInDegrees>)>,
+    Vec<(usize, Box<DeclaredRun>)>,
+);
+
 /// Counting a run in [`Judged`].
 trait Taken {
-    /// Run file `p` judged as `other` (`None`: its held steer, radians).
+    /// Run file `p` judged as `other` (`None`: taken, its held steer in
+    /// radians).
     fn taken(&mut self, p: &Path, other: Option<OtherRun>);
 }
 
@@ -309,7 +321,7 @@ pub(super) fn read_runs(
     let mut cut = Cutting::default();
     // Every run is checked before any is refused: a campaign of eight runs
     // with three bad ones is mended in one pass, not three.
-    let (mut refused, mut in_degrees) = (Vec::new(), Vec::new());
+    let (mut refused, mut slips): (_, SteerSlips) = (Vec::new(), Default::default());
     let mut judged: Judged = (Vec::new(), Vec::new());
     let ctx = RunContext {
         files,
@@ -322,7 +334,7 @@ pub(super) fn read_runs(
             Ok(checked) => checked,
             Err(refusal) => {
                 let at = (i, p.as_path());
-                file_refusal(at, refusal, &mut refused, &mut in_degrees, &mut judged);
+                file_refusal(at, refusal, &mut refused, &mut slips, &mut judged);
                 continue;
             }
         };
@@ -355,7 +367,7 @@ pub(super) fn read_runs(
         }
     }
     let declared = (degrees, at_degrees);
-    let (refused, count) = all_refused(refused, (in_degrees, judged), declared, files.len(), &raw);
+    let (refused, count) = all_refused(refused, (slips, judged), declared, files.len(), &raw);
     let passed = raw.iter().map(|r| r.path.display().to_string()).collect();
     if let Some(e) = InputError::runs_refused(refused, (count, files.len()), passed) {
         return Err(e);
@@ -371,15 +383,15 @@ pub(super) fn read_runs(
     Ok((runs, notes, cleaning, calibrate(&raw), top_speeds(&raw)))
 }
 
-/// The refusals of the runs (`refused`, with the runs in degrees and how
-/// the others were `judged`, [`in_degrees_refusal`]) of the `of` run
-/// files, and how many runs they stand for; with them, where one is of a
-/// sign, the note that the `beta` of the runs taken (`raw`) is not checked
-/// yet: that check needs the base model fitted to every run, and a second
-/// sign slip was heard only once the first was mended (round 39).
+/// The refusals of the runs (`refused`, with the runs of a steer's unit
+/// slip and how the others were `judged`, [`in_degrees_refusal`]) of the
+/// `of` run files, and how many runs they stand for; with them, where one
+/// is of a sign, the note that the `beta` of the runs taken (`raw`) is not
+/// checked yet: that check needs the base model fitted to every run, and a
+/// second sign slip was heard only once the first was mended (round 39).
 fn all_refused(
     mut refused: Vec<(usize, InputError)>,
-    (in_degrees, judged): (Vec<(usize, Box<SteerInDegrees>)>, Judged),
+    ((in_degrees, declared_small), judged): (SteerSlips, Judged),
     (degrees, at_degrees): (
         &[AngleColumn],
         &dyn Fn(AngleColumn, InputProblem) -> InputError,
@@ -390,7 +402,11 @@ fn all_refused(
     // A yaw rate in deg/s among runs in rad/s, and runs a declared
     // `yaw_rate` reads 57× small: `yaw_unit.rs`.
     super::yaw_unit::own_file_advice(&mut refused, &judged, degrees, of);
-    let runs = refused.len() + in_degrees.len();
+    let runs = refused.len() + in_degrees.len() + declared_small.len();
+    // Runs a declared `steer` reads 57× small: `steer_unit.rs`.
+    let taken: Vec<String> = raw.iter().map(|r| r.path.display().to_string()).collect();
+    let small = (declared_small, &taken[..]);
+    super::steer_unit::declared_refusal(small, (&judged, &mut refused), at_degrees, of);
     let in_degrees = super::yaw_unit::declared_refusal(
         in_degrees,
         (&judged, &mut refused),

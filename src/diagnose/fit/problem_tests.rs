@@ -1,7 +1,8 @@
 //! An evaluation under a bound ([`Problem::residuals_below`]) whose
 //! replays stop inside a run: above the bound it returns false after fewer
-//! integrated rows than one run's whole replay; below it, the residuals
-//! of an evaluation without a bound, to the bit, every row integrated.
+//! integrated rows than a whole run on each thread; below it, the
+//! residuals of an evaluation without a bound, to the bit, every row
+//! integrated.
 
 use super::*;
 use crate::diagnose::fit::refit::tests::SCALES;
@@ -40,14 +41,18 @@ fn an_evaluation_above_its_bound_stops_inside_a_run() {
             all_rows,
             set.iter().map(|run| run.drive.steps + 1).sum::<usize>()
         );
-        // A bound a tenth of the cost: false, and stopped before any run
-        // was replayed whole (a stop between whole runs replays one at
-        // least).
+        // A bound a fiftieth of the cost: false, and stopped before the
+        // threads had replayed a run each whole (what a stop between whole
+        // runs integrates at least: every thread takes one at the start).
         let stopped = problem();
         let mut out = vec![0.0; whole.count()];
-        assert!(!stopped.residuals_below(&p, &mut out, 0.1 * cost));
+        assert!(!stopped.residuals_below(&p, &mut out, 0.02 * cost));
         let rows = stopped.integrated_rows();
-        assert!(rows > 0 && rows < one_run, "{rows} rows of {one_run} a run");
+        let threads = rayon::current_num_threads().clamp(1, set.len());
+        assert!(
+            rows > 0 && rows < threads * one_run,
+            "{rows} rows on {threads} threads, {one_run} a run"
+        );
         // A bound just above the cost: every row, the residuals to the bit.
         let above = problem();
         assert!(above.residuals_below(&p, &mut out, cost * (1.0 + 1e-5)));

@@ -14,6 +14,7 @@
 
 mod seeds;
 mod system;
+mod watched;
 
 use seeds::Adaptive;
 

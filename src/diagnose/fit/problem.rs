@@ -25,6 +25,7 @@ use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
 use crate::vehicle::Effects;
 use nalgebra::DMatrix;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// Output-error least squares over a set of runs: `build` turns the
@@ -61,6 +62,9 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     /// Replays shared with the diagnosis's other problems on all runs
     /// ([`Problem::with_shared`]).
     shared: Option<&'a SharedReplays>,
+    /// Rows of history the problem's replays have integrated, stopped
+    /// ones included ([`Problem::integrated_rows`]).
+    integrated: AtomicUsize,
 }
 
 impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
@@ -85,7 +89,15 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             additive: Vec::new(),
             prior: None,
             shared: None,
+            integrated: AtomicUsize::new(0),
         }
+    }
+
+    /// Rows of history the problem's replays have integrated so far,
+    /// stopped ones included (cached replays read cost none).
+    #[cfg(test)]
+    pub(crate) fn integrated_rows(&self) -> usize {
+        self.integrated.load(Ordering::Relaxed)
     }
 
     /// The same problem reading and sharing replays in `shared`, whose
@@ -301,10 +313,12 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     /// The runs are taken costliest first (as the last complete evaluation
     /// found them) from a queue shared by the pool's threads, so that a
     /// stop comes after as few replays as it can; the residuals written are
-    /// the same whichever thread writes them.
+    /// the same whichever thread writes them. Under a finite bound a replay
+    /// is also scored while it runs ([`Prepared::residuals_watched`]): the
+    /// residuals it has settled count with the other runs' at every chunk,
+    /// and every thread stops once they show the bound passed.
     fn data_residuals_below(&self, q: &[f64], out: &mut [f64], floor: f64, bound: f64) -> bool {
         use rayon::prelude::*;
-        use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
         let model = (self.build)(q);
         let mut pieces = Vec::with_capacity(self.runs.len());
         let mut rest = out;
@@ -322,34 +336,51 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
             f64::NAN
         };
         let next = AtomicUsize::new(0);
-        let stopped = AtomicBool::new(false);
-        let spent = Mutex::new((floor, vec![0.0; self.runs.len()]));
+        let spent = Spent {
+            stopped: AtomicBool::new(false),
+            limit,
+            costs: Mutex::new((
+                floor,
+                vec![0.0; self.runs.len()],
+                vec![0.0; self.runs.len()],
+            )),
+        };
         let work = |_| loop {
             let k = next.fetch_add(1, Ordering::Relaxed);
-            if k >= order.len() || stopped.load(Ordering::Relaxed) {
+            if k >= order.len() || spent.stopped.load(Ordering::Relaxed) {
                 break;
             }
             let i = order[k];
-            let (run, cache) = (self.runs[i], &self.last[i]);
             let mut piece = pieces[i].lock().unwrap_or_else(|e| e.into_inner());
-            let obs = run.observe_reusing(&model, cache, self.shared.map(|s| (s, i)));
-            run.write_residuals(&obs, &self.scales, &mut piece);
-            let c = 0.5 * piece.iter().map(|e| e * e).sum::<f64>();
-            let mut s = spent.lock().unwrap_or_else(|e| e.into_inner());
-            s.0 += c;
-            s.1[i] = c;
-            if s.0 >= limit {
-                stopped.store(true, Ordering::Relaxed);
+            if !self.run_residuals(&model, i, &mut piece, &spent) {
+                break;
             }
         };
         let workers = rayon::current_num_threads().clamp(1, order.len().max(1));
         (0..workers).into_par_iter().for_each(work);
-        if stopped.into_inner() {
+        if spent.stopped.into_inner() {
             return false;
         }
-        let (_, costs) = spent.into_inner().unwrap_or_else(|e| e.into_inner());
+        let (_, costs, _) = spent.costs.into_inner().unwrap_or_else(|e| e.into_inner());
         *self.run_costs.lock().unwrap_or_else(|e| e.into_inner()) = costs;
         true
+    }
+
+    /// Run `i`'s residuals at `model` into `out`, its replay watched under
+    /// a finite limit: false where it, or another run's, stopped the
+    /// evaluation.
+    fn run_residuals(&self, model: &Augmented, i: usize, out: &mut [f64], spent: &Spent) -> bool {
+        let (run, cache) = (self.runs[i], &self.last[i]);
+        let caches = (cache, self.shared.map(|s| (s, i)));
+        let mut watch = |partial: f64| spent.add(i, partial, false);
+        let watch: Option<&mut dyn FnMut(f64) -> bool> = if spent.limit.is_nan() {
+            None
+        } else {
+            Some(&mut watch)
+        };
+        let done = run.residuals_watched(model, caches, &self.scales, out, watch);
+        self.integrated.fetch_add(done.rows, Ordering::Relaxed);
+        done.complete && spent.add(i, 0.5 * out.iter().map(|e| e * e).sum::<f64>(), true)
     }
 
     /// The runs' indices, the costliest at the last complete evaluation
@@ -378,3 +409,42 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
         e
     }
 }
+
+/// What an evaluation's runs have cost so far ([`Problem::residuals_below`]),
+/// shared by the threads that replay them.
+struct Spent {
+    /// Set once the costs shown pass the limit: every thread stops.
+    stopped: AtomicBool,
+    /// The bound with its margin (NaN: none).
+    limit: f64,
+    /// The prior rows' cost and the runs replayed whole; each run's cost
+    /// whole; the cost of the residuals a replay still running has settled.
+    costs: Mutex<(f64, Vec<f64>, Vec<f64>)>,
+}
+
+impl Spent {
+    /// Counts `cost` for run `i` (its whole cost where `whole`, else what
+    /// its running replay has settled); false once the evaluation stops.
+    fn add(&self, i: usize, cost: f64, whole: bool) -> bool {
+        if self.stopped.load(Ordering::Relaxed) {
+            return false;
+        }
+        let mut s = self.costs.lock().unwrap_or_else(|e| e.into_inner());
+        if whole {
+            s.0 += cost;
+            s.1[i] = cost;
+            s.2[i] = 0.0;
+        } else {
+            s.2[i] = cost;
+        }
+        if s.0 + s.2.iter().sum::<f64>() >= self.limit {
+            self.stopped.store(true, Ordering::Relaxed);
+            return false;
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+#[path = "problem_tests.rs"]
+mod tests;

@@ -197,21 +197,45 @@ impl Augmented {
         ax: &[f64],
         times: &[f64],
     ) -> Observed {
-        let h = response;
-        let [yaw_rate, ay, beta] =
-            self.effects()
-                .sensors
-                .seen(&h.t, &h.speed, ax, &h.yaw_rate, &h.ay, &h.beta);
-        let at = |ys: &[f64]| -> Vec<f64> {
-            let mut nodes = Interpolator::new(&h.t);
-            times.iter().map(|&t| nodes.at(ys, t)).collect()
-        };
+        let [yaw_rate, ay, beta] = self.seen_rows(response, 0..response.len(), ax, times);
+        let mut nodes = Interpolator::new(&response.t);
         Observed {
-            yaw_rate: at(&yaw_rate),
-            ay: at(&ay),
-            beta: at(&beta),
-            roll: at(&response.roll),
+            yaw_rate,
+            ay,
+            beta,
+            roll: times.iter().map(|&t| nodes.at(&response.roll, t)).collect(),
         }
+    }
+
+    /// What the sensors record (yaw rate, ay, β) of the rows `rows` of a
+    /// response alone, interpolated at `times`, `ax` at those rows' times:
+    /// over every row, [`Augmented::observe_with_ax`]'s. Over fewer, a
+    /// value is that one's to the bit where everything it reads lies
+    /// inside the rows, away from their ends (a chunk of a replay scored
+    /// while it runs, `replay::chunked`): the sensors' rate, delay and the
+    /// interpolation read only neighbouring rows.
+    pub(crate) fn seen_rows(
+        &self,
+        response: &TimeHistory,
+        rows: std::ops::Range<usize>,
+        ax: &[f64],
+        times: &[f64],
+    ) -> [Vec<f64>; 3] {
+        let h = response;
+        let r = || rows.clone();
+        let t = &h.t[r()];
+        let seen = self.effects().sensors.seen(
+            t,
+            &h.speed[r()],
+            ax,
+            &h.yaw_rate[r()],
+            &h.ay[r()],
+            &h.beta[r()],
+        );
+        seen.map(|ys| {
+            let mut nodes = Interpolator::new(t);
+            times.iter().map(|&s| nodes.at(&ys, s)).collect()
+        })
     }
 }
 

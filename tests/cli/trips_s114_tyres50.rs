@@ -347,7 +347,7 @@ fn a_rig_force_at_zero_load_is_said_without_a_ratio() {
         .collect();
     let by_fy =
         |&a: &usize, &b: &usize| num(&rows[a], fy).abs().total_cmp(&num(&rows[b], fy).abs());
-    let top = *pure.iter().max_by(by_fy).unwrap();
+    let top = pure.iter().copied().max_by(by_fy).unwrap();
     assert!(num(&rows[top], fy) < 0.0, "{:?}", rows[top]);
     let mut zeroed = rows.clone();
     zeroed[top][fz] = "0".to_string();

@@ -79,6 +79,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 mod conclusion;
 mod limits;
 mod rig_notes;
+mod tyre_loads;
 use conclusion::{conclude, with_rows};
 
 /// Work units reported to the progress counter for a campaign.

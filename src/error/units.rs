@@ -271,7 +271,7 @@ pub enum UnitSlip {
     },
     /// A rig sample whose force is more than [`MAX_RIG_FRICTION`] times
     /// its load: a spike, or a row in another unit.
-    #[error("column `{column}`: {} N at fz {} N is {} times the load, which no tyre grips at (a racing slick reaches about 2): a spike of the logger, or a row in another unit? (the limit there is {MAX_RIG_FRICTION} × (fz + a twentieth of the file's median load, {} N) = {} N)", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*median), Num(MAX_RIG_FRICTION * (fz + 0.05 * median)))]
+    #[error("column `{column}`: {} N at fz {} N {} (the limit there is {MAX_RIG_FRICTION} × (fz + a twentieth of the file's median load, {} N) = {} N)", Num(*value), Num(*fz), super::rig_row::above_load(*value, *fz), Num(*median), Num(MAX_RIG_FRICTION * (fz + 0.05 * median)))]
     RigForceAboveLoad {
         /// The column (`fy`, `fx`).
         column: &'static str,
@@ -333,6 +333,9 @@ pub enum UnitSlip {
     /// An aligning moment in kN·m (`rig_moment_knm.rs`).
     #[error(transparent)]
     RigMomentInKnm(#[from] super::rig_moment_knm::RigMomentInKnm),
+    /// A rig speed beyond any rig's (`rig_row.rs`).
+    #[error(transparent)]
+    RigSpeedBeyondAny(#[from] super::rig_row::RigSpeedBeyondAny),
     /// Slip angles in degrees under a linear fit (`slip_degrees.rs`).
     #[error(transparent)]
     SlipAngleInDegrees(#[from] super::slip_degrees::SlipAngleInDegrees),

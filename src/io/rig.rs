@@ -11,7 +11,8 @@
 
 use super::columns::Columns;
 use super::rig_checks::{
-    check_friction, check_grip, check_size, negative_speeds, sample_errors, take_sweeps, Taken,
+    check_friction, check_grip, check_size, negative_speeds, sample_errors, speed_beyond_any,
+    take_sweeps, Taken,
 };
 pub use super::rig_checks::{MAX_RIG_FORCE, MAX_RIG_MOMENT};
 use super::rig_rows::Known;
@@ -77,6 +78,7 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
     // said so; one negative among positive loads is a bad sample.
     errors.extend(super::rig_exchanged::negative_loads(path, &c, &fz));
     errors.extend(negative_speeds(path, &c));
+    errors.extend(speed_beyond_any(path, &c));
     let taken = take_sweeps(path, &mut c, fz, &mut errors)?;
     errors.extend(sample_errors(path, &c, &taken));
     refuse_all(path, errors)?;

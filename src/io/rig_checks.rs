@@ -1,5 +1,5 @@
 //! The per-sample checks of a tyre rig file ([`super::rig`]): negative
-//! speeds, angles in degrees, slip ratios in percent, forces and moments
+//! speeds and speeds beyond any rig's, angles in degrees, slip ratios in percent, forces and moments
 //! beyond any rig's, forces above any friction, and sweeps without grip.
 //! Each refusal names its cell; the checks of whole columns' units and
 //! the curves' signs stay with the reader.
@@ -7,7 +7,9 @@
 //! Units: N, N·m, rad, m/s, as in [`super::rig`].
 
 use super::columns::Columns;
-use crate::error::{InputError, InputProblem, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP};
+use crate::error::{
+    InputError, InputProblem, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
+};
 use std::f64::consts::FRAC_PI_2;
 use std::path::Path;
 
@@ -147,6 +149,27 @@ pub(super) fn negative_speeds(path: &Path, c: &Columns) -> Vec<InputError> {
         .filter(|(_, v)| v.is_finite() && **v < 0.0)
         .map(|(i, &value)| c.error_at(path, i, "speed", InputProblem::NegativeSpeed { value }))
         .collect()
+}
+
+/// A rig speed beyond [`crate::io::MAX_SPEED`] (the limit `metrics` holds
+/// a run's speed to), refused at its first row with the rows beyond it and
+/// the unit the column's median reads as a rig's speed in: a column in
+/// mm/s was read silently and written into a fitted `.tir` as `LONGVL`.
+pub(super) fn speed_beyond_any(path: &Path, c: &Columns) -> Option<InputError> {
+    let speed = c.get("speed")?;
+    let limit = crate::io::MAX_SPEED;
+    let beyond = |v: &f64| v.is_finite() && *v > limit;
+    let first = speed.iter().position(beyond)?;
+    let mut finite: Vec<f64> = speed.iter().copied().filter(|v| v.is_finite()).collect();
+    let median = crate::measured::clean::median(&mut finite);
+    let slip = crate::error::RigSpeedBeyondAny {
+        value: speed[first],
+        limit,
+        rows: speed.iter().filter(|v| beyond(v)).count(),
+        median,
+        unit: crate::error::RigSpeedUnit::of_median(median, limit),
+    };
+    Some(c.error_at(path, first, "speed", UnitSlip::from(slip).into()))
 }
 
 /// Takes the sweeps, the camber and the aligning moment; a file with

@@ -265,6 +265,7 @@ impl TirDocument {
         tyre.validate()
             .and_then(|()| ModelParameters::check_sizes(&tyre))
             .map_err(|e| self.value_error(self.declared_slip(&tyre, &units, e)))?;
+        self.reference_speed(&tyre)?;
         self.loads_against_nominal(&tyre, &units)?;
         Ok(tyre)
     }

@@ -66,7 +66,7 @@ const FILES: [&str; 5] = [
 /// another class of vehicle is a warning: [`far_from_load`]).
 fn given_tyre_notes(c: &crate::diagnose::Campaign) -> Vec<String> {
     use crate::jobs::simulate::checks;
-    let crate::diagnose::campaign::BaseTyres::Given(f, r) = &c.tyres else {
+    let crate::diagnose::campaign::BaseTyres::Given(f, r, _) = &c.tyres else {
         return Vec::new();
     };
     checks::tir_friction_of([f, r])
@@ -77,7 +77,7 @@ fn given_tyre_notes(c: &crate::diagnose::Campaign) -> Vec<String> {
 /// where far (None, None: none is).
 fn far_from_load(c: &crate::diagnose::Campaign) -> (Vec<String>, [Option<f64>; 2]) {
     use crate::jobs::simulate::{checks, nominal_load};
-    let crate::diagnose::campaign::BaseTyres::Given(f, r) = &c.tyres else {
+    let crate::diagnose::campaign::BaseTyres::Given(f, r, _) = &c.tyres else {
         return (Vec::new(), [None, None]);
     };
     let [front, rear] = nominal_load::far_from_nominal_of(&c.vehicle, [f, r]);

@@ -31,7 +31,7 @@ fn a_rig_test_below_the_cars_wheel_loads_is_noted_in_the_diagnosis() {
         .iter()
         .map(|n| n["kind"].as_str().unwrap())
         .collect();
-    assert!(!kinds.contains(&"rig_loads_short"), "{kinds:?}");
+    assert!(!kinds.contains(&"tyre_loads_short"), "{kinds:?}");
     assert!(!kinds.contains(&"rig_levels_pooled"), "{kinds:?}");
 
     std::fs::copy(&hoosier, own.join("tyre_rig.csv")).unwrap();
@@ -40,7 +40,7 @@ fn a_rig_test_below_the_cars_wheel_loads_is_noted_in_the_diagnosis() {
         .as_array()
         .unwrap()
         .iter()
-        .find(|n| n["kind"] == "rig_loads_short")
+        .find(|n| n["kind"] == "tyre_loads_short")
         .unwrap_or_else(|| panic!("{}", d["notes"]));
     // The sedan's static wheel loads: 1530 kg on a = 1.11, b = 1.67 m.
     let car: Vec<f64> = short["car"]
@@ -54,7 +54,7 @@ fn a_rig_test_below_the_cars_wheel_loads_is_noted_in_the_diagnosis() {
         (car[0] - g * 1.11).abs() < 0.5 && (car[1] - g * 1.67).abs() < 0.5,
         "{car:?}"
     );
-    let rig_top = short["rig"][1].as_f64().unwrap();
+    let rig_top = short["loads"][1].as_f64().unwrap();
     assert!(rig_top < 3000.0 && rig_top > 2500.0, "{short}");
     assert!(
         stdout.contains("the car's static wheel loads are 2995–4507 N (1.5"),

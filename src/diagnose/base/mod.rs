@@ -102,7 +102,7 @@ pub(super) fn base_models(
         prior: None,
     };
     match &c.tyres {
-        BaseTyres::Given(f, r) => Ok((
+        BaseTyres::Given(f, r, _) => Ok((
             fixed(make((**f).clone(), (**r).clone())),
             TyreSource::Given,
             None,

@@ -146,11 +146,24 @@ pub struct StatedFriction {
     pub line: usize,
 }
 
+/// A given tyre file: its path (as the campaign names it, resolved beside
+/// the campaign) and the wheel loads a TOML tyre states it was fitted at
+/// (`[fitted_ranges] fz`, N; None where it states none). A `.tir` carries
+/// its own (`FZMIN`, `FZMAX`) in its tyre.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TyreFile {
+    /// The file.
+    pub path: PathBuf,
+    /// Its `[fitted_ranges] fz`, N.
+    pub fitted_loads: Option<[f64; 2]>,
+}
+
 /// Where the base model's tyres come from.
 #[derive(Debug, Clone)]
 pub enum BaseTyres {
-    /// Given tyre files (front, rear).
-    Given(Box<Tyre>, Box<Tyre>),
+    /// Given tyre files (front, rear), and where each was read with the
+    /// loads it states it was fitted at.
+    Given(Box<Tyre>, Box<Tyre>, Box<[TyreFile; 2]>),
     /// Rig data and the model to fit to it.
     Rig {
         /// The data file (named in reports).
@@ -172,7 +185,7 @@ impl BaseTyres {
     pub fn linear(&self) -> bool {
         let linear = |t: &Tyre| matches!(t, Tyre::Linear(_));
         match self {
-            BaseTyres::Given(f, r) => linear(f) && linear(r),
+            BaseTyres::Given(f, r, _) => linear(f) && linear(r),
             BaseTyres::Rig { model, .. } => *model == ModelName::Linear,
             BaseTyres::FromRuns => false,
         }

@@ -1,44 +1,44 @@
-//! What a base tyre fitted to rig data cannot carry to the car, said as
-//! notes beside the diagnosis: rig loads that do not reach the car's
-//! static wheel loads (the fitted tyre is extrapolated there), and levels
-//! of pressure, camber or load pooled into one fit of a model without
-//! terms for them (the tyre is their blend). Either can leave a gap that
-//! is the tyre's, not an unmodelled effect's, so the reader is told
-//! before reading the verdict. `identify` warns of the pooling alike and
-//! `simulate` counts the rows beyond a tyre's fitted ranges. Units: N.
+//! What a base tyre cannot carry to the car, said as notes beside the
+//! diagnosis: static wheel loads beyond the loads the tyre was fitted at
+//! (the rig data's, or those its file states: [`super::tyre_loads`]), and
+//! levels of pressure, camber or load pooled into one fit of a model
+//! without terms for them (the tyre is their blend). Either can leave a
+//! gap that is the tyre's, not an unmodelled effect's, so the reader is
+//! told before reading the verdict. `identify` warns of the pooling alike
+//! and `simulate` counts the rows beyond a tyre's fitted ranges. Units: N.
 
+use super::tyre_loads::{given_loads_short, loads_short};
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::campaign::Campaign;
+use crate::diagnose::report::outcome::LoadRangeOf;
 use crate::diagnose::report::Note;
 use crate::identify::grouping::{GroupingReport, Variable};
 use crate::identify::pooled::Pooled;
 use crate::tyre::ModelName;
 
-/// How far beyond the rig's loads a static wheel load may lie before the
-/// tyre is said to be extrapolated: a level's spread and a tyre's smooth
-/// load law carry a tenth beyond the data without a change of shape.
-pub(crate) const LOAD_SLACK: f64 = 1.1;
-
-/// The notes on the base tyre of `source`, fitted to the rig data whose
-/// grouping is `grouping`, for the campaign's car.
+/// The notes on the base tyre of `source`: given files judged by the load
+/// ranges they state, a tyre fitted to the rig data whose grouping is
+/// `grouping` by the rig's loads and the levels it pools.
 pub(crate) fn rig_notes(
     c: &Campaign,
     source: &TyreSource,
     grouping: Option<&GroupingReport>,
 ) -> Vec<Note> {
     let (TyreSource::Rig { model, .. }, Some(g)) = (source, grouping) else {
-        return Vec::new();
+        return given_loads_short(c);
     };
     let (front, rear) = c.vehicle.static_axle_loads();
     let car = [0.5 * front.min(rear), 0.5 * front.max(rear)];
-    let mut notes: Vec<Note> = loads_short(g, car).into_iter().collect();
+    let mut notes: Vec<Note> = rig_loads(g)
+        .and_then(|loads| loads_short(LoadRangeOf::Rig, loads, car))
+        .into_iter()
+        .collect();
     notes.extend(pooled(*model, g));
     notes
 }
 
-/// The rig's load range where the car's static wheel loads `car` (least,
-/// largest, N) leave it by more than [`LOAD_SLACK`].
-fn loads_short(g: &GroupingReport, car: [f64; 2]) -> Option<Note> {
+/// The rig data's least and largest wheel load, N, over its load levels.
+fn rig_loads(g: &GroupingReport) -> Option<[f64; 2]> {
     let levels = g.levels.iter().find(|l| l.variable == Variable::Load)?;
     let lo = levels
         .levels
@@ -46,8 +46,7 @@ fn loads_short(g: &GroupingReport, car: [f64; 2]) -> Option<Note> {
         .map(|l| l.lo)
         .fold(f64::INFINITY, f64::min);
     let hi = levels.levels.iter().map(|l| l.hi).fold(0.0, f64::max);
-    let beyond = car[1] > hi * LOAD_SLACK || car[0] * LOAD_SLACK < lo;
-    (lo.is_finite() && hi > 0.0 && beyond).then_some(Note::RigLoadsShort { rig: [lo, hi], car })
+    (lo.is_finite() && hi > 0.0).then_some([lo, hi])
 }
 
 /// The levels `model` pools into its one fit.
@@ -114,11 +113,14 @@ mod tests {
         // A formula-student rig test (up to about 2900 N) under a sedan's
         // wheels (3000–4500 N static).
         let g = grouping(&[400.0, 1100.0, 1650.0, 2850.0], 1);
-        let n = loads_short(&g, [2995.0, 4507.0]).expect("a note");
+        let loads = rig_loads(&g).expect("a load range");
+        assert_eq!(loads, [0.97 * 400.0, 1.03 * 2850.0]);
+        let n = loads_short(LoadRangeOf::Rig, loads, [2995.0, 4507.0]).expect("a note");
         assert_eq!(
             n,
-            Note::RigLoadsShort {
-                rig: [0.97 * 400.0, 1.03 * 2850.0],
+            Note::TyreLoadsShort {
+                of: LoadRangeOf::Rig,
+                loads: [0.97 * 400.0, 1.03 * 2850.0],
                 car: [2995.0, 4507.0]
             }
         );
@@ -127,10 +129,12 @@ mod tests {
     #[test]
     fn a_car_within_the_rig_loads_or_a_tenth_beyond_is_not() {
         let g = grouping(&[2000.0, 4000.0, 6000.0], 1);
-        assert_eq!(loads_short(&g, [2995.0, 4507.0]), None);
+        let loads = rig_loads(&g).expect("a load range");
+        let short = |car| loads_short(LoadRangeOf::Rig, loads, car);
+        assert_eq!(short([2995.0, 4507.0]), None);
         // 6180 N is the largest load measured: 1.09× it is within the slack.
-        assert_eq!(loads_short(&g, [2995.0, 6180.0 * 1.09]), None);
-        assert!(loads_short(&g, [2995.0, 6180.0 * 1.11]).is_some());
+        assert_eq!(short([2995.0, 6180.0 * 1.09]), None);
+        assert!(short([2995.0, 6180.0 * 1.11]).is_some());
     }
 
     #[test]

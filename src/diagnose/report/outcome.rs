@@ -459,7 +459,7 @@ mod note;
 pub use crate::error::Unseen;
 pub use change::{above_noise, ChannelChange, SIGNIFICANT_NOISE_FLOORS, WORSENED};
 pub use channel::{CarriedBy, ChannelCause, ChannelLeft, ChannelWorsened, RunShare, RunsCarrying};
-pub use note::{Note, VehicleLimit};
+pub use note::{LoadRangeOf, Note, TyreAxles, VehicleLimit};
 
 /// A finding on where the base model's gap lies.
 #[derive(Debug, Clone, PartialEq, Serialize)]

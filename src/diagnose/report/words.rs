@@ -22,6 +22,7 @@ mod rank;
 mod runs_left;
 mod table;
 mod trust;
+mod tyre_loads;
 mod warnings;
 pub use crate::diagnose::report::shares::carries_line as channel_shares;
 use crate::identify::grouping::Variable;
@@ -356,15 +357,7 @@ pub fn note(n: &Note) -> String {
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),
-        Note::RigLoadsShort { rig, car } => format!(
-            "the rig data's wheel loads span {:.0}–{:.0} N and the car's static wheel loads are {:.0}–{:.0} N ({:.2}× the rig's {}): the base tyre fitted to them is extrapolated to the car's loads, so a gap may be the tyre's rather than an unmodelled effect's (rig data at the car's loads, or tyre files under [tyres], close it)",
-            rig[0],
-            rig[1],
-            car[0],
-            car[1],
-            if car[1] > rig[1] { car[1] / rig[1] } else { car[0] / rig[0] },
-            if car[1] > rig[1] { "largest" } else { "least" },
-        ),
+        Note::TyreLoadsShort { of, loads, car } => tyre_loads::note(of, *loads, *car),
         Note::RigLevelsPooled {
             variable,
             levels,

@@ -110,6 +110,9 @@ pub enum Limit {
     /// A manoeuvre's speed, m/s.
     #[error("the model evaluates no speed below 0.5 m/s (its slip angles divide by the speed; a slower run would run at 0.5 m/s), and a manoeuvre on a road runs below 150 m/s (540 km/h), beyond which the tyre models and the 2-DOF model are far outside what they were made for")]
     ManoeuvreSpeed,
+    /// A `.tir`'s reference speed `LONGVL`, m/s.
+    #[error("LONGVL is the speed the file's measurements were taken at, in m/s (the [UNITS] LENGTH per TIME), and no tyre rig or car runs beyond 150 m/s (540 km/h), the limit a rig file's and a run's speed keep to: is it in km/h (÷ 3.6) or mm/s (÷ 1000)?")]
+    ReferenceSpeed,
     /// A steer frequency, Hz.
     #[error("no handling manoeuvre steers faster than 50 Hz (a driver steers below about 5 Hz, handling tests sweep to a few hertz); a faster steer only multiplies the integration steps (is the value in rad/s, or a sample rate?)")]
     SteerFrequency,

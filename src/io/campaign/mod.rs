@@ -51,6 +51,7 @@ use super::tables::{
 };
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
+use crate::diagnose::campaign::TyreFile;
 pub use crate::diagnose::campaign::{
     BaseTyres, Campaign, DiagnoseSettings, SensorPositions, StatedUncertainty,
 };
@@ -491,6 +492,14 @@ fn model_without_rig(src: &TomlSource, spec: &TyreSpec, rig_found: bool) -> Resu
     )))
 }
 
+/// A given tyre file read from `path` with its `[fitted_ranges]`: the
+/// loads it states it was fitted at, which the diagnosis notes a car's
+/// wheels leaving.
+fn tyre_file(path: PathBuf, ranges: Option<super::fitted_ranges::FittedRanges>) -> TyreFile {
+    let fitted_loads = ranges.and_then(|r| r.fz);
+    TyreFile { path, fitted_loads }
+}
+
 /// Where the base tyres come from: tyre files, rig data (read here) with
 /// the model to fit, or nothing (axles identified from the runs).
 fn base_tyres(
@@ -510,9 +519,15 @@ fn base_tyres(
             src.referenced_tyre("tyres.file", &t, true)?;
             // One file on both axles: checked at the heavier wheel.
             let (front, rear) = static_wheel_loads(&f.vehicle);
-            let mut t = load_axle_tyre(&t, front.max(rear))?.0;
-            apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
-            return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
+            let (mut tyre, ranges) = load_axle_tyre(&t, front.max(rear))?;
+            apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut tyre])?;
+            let file = tyre_file(t, ranges);
+            let files = Box::new([file.clone(), file]);
+            return Ok(BaseTyres::Given(
+                Box::new(tyre.clone()),
+                Box::new(tyre),
+                files,
+            ));
         }
         // `rear` defaults to `front`, as a scenario's does (noted where
         // the campaign is read); a campaign had refused it.
@@ -525,9 +540,11 @@ fn base_tyres(
                 src.referenced_tyre("tyres.rear", &re, true)?;
             }
             let (front, rear) = static_wheel_loads(&f.vehicle);
-            let (mut f, mut r) = (load_axle_tyre(&fr, front)?.0, load_axle_tyre(&re, rear)?.0);
+            let ((mut f, fr_ranges), (mut r, re_ranges)) =
+                (load_axle_tyre(&fr, front)?, load_axle_tyre(&re, rear)?);
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
-            return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
+            let files = Box::new([tyre_file(fr, fr_ranges), tyre_file(re, re_ranges)]);
+            return Ok(BaseTyres::Given(Box::new(f), Box::new(r), files));
         }
         (None, None, None, Some(rig)) => {
             let rig = beside(base, rig);

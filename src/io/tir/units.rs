@@ -118,6 +118,18 @@ impl Units {
 pub const LOAD_OVER_NOMINAL: (f64, f64) = (1e-3, 20.0);
 
 impl TirDocument {
+    /// Ok when the file's reference speed `LONGVL` (SI in `tyre`) is one a
+    /// rig runs at, within [`crate::io::MAX_SPEED`] (the limit of a rig
+    /// file's and a run's speed): a fit to a rig file in mm/s wrote
+    /// `LONGVL = 11169.9`, which `tyre-eval` then read silently. Refused at
+    /// the key's line.
+    pub(super) fn reference_speed(&self, tyre: &MagicFormula) -> Result<(), InputError> {
+        let v = tyre.coefficients.LONGVL;
+        let limit = crate::io::MAX_SPEED;
+        ParamError::in_range("LONGVL", v, 0.0, limit, Limit::ReferenceSpeed)
+            .map_err(|e| self.value_error(e))
+    }
+
     /// Ok when the file's load range (`FZMIN`, `FZMAX`, SI in `tyre`) lies
     /// within [`LOAD_OVER_NOMINAL`] of its `FNOMIN` (0 is no floor): a
     /// `FZMAX = 8000` (N) beside `FNOMIN = 4` under `FORCE = 'kN'` passes

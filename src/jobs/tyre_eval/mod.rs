@@ -84,7 +84,7 @@ mod points;
 mod pressure;
 mod radius;
 mod ranges;
-pub use ranges::{mf_inputs, ranges_left, FirstAt, RangeLeft};
+pub use ranges::{mf_inputs, ranges_left, CamberHint, FirstAt, RangeLeft};
 mod reads;
 pub use reads::{read_ranges, reads, Reads};
 mod rolling;

@@ -39,10 +39,82 @@ pub struct RangeLeft {
     /// Below `FZMIN` of a file whose rolling resistance does not depend on
     /// the load (`QSY7 = 0`): its `my` at the first such point, N·m.
     pub load_free_my: Option<f64>,
-    /// A camber range every tilted point leaves, each of which read in
-    /// degrees lies inside it: the column reads as degrees (0.5 meant as
-    /// 0.5° is 28.6° in radians, where `physical.rs` asks only past 20°).
-    pub degrees_inside: bool,
+    /// What the camber range says of the points leaving it
+    /// ([`CamberHint`]; `None` for any other range).
+    pub camber_hint: CamberHint,
+}
+
+/// The least span of a camber range, rad (1°), that a column read in
+/// degrees is asked of: a file fitted at one camber (`identify` writes the
+/// rig rows' range, −0.00036 to 0.00045 rad for the Hoosier test at 0°)
+/// holds every camber of a column in degrees inside it read as degrees
+/// (0.02° = 0.00035 rad), and a correct 0.02 rad was asked as degrees.
+pub const DEGREES_HINT_SPAN: f64 = std::f64::consts::PI / 180.0;
+
+/// What a camber range some points leave says of them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CamberHint {
+    /// Nothing beyond the range's words.
+    None,
+    /// A range spanning at least [`DEGREES_HINT_SPAN`] that every tilted
+    /// point leaves far, each of which read in degrees lies inside it: the
+    /// column reads as degrees (0.5 meant as 0.5° is 28.6° in radians,
+    /// where `physical.rs` asks only past 20°).
+    Degrees,
+    /// A range narrower than [`DEGREES_HINT_SPAN`]: the tyre was fitted at
+    /// one camber, its middle (rad), and no unit makes a point another.
+    OneLevel {
+        /// The camber the tyre was fitted at, rad (0 where the range holds 0).
+        camber: f64,
+    },
+}
+
+impl CamberHint {
+    /// The hint of `range` (a camber range of `tyre`) that the points
+    /// `inputs` leave.
+    fn of(tyre: &MagicFormula, range: &InputRange, inputs: &[MfInput]) -> Self {
+        if range.column != "camber" {
+            return CamberHint::None;
+        }
+        match (range.lo, range.hi) {
+            (Some(lo), Some(hi)) if hi - lo < DEGREES_HINT_SPAN => CamberHint::OneLevel {
+                camber: if lo <= 0.0 && hi >= 0.0 {
+                    0.0
+                } else {
+                    0.5 * (lo + hi)
+                },
+            },
+            _ if camber_reads_as_degrees(tyre, inputs) => CamberHint::Degrees,
+            _ => CamberHint::None,
+        }
+    }
+
+    /// Its words after those of `range`, the camber range it is of.
+    fn said(self, range: &InputRange) -> String {
+        match self {
+            CamberHint::None => String::new(),
+            CamberHint::Degrees => "; every camber of the points other than 0 lies outside the range, and read in degrees every one lies inside it: angles are in radians (FORMATS.md); is the column in degrees?".to_string(),
+            CamberHint::OneLevel { camber } => {
+                let at = match camber == 0.0 {
+                    true => "0".to_string(),
+                    false => format!(
+                        "{} rad ({}°)",
+                        rounded(camber, 4),
+                        rounded(camber.to_degrees(), 3)
+                    ),
+                };
+                let end = |v: Option<f64>| v.map_or(String::new(), |v| rounded(v, 4));
+                format!(
+                    "; the tyre was fitted at camber {at} only ({} to {}, {} to {} rad, a range under 1°): its camber terms describe no other camber, in any unit",
+                    range.keys[0],
+                    range.keys[1],
+                    end(range.lo),
+                    end(range.hi),
+                )
+            }
+        }
+    }
 }
 
 /// The Magic Formula inputs of the point columns `[fz, kappa, alpha,
@@ -95,8 +167,7 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
                     load_free_my: (below && range.column == "fz")
                         .then(|| load_free_my(tyre, q))
                         .flatten(),
-                    degrees_inside: range.column == "camber"
-                        && camber_reads_as_degrees(tyre, inputs),
+                    camber_hint: CamberHint::of(tyre, &range, inputs),
                 }),
             }
         }
@@ -108,7 +179,7 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
 }
 
 /// Whether every point of `inputs` at a camber other than 0 leaves the
-/// file's camber range far (at least twice the size of the end it
+/// file's camber range (at least [`DEGREES_HINT_SPAN`] wide) far (at least twice the size of the end it
 /// passes) and each, read in degrees, lies inside it: a column of small
 /// cambers in degrees (0.3, 0.5, 2) evaluated at `CAMMAX` without a word
 /// on its unit otherwise. A camber just past an end (3.22° given as
@@ -192,10 +263,7 @@ impl RangeLeft {
             ("fz", true) => (self.below_fzmin(), String::new()),
             _ => ("evaluated at that end".to_string(), format!(" given, evaluated at {}{unit}", end(bound))),
         };
-        let degrees = match self.degrees_inside {
-            true => "; every camber of the points other than 0 lies outside the range, and read in degrees every one lies inside it: angles are in radians (FORMATS.md); is the column in degrees?",
-            false => "",
-        };
+        let degrees = self.camber_hint.said(r);
         format!(
             "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at {} {}, {} = {}{unit}{given}{degrees}",
             self.points,

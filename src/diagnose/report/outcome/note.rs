@@ -1,7 +1,7 @@
 //! The notes on a diagnosis's inputs (the campaign reader's, the
 //! candidates the runs cannot show, the replay method, the channel
-//! uncertainties stated, a base tyre fitted to rig data of other loads or
-//! pooled levels), typed; [`crate::diagnose::report::words::note`] says
+//! uncertainties stated, a base tyre used beyond the loads it was fitted
+//! at, a base tyre fitted to rig data of pooled levels), typed; [`crate::diagnose::report::words::note`] says
 //! them. Units: SI, as each field states.
 
 use crate::diagnose::effects::EffectKind;
@@ -79,12 +79,18 @@ pub enum Note {
     /// channel shows of itself: a gap below it is insignificant by the
     /// statement.
     UncertaintyAboveOwn(crate::diagnose::model::scale::StatedExcess),
-    /// Rig data whose wheel loads do not reach the car's static wheel
-    /// loads: the base tyre fitted to them is extrapolated there.
-    RigLoadsShort {
-        /// The rig data's least and largest wheel load, N.
-        rig: [f64; 2],
-        /// The car's least and largest static wheel load, N.
+    /// A base tyre whose load range (the rig data's it is fitted to, or
+    /// the one its file states) the car's static wheel loads leave: the
+    /// tyre is used at loads it was not fitted at
+    /// (`crate::diagnose::pipeline`'s `tyre_loads`).
+    TyreLoadsShort {
+        /// Where the range comes from.
+        of: LoadRangeOf,
+        /// The range's least and largest load, N (a `.tir` without `FZMIN`
+        /// 0, without `FZMAX` unbounded, written `null`).
+        loads: [f64; 2],
+        /// The car's least and largest static wheel load on the axles the
+        /// tyre is on, N.
         car: [f64; 2],
     },
     /// Levels of the rig data pooled into one fit of a model without
@@ -120,6 +126,55 @@ pub enum Note {
         /// Samples judged.
         samples: usize,
     },
+}
+
+/// Where a base tyre's load range comes from ([`Note::TyreLoadsShort`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum LoadRangeOf {
+    /// The wheel loads of the rig data the tyre is fitted to.
+    Rig,
+    /// A TOML tyre file's `[fitted_ranges] fz` (`identify` writes it).
+    Fitted {
+        /// The file, as the campaign names it.
+        file: String,
+        /// The axles it is on.
+        axles: TyreAxles,
+    },
+    /// A `.tir`'s `FZMIN`–`FZMAX`.
+    Tir {
+        /// The file, as the campaign names it.
+        file: String,
+        /// The axles it is on.
+        axles: TyreAxles,
+        /// Its mode's limit checks (1xx) are on: a load beyond `FZMAX` is
+        /// evaluated at `FZMAX`, not extrapolated.
+        limit_checks: bool,
+    },
+}
+
+/// The axles a given tyre file is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TyreAxles {
+    /// Both (`[tyres] file`, or one file as `front` and `rear`).
+    Both,
+    /// The front (`[tyres] front`).
+    Front,
+    /// The rear (`[tyres] rear`).
+    Rear,
+}
+
+impl TyreAxles {
+    /// Its words: the car's static wheel loads of `both`, of the `front`
+    /// wheels, of the `rear` wheels.
+    pub fn wheels(self) -> &'static str {
+        match self {
+            TyreAxles::Both => "the car's static wheel loads",
+            TyreAxles::Front => "the car's static front wheel load",
+            TyreAxles::Rear => "the car's static rear wheel load",
+        }
+    }
 }
 
 /// A limit of the campaign's vehicle or road that its runs pass.

@@ -183,7 +183,7 @@ fn the_swarm_sigma_line_says_what_was_held_after_the_swarm() {
 /// A linear fit of one level of the Hoosier file with `args`, into
 /// `dir/l.toml`: the run's output.
 fn linear_fit(rig: &Path, dir: &Path, args: &[&str]) -> Output {
-    let mut all = vec!["--fz", "1656", "--camber", "0", "--pressure", "83400"];
+    let mut all = vec!["--load", "1656", "--camber", "0", "--pressure", "83400"];
     all.extend_from_slice(args);
     identify_with(rig, "linear", &all, &dir.join("l.toml"))
 }

@@ -119,10 +119,20 @@ impl Partner {
         let bound = self.on_bound.map_or(String::new(), |b| {
             format!(", itself on its physical bound {}", crate::format::exact(b))
         });
+        // Four digits, or as many more as keep a correlation short of ±1
+        // from reading as ±1 (−0.99998 is not "−1").
+        let r = self.correlation;
+        let short_of_one = |t: &String| {
+            let v = t.parse::<f64>().ok();
+            r.abs() == 1.0 || v.filter(|v| v.abs() >= 1.0).is_none()
+        };
+        let said = (4..=12)
+            .map(|d| crate::format::rounded(r, d))
+            .find(short_of_one)
+            .unwrap_or_else(|| crate::format::rounded(r, 12));
         format!(
-            "it trades with {}{bound} (correlation {} at the fit)",
-            self.name,
-            crate::format::rounded(self.correlation, 4)
+            "it trades with {}{bound} (correlation {said} at the fit)",
+            self.name
         )
     }
 }
@@ -216,6 +226,16 @@ mod tests {
         assert!(
             w.contains("it trades with PKY4, itself on its physical bound 0.1 (correlation 0.95 at the fit)"),
             "{w}"
+        );
+        // QSX10 against QSX11 on the book's rig: −0.99998 is not "−1".
+        let near = Partner {
+            name: "QSX11",
+            correlation: -0.999984,
+            on_bound: None,
+        };
+        assert_eq!(
+            near.said(),
+            "it trades with QSX11 (correlation -0.99998 at the fit)"
         );
         let alone = Determination::FixedBeyondLinearisation {
             effect_percent: 1500.0,

@@ -17,18 +17,19 @@
 use super::trips_s69_identify::hoosier;
 use super::*;
 
-/// The book's example: MFeval's MF 6.1 file evaluated on the book's grid
-/// by `tyre-eval`, identified as mf61 into `dir/fit.tir`: the terminal,
-/// the written file and its report.
-fn book_fit(dir: &Path) -> (String, String, serde_json::Value) {
-    let rig = dir.join("mf_rig.csv");
-    mf61_evaluated(&root().join("docs/examples/mf_grid.csv"), &rig);
+/// The book's example: MFeval's MF 6.1 file (the shared copy, as the
+/// tester's `mf_rig.csv` was made) evaluated on the book's grid by
+/// `tyre-eval`, identified as mf61 into `dir/fit.tir`: the terminal, the
+/// written file and its report; `None` where the shared data are absent.
+fn book_fit(test: &str, dir: &Path) -> Option<(String, String, serde_json::Value)> {
+    let tir = shared_data(test, "tir_public/MagicFormula61_Paramerters.tir")?;
+    let rig = grid_rig(&tir, dir);
     let out = dir.join("fit.tir");
     let o = identify_to(&rig, "mf61", &out);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout).into_owned();
     let tir = fs::read_to_string(&out).unwrap();
-    (said, tir, read_json(&out.with_extension("report.json")))
+    Some((said, tir, read_json(&out.with_extension("report.json"))))
 }
 
 /// Every fitted coefficient of the report's stages whose determination
@@ -59,8 +60,11 @@ fn warning_line<'a>(said: &'a str, name: &str) -> &'a str {
 /// ±2 (or without a standard error) keeps the other words.
 #[test]
 fn a_coefficient_a_refused_hold_shows_fixed_is_not_called_not_identifiable() {
+    let test = "a_coefficient_a_refused_hold_shows_fixed_is_not_called_not_identifiable";
     let dir = tempfile::tempdir().unwrap();
-    let (said, tir, report) = book_fit(dir.path());
+    let Some((said, tir, report)) = book_fit(test, dir.path()) else {
+        return;
+    };
     let fixed = determined(&report, "fixed-beyond-linearisation");
     let names: Vec<&str> = fixed.iter().map(|p| p["name"].as_str().unwrap()).collect();
     assert!(names.contains(&"QSX10"), "{names:?}: {said}");

@@ -68,7 +68,8 @@ pub struct IdentifyArgs {
     /// held at the template's value or Pacejka's (2012) book default, and
     /// said so); for the other models one of the parameters of the tyre
     /// file it writes, in its units, e.g. --hold a1=-22.1 for pac89
-    /// (PAC89's two-stage identification is then not run).
+    /// (PAC89's two-stage identification is then not run), or --hold
+    /// pneumatic_trail=0.03 for linear (held there, not fitted to mz).
     #[arg(long)]
     hold: Vec<String>,
 }

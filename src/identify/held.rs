@@ -345,9 +345,29 @@ pub(crate) fn bounds_in(t: &Tyre, name: &str) -> Option<(f64, f64)> {
     c.bounds(t).get(i).copied()
 }
 
-/// `t` with its parameter `name` (any block a fit fits) set to `v`;
-/// `None` when no block of `t` has it.
+/// The parameters of `t`'s file that no channel's fit fits but that
+/// `--hold` may set: a linear tyre's pneumatic trail, taken after its
+/// lateral fit from `mz` (`jobs/identify/linear_window.rs`), or held at
+/// the value given.
+pub(crate) fn set_after_fits(t: &Tyre) -> &'static [&'static str] {
+    match t {
+        Tyre::Linear(_) => &[LINEAR_TRAIL],
+        _ => &[],
+    }
+}
+
+/// The linear tyre's pneumatic trail's name, as its file and `--hold`
+/// give it.
+pub(crate) const LINEAR_TRAIL: &str = "pneumatic_trail";
+
+/// `t` with its parameter `name` (any block a fit fits, or one set after
+/// the fits: [`set_after_fits`]) set to `v`; `None` when `t` has none.
 pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {
+    if let (Tyre::Linear(l), LINEAR_TRAIL) = (t, name) {
+        let mut l = l.clone();
+        l.pneumatic_trail = v;
+        return Some(Tyre::Linear(l));
+    }
     let (c, i) = place_of(t, name)?;
     let mut p = c.parameters(t);
     p[i] = v;

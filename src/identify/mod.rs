@@ -41,7 +41,7 @@ mod undetermined;
 pub(crate) use undetermined::hold_undetermined;
 use undetermined::Spread;
 
-pub(crate) use held::{bounds_in, value_in, with_value};
+pub(crate) use held::{bounds_in, set_after_fits, value_in, with_value, LINEAR_TRAIL};
 pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 

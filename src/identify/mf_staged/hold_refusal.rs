@@ -3,7 +3,9 @@
 //! (the template's, or Pacejka's (2012) book default), or at the end of
 //! the free fit's ±2 standard errors nearest it, the rest refitted, and
 //! the refit raised the stage's σ past what a hold may cost. The
-//! coefficient stays free with its "not identifiable" warning; this says
+//! coefficient stays free with its warning ("not identifiable", or, where
+//! the value tried lay within its linearised ±2 standard errors, fixed by
+//! the data beyond that linearisation: `determination.rs`); this says
 //! why it was not held: the value tried and where it comes from, the σ
 //! free and held (%, of the channel's RMS) against the σ the guard
 //! allows, which of the guard's two limits set it, and what the user can
@@ -189,23 +191,31 @@ impl RefusedHold {
             // Tried at the stated value and refused by the refit. Within
             // the free fit's ±2 by its linearisation, the standard error
             // (the cost's curvature at the free fit) understates how well
-            // the data fix it; past it, the data reject it. Either way no
-            // more data are asked for, and nothing is "allowed".
+            // the data fix it, as the coefficient's own words say before
+            // these (`determination.rs`); past it, the data reject it.
+            // Either way no more data are asked for, and nothing is
+            // "allowed".
             Some(z) if self.tried_at == self.stated => {
-                let (side, tail) = match z <= LEAN_STANDARD_ERRORS {
-                    true => (" by its linearisation", ": the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values)"),
-                    false => (", outside its linearised ±2", ""),
+                let side = match z <= LEAN_STANDARD_ERRORS {
+                    true => " by its linearisation",
+                    false => ", outside its linearised ±2",
                 };
                 format!(
-                    "a hold was tried and refused: held at {source} {}, {} standard errors from the free fit{side}, {rose}{tail}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know",
+                    "a hold was tried and refused: held at {source} {}, {} standard errors from the free fit{side}, {rose}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know",
                     exact(self.stated),
                     z_text(z)
                 )
             }
+            // Tried at the edge of the ±2 and refused: the data fix it
+            // more tightly than that (`determination.rs`), and more data
+            // are not what it lacks.
             _ => format!(
-                "a hold was tried and refused: {}, {rose}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know, or fit data with {}, which determine it",
+                "a hold was tried and refused: {}, {rose}, so it is left free where the fit put it; to hold it, give --hold {name}=VALUE with a value you know{}",
                 held_at(&source, self.stated, self.tried_at, self.standard_errors_away),
-                more.join(" and ")
+                match self.within_linearisation() {
+                    true => String::new(),
+                    false => format!(", or fit data with {}, which determine it", more.join(" and ")),
+                }
             ),
         }
     }
@@ -236,7 +246,7 @@ mod tests {
         let w = refused(GuardLimit::SigmaRise, -8000.0).said("PKY1", Stage::PureFy);
         assert_eq!(
             w,
-            "a hold was tried and refused: held at the template's value -8000, 0.5 standard errors from the free fit by its linearisation, the rest refitted, σ rose from 1.683 % to 1.912 %, past the 1.767 % a hold may reach (σ rising by 5 % of itself, the larger of the guard's two limits here): the data fix it more tightly than its standard error says (the cost is far from quadratic between the two values), so it is left free where the fit put it; to hold it, give --hold PKY1=VALUE with a value you know"
+            "a hold was tried and refused: held at the template's value -8000, 0.5 standard errors from the free fit by its linearisation, the rest refitted, σ rose from 1.683 % to 1.912 %, past the 1.767 % a hold may reach (σ rising by 5 % of itself, the larger of the guard's two limits here), so it is left free where the fit put it; to hold it, give --hold PKY1=VALUE with a value you know"
         );
         // Past the ±2 and tried there: rejected, nothing "allowed".
         let mut far = refused(GuardLimit::SigmaRise, -8000.0);

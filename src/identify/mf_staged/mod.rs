@@ -105,6 +105,7 @@
 
 mod book_defaults;
 mod curvature_clip;
+mod determination;
 mod fit_warnings;
 mod hold_guard;
 mod hold_refusal;
@@ -126,6 +127,7 @@ mod uncertainty;
 
 pub use book_defaults::pacejka_book_default;
 pub use curvature_clip::{AtClip, CurvatureFactor};
+pub use determination::{Determination, Partner};
 pub use hold_refusal::{GuardLimit, MoreData, RefusedHold};
 pub use holds::{HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
@@ -365,6 +367,8 @@ pub struct StageParameter {
     /// The physical bound a fitted parameter ends on (the fit would take
     /// it beyond: the value is the bound's, not the data's).
     pub on_bound: Option<f64>,
+    /// How the data determine it (fitted parameters; `determination.rs`).
+    pub determination: Option<Determination>,
     /// An identifiability warning.
     pub warning: Option<String>,
     /// A hold of this free parameter the guard refused: the value tried,

@@ -5,6 +5,7 @@
 //! warnings at the optimum (`uncertainty.rs`).
 
 use super::curvature_clip::at_clip;
+use super::determination::determination;
 use super::hold_rounds::{hold_undetermined, HoldOutcome, StageFit};
 use super::holds::{held_reason, HoldReason};
 use super::params::{names_of, physical_bounds, Need, Stage};
@@ -317,29 +318,35 @@ fn stage_parameters(
                 .or_else(|| run.holding.given(name).map(|_| HoldReason::Given))
                 .or_else(|| held_reason(name, *need, have));
             let on_bound = fitted.and_then(|k| at_bound(fit.p[k], fit.bounds[k]));
+            // Free after its hold was refused: what was tried, and what it
+            // cost (`hold_refusal.rs`).
+            let hold_refused = fitted.and_then(|_| {
+                let r = holds.refused.iter().find(|r| r.0 == *name);
+                r.map(|r| r.1.clone())
+            });
+            let determination =
+                fitted.map(|k| determination(fit, u, (k, value), hold_refused.as_ref()));
+            let std_error = fitted.and_then(|k| u.std_error[k]);
+            let beyond = determination.as_ref().and_then(|d| d.said(std_error));
             StageParameter {
                 name,
                 on_bound,
                 value,
                 start: fitted.map_or(value, |k| fit.starts[k]),
                 free: fitted.is_some(),
-                std_error: fitted.and_then(|k| u.std_error[k]),
+                std_error,
                 held: if fitted.is_some() { None } else { because },
+                determination,
                 // On its bound, the standard error means nothing: said
-                // first, as the swarm fits say it.
+                // first, as the swarm fits say it; fixed beyond its
+                // linearisation, neither does it, and it is not called
+                // not identifiable (`determination.rs`).
                 warning: on_bound
                     .zip(fitted)
                     .map(|(_, k)| bound_warning(fit.bounds[k]))
+                    .or(beyond)
                     .or_else(|| fitted.and_then(|k| u.warning(k, value))),
-                // Free after its hold was refused: what was tried, and
-                // what it cost (`hold_refusal.rs`).
-                hold_refused: fitted.and_then(|_| {
-                    holds
-                        .refused
-                        .iter()
-                        .find(|r| r.0 == *name)
-                        .map(|r| r.1.clone())
-                }),
+                hold_refused,
             }
         })
         .collect()

@@ -71,6 +71,22 @@ impl Uncertainty {
         self.remaining < 0.05 * self.s2
     }
 
+    /// The free parameter whose estimate is most correlated with `k`'s,
+    /// with the correlation `Σ_jk/sqrt(Σ_jj·Σ_kk)` (the columns' scaling
+    /// cancels), where its magnitude reaches `least`.
+    pub(super) fn partner(&self, k: usize, least: f64) -> Option<(usize, f64)> {
+        let c = self.scaled_cov.as_ref()?;
+        let seen = |j: usize| self.norms[j] > 0.0 && c[(j, j)] > 0.0;
+        if !seen(k) {
+            return None;
+        }
+        (0..self.norms.len())
+            .filter(|&j| j != k && seen(j))
+            .map(|j| (j, c[(j, k)] / (c[(j, j)] * c[(k, k)]).sqrt()))
+            .filter(|(_, r)| r.is_finite() && r.abs() >= least)
+            .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+    }
+
     /// Whether free parameter `k`, at `value`, is not identifiable.
     pub(super) fn flagged(&self, k: usize, value: f64) -> bool {
         match self.std_error[k] {
@@ -232,7 +248,7 @@ pub(super) const ABSURD_EFFECT_PERCENT: f64 = 1000.0;
 
 /// One standard error's effect, `percent` of the channel's RMS, in words:
 /// its digits up to [`ABSURD_EFFECT_PERCENT`], a bound past it.
-fn effect_words(percent: f64) -> String {
+pub(super) fn effect_words(percent: f64) -> String {
     if percent < ABSURD_EFFECT_PERCENT {
         format!("{percent:.1} % of the channel's RMS")
     } else {

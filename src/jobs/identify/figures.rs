@@ -29,7 +29,7 @@ pub(super) fn fit_figure(r: &SwarmReport) -> Figure {
     }
     // A linear tyre's trail is fitted to `mz` too (over the window's
     // points), and drawn as the other fits are.
-    let trail = r.linear_window.as_ref().and_then(|w| w.pneumatic_trail);
+    let trail = r.linear_window.as_ref().and_then(|w| w.judged_trail());
     if r.aligning.is_some() || trail.is_some() {
         channels.push((Channel::AligningMoment, &r.conditions));
     }

@@ -58,8 +58,12 @@ pub struct LinearWindow {
     pub points_fitted: usize,
     /// Points left out, with |α| above the window.
     pub points_left_out: usize,
-    /// The pneumatic trail fitted in the window, m (`None`: no `mz`, held at 0).
+    /// The pneumatic trail fitted in the window, m (`None`: no `mz`, held at
+    /// 0, or given with `--hold`).
     pub pneumatic_trail: Option<f64>,
+    /// The pneumatic trail given with `--hold pneumatic_trail=VALUE`, m,
+    /// held there and not fitted (`None`: not given).
+    pub trail_given: Option<f64>,
     /// The σ of the aligning moment `t_p·Fy` against the measured `mz`
     /// over the window's points with one, % (`None`: no `mz`), as the
     /// figure's aligning panel gives it.
@@ -129,14 +133,15 @@ impl LinearWindow {
     /// The lines said on the terminal (`mark` `" "`) and in the file's
     /// header (`mark` `"#"`).
     pub(crate) fn lines(&self, mark: &str) -> Vec<String> {
-        let trail = match self.pneumatic_trail {
-            Some(t) => format!(
+        let trail = match (self.trail_given, self.pneumatic_trail) {
+            (Some(t), _) => given_trail_words(t, self.trail_sigma_percent, self.trail_points),
+            (None, Some(t)) => format!(
                 "pneumatic_trail = {t:.5} m fitted to mz on the same points (the ratio of the slopes of mz and fy on alpha): aligning moment σ {} % over {}{}",
                 crate::format::fixed(self.trail_sigma_percent.unwrap_or(f64::NAN), 3),
                 crate::format::plural(self.trail_points, "point", "points"),
                 self.trail_warning()
             ),
-            None => "pneumatic_trail held at 0 (no mz data)".into(),
+            (None, None) => "pneumatic_trail held at 0 (no mz data)".into(),
         };
         let conditions = match self.loads_left_out.len() {
             0 => String::new(),
@@ -221,6 +226,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
             points_fitted: total,
             points_left_out: 0,
             pneumatic_trail: None,
+            trail_given: None,
             trail_sigma_percent: None,
             trail_points: 0,
             loads_left_out: Vec::new(),
@@ -242,6 +248,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
         points_fitted: fitted,
         points_left_out: total - fitted,
         pneumatic_trail: None,
+        trail_given: None,
         trail_sigma_percent: None,
         trail_points: 0,
         loads_left_out: left.iter().map(|c| c.fz).collect(),
@@ -358,20 +365,36 @@ pub(crate) fn trail(conditions: &[Condition]) -> Option<f64> {
 
 impl LinearWindow {
     /// Sets the trail fitted to `conditions` on `tyre` (0 without `mz`),
-    /// with the σ of its aligning moment there and the points it has.
-    pub(crate) fn fit_trail(&mut self, tyre: &mut Tyre, conditions: &[Condition]) {
+    /// or the trail `given` with `--hold`, with the σ of its aligning
+    /// moment there and the points it has.
+    pub(crate) fn fit_trail(
+        &mut self,
+        tyre: &mut Tyre,
+        conditions: &[Condition],
+        given: Option<f64>,
+    ) {
         use crate::identify::{sigma_of, Channel};
-        self.pneumatic_trail = trail(conditions);
-        set_trail(tyre, self.pneumatic_trail.unwrap_or(0.0));
+        self.trail_given = given;
+        self.pneumatic_trail = given.is_none().then(|| trail(conditions)).flatten();
+        let set = given.or(self.pneumatic_trail);
+        set_trail(tyre, set.unwrap_or(0.0));
         let points: Vec<_> = conditions
             .iter()
             .flat_map(|c| c.points.iter().cloned())
             .filter(|p| p.mz().is_finite())
             .collect();
         self.trail_points = points.len();
-        self.trail_sigma_percent = self
-            .pneumatic_trail
+        self.trail_sigma_percent = set
+            .filter(|_| !points.is_empty())
             .map(|_| sigma_of(Channel::AligningMoment, tyre, &points).0);
+    }
+
+    /// The trail the window's `mz` judges: the one fitted to it, or the
+    /// one given with `--hold` where there is `mz` (the figure draws it,
+    /// and `mz` is not a column left unused).
+    pub(crate) fn judged_trail(&self) -> Option<f64> {
+        let given = self.trail_given.filter(|_| self.trail_points > 0);
+        self.pneumatic_trail.or(given)
     }
 
     /// The warning a trail whose σ passes the swarm fits' bound adds, as
@@ -385,6 +408,24 @@ impl LinearWindow {
             _ => String::new(),
         }
     }
+}
+
+/// The words of a trail `t` (m) given with `--hold`: held, not fitted,
+/// and judged against the `points` with a measured `mz` where there are
+/// any (its σ there, %).
+fn given_trail_words(t: f64, sigma: Option<f64>, points: usize) -> String {
+    let judged = match sigma {
+        Some(s) => format!(
+            ": aligning moment σ {} % over {}",
+            crate::format::fixed(s, 3),
+            crate::format::plural(points, "point", "points")
+        ),
+        None => " (no mz data to judge it)".into(),
+    };
+    format!(
+        "pneumatic_trail = {} m held as given with --hold, not fitted to mz{judged}",
+        crate::format::exact(t)
+    )
 }
 
 /// Sets the trail of a linear `tyre` to `t`.
@@ -407,6 +448,7 @@ mod tests {
             points_fitted: 17,
             points_left_out: 62,
             pneumatic_trail: None,
+            trail_given: None,
             trail_sigma_percent: None,
             trail_points: 0,
             loads_left_out: Vec::new(),

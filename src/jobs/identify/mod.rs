@@ -219,7 +219,15 @@ impl Options {
             holds::check_hold_values(None, &self.hold)?;
             return hold_rules::check_signs(None, &self.hold);
         };
-        let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
+        // What the fits fit, and what the file carries that is set after
+        // them (a linear tyre's trail): every parameter of the file written.
+        let start = start_tyre_of(model, 1.0)?;
+        let mut known = crate::identify::fitted_names(&start);
+        known.extend(
+            crate::identify::set_after_fits(&start)
+                .iter()
+                .map(|n| n.to_string()),
+        );
         for (name, _) in &self.hold {
             if !known.contains(name) {
                 return Err(OptionsError::UnknownHold {

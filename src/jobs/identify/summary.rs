@@ -283,8 +283,18 @@ impl SwarmReport {
 /// equal numbers read as a misprint, and `--local gn` as doing nothing
 /// the user could see. The polish starts from the swarm's best and keeps
 /// it unless it lowers the cost, so equal means it found nothing lower.
+/// Where parameters the data do not determine were held after the swarm
+/// (`undetermined.rs`), the swarm's σ is the free fit's, before them, and
+/// said so on the line: "σ 2.573 % (PSO alone 2.572 %, before a6 and a7
+/// were held)" read as a polish that made the fit worse.
 fn swarm_and_polish(f: &Fit, local: Polish) -> String {
     let (sigma, swarm) = (f.sigma_percent, f.sigma_pso_percent);
+    let held = held_after_swarm(f);
+    let before = match held.len() {
+        0 => String::new(),
+        1 => format!(", before {} was held", held[0]),
+        _ => format!(", before {} were held", and_joined(&held)),
+    };
     let why = if format!("{sigma:.3}") != format!("{swarm:.3}") {
         String::new()
     } else if local == Polish::None {
@@ -296,7 +306,28 @@ fn swarm_and_polish(f: &Fit, local: Polish) -> String {
             local.as_str()
         )
     };
-    format!("σ {sigma:.3} % (PSO alone {swarm:.3} %{why})")
+    format!("σ {sigma:.3} % (PSO alone {swarm:.3} %{before}{why})")
+}
+
+/// The parameters of `f` held after its swarm as the data do not
+/// determine them, by the names their block's lines use (UniTire's
+/// `aligning.c3` is `c3` after "aligning moment:", as `notes.rs` says
+/// them).
+fn held_after_swarm(f: &Fit) -> Vec<&str> {
+    f.parameters
+        .iter()
+        .filter(|p| matches!(p.held, Some(HeldFor::Undetermined { .. })))
+        .map(|p| p.name.rsplit_once('.').map_or(p.name.as_str(), |(_, n)| n))
+        .collect()
+}
+
+/// `names` as a list read aloud: "a6", "a6 and a7", "a6, a7 and c14".
+fn and_joined(names: &[&str]) -> String {
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        Some((last, _)) => last.to_string(),
+        None => String::new(),
+    }
 }
 
 /// The parameters of a fit held at a value in `hold`, those the data do
@@ -316,4 +347,18 @@ fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
             super::notes::parameter_warning(p).map(|n| n.line(" "))
         }))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::and_joined;
+
+    /// Names read aloud: one alone, two with "and", more with commas.
+    #[test]
+    fn names_are_joined_as_read_aloud() {
+        assert_eq!(and_joined(&[]), "");
+        assert_eq!(and_joined(&["c14"]), "c14");
+        assert_eq!(and_joined(&["a6", "a7"]), "a6 and a7");
+        assert_eq!(and_joined(&["a6", "a7", "c14"]), "a6, a7 and c14");
+    }
 }

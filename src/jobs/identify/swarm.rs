@@ -334,14 +334,20 @@ fn fitted_conditions(
 /// `--hold` and by the fits), every fitted value checked finite, PAC89's
 /// reversal of its curve, the notes and the tyre file's text.
 fn finish(o: &Options, r: &mut SwarmReport) -> Result<(), Error> {
+    let trail = crate::identify::LINEAR_TRAIL;
+    let given = o.hold.iter().find(|(n, _)| n == trail).map(|(_, v)| *v);
     if let Some(w) = r.linear_window.as_mut() {
-        w.fit_trail(&mut r.tyre, &r.conditions);
+        w.fit_trail(&mut r.tyre, &r.conditions, given);
     }
-    let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
+    let mut fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
         .into_iter()
         .flatten()
         .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
         .collect();
+    // A linear tyre's trail, set after its fit: applied where it was.
+    if r.linear_window.is_some() {
+        fitted.push(trail.into());
+    }
     r.held = holds_of(o, &fitted);
     let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
     r.held.extend(held_by_fits(

@@ -111,7 +111,7 @@ fn kept_rows<'a>(data: &'a RigData, selected: &'a [Selected]) -> impl Iterator<I
 pub(super) fn unused_notes(r: &SwarmReport) -> Vec<String> {
     let m = r.measured;
     let model = &r.options.model;
-    let trail = r.linear_window.as_ref().and_then(|w| w.pneumatic_trail);
+    let trail = r.linear_window.as_ref().and_then(|w| w.judged_trail());
     // Alpha 0 throughout: `mz` is said with the lateral columns set aside.
     let mz_left = r.aligning.is_none() && trail.is_none() && r.flat_alpha.is_none();
     let no_aligning = r.tyre.aligning_names().is_empty();

@@ -1,0 +1,260 @@
+//! How the data determine a fitted (free) coefficient of a stage, typed
+//! for the report (JSON) and said in one place for the terminal and the
+//! written file's header ([`Determination::said`]).
+//!
+//! The linearised standard error (`uncertainty.rs`: `cov = s²·(JᵀJ)⁻¹`
+//! at the optimum) is the cost's curvature there: it says how far the
+//! coefficient may move while the cost stays within a quadratic's reach.
+//! A hold tried within the free fit's ±2 of those standard errors
+//! (`spare.rs`'s [`LEAN_STANDARD_ERRORS`]) costs at most `2s²` by that
+//! linearisation, under the guard's `½·2.25²·s²`, so a refusal of such a
+//! hold (`hold_refusal.rs`) shows the linearisation false: the cost is far
+//! from quadratic between the two values, and the data fix the coefficient
+//! more tightly than its standard error says. Its ± then means nothing
+//! and is not said as a "not identifiable" ±: one standard error moving
+//! the fit by several times the channel's RMS (QSX10 of the book's rig
+//! file, 769.7 %) is the sign. The free parameter its estimate is most
+//! correlated with (`|r| ≥` [`STRONG_CORRELATION`], by the same
+//! covariance) is named as the partner it trades with, flagged where it
+//! sits on its bound (PKY4 = 0.1 beside PKY1 on the Hoosier file).
+//!
+//! A coefficient on its physical bound has no standard error worth the
+//! name: the fit would take it beyond (`OnBound`).
+
+use super::hold_refusal::RefusedHold;
+use super::hold_rounds::StageFit;
+use super::release::at_bound;
+use super::uncertainty::{effect_words, Uncertainty};
+use crate::identify::spare::LEAN_STANDARD_ERRORS;
+use serde::Serialize;
+
+/// The correlation of two estimates, by the linearised covariance, at
+/// which the one is named as the other's partner: the two trade along
+/// one direction the data barely see (`|r|` near 1).
+pub(crate) const STRONG_CORRELATION: f64 = 0.9;
+
+/// The free parameter a coefficient's estimate is most correlated with.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Partner {
+    /// Its `.tir` name.
+    pub name: &'static str,
+    /// The correlation of the two estimates at the fit (−1 to 1).
+    pub correlation: f64,
+    /// The physical bound it sits on, if it does.
+    pub on_bound: Option<f64>,
+}
+
+/// How the data determine a fitted coefficient (module notes).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Determination {
+    /// Its standard error is below its magnitude, or one standard error
+    /// moves the fit by under 1 % of the channel's RMS.
+    Identified,
+    /// Its standard error reaches its magnitude and one moves the fit by
+    /// 1 % of the channel's RMS or more, or it has none.
+    NotIdentifiable,
+    /// Its linearised standard error says not identifiable, but a hold
+    /// within it was refused: the data fix it more tightly, and the
+    /// standard error (kept in `std_error`) means nothing.
+    FixedBeyondLinearisation {
+        /// One linearised standard error's effect alone, % of the
+        /// channel's RMS.
+        effect_percent: f64,
+        /// The free parameter it trades with, where one is correlated
+        /// with it by [`STRONG_CORRELATION`] or more.
+        partner: Option<Partner>,
+    },
+    /// On a physical bound: the fit would take it beyond.
+    OnBound {
+        /// The bound.
+        bound: f64,
+    },
+}
+
+impl RefusedHold {
+    /// Whether the value tried lay within the free fit's ±2 linearised
+    /// standard errors: the stated value itself within them, or the
+    /// end of them nearest it. Its refusal then contradicts the
+    /// linearisation (module notes).
+    pub fn within_linearisation(&self) -> bool {
+        match self.standard_errors_away {
+            Some(z) => self.tried_at != self.stated || z <= LEAN_STANDARD_ERRORS,
+            None => false,
+        }
+    }
+}
+
+/// How the data determine the `k`-th free parameter of `fit`, at `value`,
+/// by its uncertainty `u` and the hold the guard refused it, if any.
+pub(super) fn determination(
+    fit: &StageFit,
+    u: &Uncertainty,
+    (k, value): (usize, f64),
+    refused: Option<&RefusedHold>,
+) -> Determination {
+    if let Some(bound) = at_bound(fit.p[k], fit.bounds[k]) {
+        return Determination::OnBound { bound };
+    }
+    match (u.std_error[k], refused) {
+        (Some(_), Some(r)) if r.within_linearisation() => Determination::FixedBeyondLinearisation {
+            effect_percent: 100.0 * u.effect[k],
+            partner: u
+                .partner(k, STRONG_CORRELATION)
+                .map(|(j, correlation)| Partner {
+                    name: fit.problem.names[j],
+                    correlation,
+                    on_bound: at_bound(fit.p[j], fit.bounds[j]),
+                }),
+        },
+        _ if u.flagged(k, value) => Determination::NotIdentifiable,
+        _ => Determination::Identified,
+    }
+}
+
+impl Partner {
+    /// "it trades with QSX11 (correlation −0.9993 at the fit)", the
+    /// partner's bound said where it sits on one.
+    fn said(&self) -> String {
+        let bound = self.on_bound.map_or(String::new(), |b| {
+            format!(", itself on its physical bound {}", crate::format::exact(b))
+        });
+        // Four digits, or as many more as keep a correlation short of ±1
+        // from reading as ±1 (−0.99998 is not "−1").
+        let r = self.correlation;
+        let short_of_one = |t: &String| {
+            let v = t.parse::<f64>().ok();
+            r.abs() == 1.0 || v.filter(|v| v.abs() >= 1.0).is_none()
+        };
+        let said = (4..=12)
+            .map(|d| crate::format::rounded(r, d))
+            .find(short_of_one)
+            .unwrap_or_else(|| crate::format::rounded(r, 12));
+        format!(
+            "it trades with {}{bound} (correlation {said} at the fit)",
+            self.name
+        )
+    }
+}
+
+impl Determination {
+    /// The words of a coefficient fixed beyond its linearisation with
+    /// standard error `se`, before its refused hold's; `None` for the
+    /// others, whose words are the identifiability warning's.
+    pub fn said(&self, se: Option<f64>) -> Option<String> {
+        let Determination::FixedBeyondLinearisation {
+            effect_percent,
+            partner,
+        } = self
+        else {
+            return None;
+        };
+        let why = match partner {
+            Some(p) => format!("{}, along which the cost is far from quadratic", p.said()),
+            None => "the cost is far from quadratic about the fit".into(),
+        };
+        Some(format!(
+            "fixed by the data more tightly than its standard error says: the linearised standard error{} means nothing here (one of it would move the fit by {}; {why}), as the hold below shows",
+            se.map_or(String::new(), |s| format!(" {}", crate::format::readable(s, 4))),
+            effect_words(*effect_percent),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::holds::HoldSource;
+    use super::super::{GuardLimit, MoreData, Stage};
+    use super::*;
+
+    /// The book rig file's QSX10: the book default 0 lies 0.04 standard
+    /// errors from the free fit 5.995, and its refit raised σ ninefold.
+    fn refused(stated: f64, tried_at: f64, z: Option<f64>) -> RefusedHold {
+        RefusedHold {
+            source: HoldSource::PacejkaBook,
+            stated,
+            tried_at,
+            standard_errors_away: z,
+            sigma_free_percent: 0.094,
+            sigma_held_percent: 0.801,
+            sigma_limit_percent: 0.099,
+            limit: GuardLimit::SigmaRise,
+            more_data: vec![MoreData::Loads, MoreData::Cambers],
+        }
+    }
+
+    /// A refusal contradicts the linearisation only where the value
+    /// tried lay within the ±2: the stated value within it, or its edge;
+    /// a stated value beyond, or one without a standard error (on a
+    /// bound), does not.
+    #[test]
+    fn only_a_refused_hold_within_the_linearised_two_standard_errors_refutes_it() {
+        assert!(refused(0.0, 0.0, Some(0.04)).within_linearisation());
+        assert!(refused(0.0, 0.0, Some(LEAN_STANDARD_ERRORS)).within_linearisation());
+        assert!(!refused(0.0, 0.0, Some(2.01)).within_linearisation());
+        // QSX11: the default 5 lay 2.6 away, the edge 3.9 was tried.
+        assert!(refused(5.0, 3.9, Some(2.6)).within_linearisation());
+        assert!(!refused(1.9896, 1.9896, None).within_linearisation());
+    }
+
+    /// The words say the data fix it, the standard error means nothing,
+    /// and why, naming the partner (and its bound), never "not
+    /// identifiable"; the refused hold's words then ask for no more data.
+    #[test]
+    fn a_coefficient_fixed_beyond_its_linearisation_is_not_called_not_identifiable() {
+        let d = Determination::FixedBeyondLinearisation {
+            effect_percent: 769.7,
+            partner: Some(Partner {
+                name: "QSX11",
+                correlation: -0.99934,
+                on_bound: None,
+            }),
+        };
+        assert_eq!(
+            d.said(Some(168.2)).unwrap(),
+            "fixed by the data more tightly than its standard error says: the linearised standard error 168.2 means nothing here (one of it would move the fit by 769.7 % of the channel's RMS; it trades with QSX11 (correlation -0.9993 at the fit), along which the cost is far from quadratic), as the hold below shows"
+        );
+        let bound = Determination::FixedBeyondLinearisation {
+            effect_percent: 722.3,
+            partner: Some(Partner {
+                name: "PKY4",
+                correlation: 0.95,
+                on_bound: Some(0.1),
+            }),
+        };
+        let w = bound.said(Some(5859.0)).unwrap();
+        assert!(
+            w.contains("it trades with PKY4, itself on its physical bound 0.1 (correlation 0.95 at the fit)"),
+            "{w}"
+        );
+        // QSX10 against QSX11 on the book's rig: −0.99998 is not "−1".
+        let near = Partner {
+            name: "QSX11",
+            correlation: -0.999984,
+            on_bound: None,
+        };
+        assert_eq!(
+            near.said(),
+            "it trades with QSX11 (correlation -0.99998 at the fit)"
+        );
+        let alone = Determination::FixedBeyondLinearisation {
+            effect_percent: 1500.0,
+            partner: None,
+        };
+        let w = alone.said(Some(2.0)).unwrap();
+        assert!(w.contains("more than 10 times the channel's RMS; the cost is far from quadratic about the fit)"), "{w}");
+        assert_eq!(Determination::NotIdentifiable.said(Some(1.0)), None);
+        assert_eq!(Determination::OnBound { bound: 0.1 }.said(None), None);
+        // The edge of the ±2 refused: no more data asked for; without a
+        // standard error (on a bound) they are.
+        let edge = refused(5.0, 3.9, Some(2.6)).said("QSX11", Stage::Mx);
+        assert!(!edge.contains("fit data with"), "{edge}");
+        let at_bound = refused(1.9896, 1.9896, None).said("PKY4", Stage::PureFy);
+        assert!(
+            at_bound.ends_with(
+                "or fit data with more load levels and more camber levels, which determine it"
+            ),
+            "{at_bound}"
+        );
+    }
+}

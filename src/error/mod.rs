@@ -56,6 +56,7 @@ mod scenario_file;
 mod slip_degrees;
 mod stall;
 mod steady;
+mod steer_cell;
 mod steer_runs;
 mod stiffness_unit;
 mod sweep_limit;
@@ -127,6 +128,7 @@ pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};
 pub use stall::{AskedTurn, StallCause, TurnLimit, LARGE_STEER, NEAR_CRITICAL_GAIN};
 pub use steady::NoSteadyState;
+pub use steer_cell::SteerBeyondAnySensor;
 pub use steer_runs::{OtherRun, SteerInDegreesRuns, YawDeclaredRuns};
 pub use stiffness_unit::{
     argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,

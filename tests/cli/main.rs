@@ -991,3 +991,4 @@ mod trips_s113_floors48;
 mod trips_s113_lead;
 mod trips_s113_settle48;
 mod trips_s113_units48;
+mod trips_s114_metrics50;

@@ -195,11 +195,8 @@ fn a_run_that_starts_with_sideslip_says_its_steady_sideslip_is_the_change() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let phrase = "the steady sideslip is its change from the 0.0513° the run holds before the step";
-    assert!(
-        stderr(&o).contains(&format!("({phrase})")),
-        "{}",
-        stderr(&o)
-    );
+    let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
+    assert!(said.contains(&format!("({phrase})")), "{said}");
     // The history's own sideslip, first and last, in degrees: the
     // independent reference of the line `metrics` prints.
     let history = fs::read_to_string(out.join("history.csv")).unwrap();

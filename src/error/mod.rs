@@ -57,6 +57,7 @@ mod scenario_file;
 mod slip_degrees;
 mod stall;
 mod steady;
+mod steer_cell;
 mod steer_declared;
 mod steer_runs;
 mod stiffness_unit;
@@ -130,6 +131,7 @@ pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use slip_degrees::{SlipAngleInDegrees, MAX_RIG_SLIP_ANGLE};
 pub use stall::{AskedTurn, StallCause, TurnLimit, LARGE_STEER, NEAR_CRITICAL_GAIN};
 pub use steady::NoSteadyState;
+pub use steer_cell::SteerBeyondAnySensor;
 pub use steer_declared::{DeclaredRun, SteerDeclaredRuns};
 pub use steer_runs::{OtherRun, SteerInDegreesRuns, YawDeclaredRuns};
 pub use stiffness_unit::{

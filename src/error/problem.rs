@@ -201,6 +201,9 @@ pub enum InputProblem {
         /// Where the reader takes the column in degrees.
         by: super::DeclaredBy,
     },
+    /// One steer sample beyond any steer sensor's (`steer_cell.rs`).
+    #[error(transparent)]
+    SteerBeyondAnySensor(#[from] super::steer_cell::SteerBeyondAnySensor),
     /// A negative vertical load.
     #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md){}", Num(*value), if *every { "; every load of the file is: a rig whose z axis points down (SAE's axes) logs them so; negate the column" } else { "" })]
     NegativeLoad {

@@ -34,6 +34,7 @@ impl InputProblem {
             InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",
             InputProblem::TooFewSamples => "TooFewSamples",
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
+            InputProblem::SteerBeyondAnySensor(_) => "SteerBeyondAnySensor",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
             InputProblem::LoadAndForceExchanged(_) => "LoadAndForceExchanged",
             InputProblem::RigPressureAboveAny(_) => "RigPressureAboveAny",

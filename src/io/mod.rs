@@ -42,7 +42,7 @@ pub use columns::{read_columns, Columns, Slip};
 pub(crate) use columns::{read_columns_with_bad_cells, unit_of, Layout};
 pub use run::{
     read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
-    DeclaredBy, RunHeader, OPTIONAL_CHANNELS,
+    DeclaredBy, RunHeader, ABSURD_STEER, OPTIONAL_CHANNELS,
 };
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub(crate) use tables::check_tyre_at_load;

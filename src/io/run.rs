@@ -340,10 +340,27 @@ fn check_times(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
     check_time_step(path, c, t)
 }
 
+/// A steer no steer sensor logs, in any unit a steer is written in, rad:
+/// above a steering wheel logged in degrees (about ±1100 at full lock,
+/// which the unit checks name as degrees), so that only a cell that is no
+/// reading at all passes it. One such sample refuses the run at its cell,
+/// as a speed beyond any vehicle's does; a spike below it is repaired by
+/// the cleaning, which a sample of 1e10 defeated (its robust spread of a
+/// quantised steer scales with the largest value).
+pub const ABSURD_STEER: f64 = 1e4;
+
 /// A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged on
 /// the 99th percentile so that a logger's spike (repaired later) does not
-/// refuse the file.
+/// refuse the file. A single sample beyond [`ABSURD_STEER`] is refused
+/// first, at its cell.
 fn check_steer(path: &Path, c: &Columns, steer: &[f64], by: DeclaredBy) -> Result<(), InputError> {
+    if let Some(i) = steer.iter().position(|v| v.abs() > ABSURD_STEER) {
+        let problem = crate::error::SteerBeyondAnySensor {
+            value: steer[i],
+            limit: ABSURD_STEER,
+        };
+        return Err(c.error_at(path, i, "steer", problem.into()));
+    }
     match beyond(steer, std::f64::consts::FRAC_PI_2) {
         Some((i, p99)) => Err(c.error_at(
             path,
@@ -458,6 +475,39 @@ fn lateral<'a>(run: &'a MeasuredRun, ay: &'a [f64]) -> Lateral<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// One steer cell beyond [`ABSURD_STEER`] is refused at its line and
+    /// column with the value and the limit; a lone spike below it (10
+    /// rad) is left to the cleaning, as the 99th percentile rule leaves it.
+    #[test]
+    fn one_steer_cell_beyond_any_sensor_is_refused_at_its_cell() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("r.csv");
+        let write = |cell: &str| {
+            let mut s = String::from("t,speed,steer,yaw_rate\n");
+            for i in 0..200 {
+                let steer = if i == 120 {
+                    cell.to_string()
+                } else {
+                    "0.01".into()
+                };
+                s += &format!("{},20,{steer},0.07\n", f64::from(i) * 0.01);
+            }
+            std::fs::write(&path, s).unwrap();
+        };
+        for (cell, said) in [("1e308", "1e308"), ("-20000", "-20000")] {
+            write(cell);
+            let e = read_run(&path).unwrap_err().to_string();
+            // Line 122: the header, then rows from 0.
+            let at = format!("r.csv:122:3: column `steer`: {said} rad is beyond ±10000 rad");
+            assert!(e.contains(&at), "{e}");
+            assert!(!e.contains("inf"), "{e}");
+        }
+        for cell in ["10", "10000"] {
+            write(cell);
+            assert!(read_run(&path).is_ok(), "{cell}");
+        }
+    }
 
     #[test]
     fn a_column_declared_in_degrees_is_read_in_radians_and_then_passes_the_checks() {

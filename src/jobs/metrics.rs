@@ -24,7 +24,7 @@ mod noise_said;
 mod steps;
 mod table;
 
-pub(crate) use table::metric_lines;
+pub(crate) use table::{metric_lines, sideslip_is_its_change};
 
 /// The units of the metric reports.
 pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot, \
@@ -74,6 +74,10 @@ pub struct MeasuredMetricsReport {
     /// Its last sample, s.
     #[serde(skip)]
     pub t_end: f64,
+    /// The sideslip the piece holds before its step, rad, where it stands
+    /// apart from zero: the steady sideslip is a change from it.
+    #[serde(skip)]
+    pub sideslip_start: Option<f64>,
 }
 
 /// Reads, cleans and measures the run `path`, after checking the settings
@@ -160,6 +164,7 @@ pub fn run_with_degrees(
         roll_levelling: ay_read.levelling,
         t_start: m.t_start,
         t_end: m.t_end,
+        sideslip_start: m.sideslip_start,
     })
 }
 
@@ -499,6 +504,8 @@ impl MeasuredMetricsReport {
     pub fn table(&self) -> Vec<String> {
         let mut out = vec![self.scenario.clone()];
         out.extend(metric_lines(&self.metrics));
+        let change = self.sideslip_start.zip(self.metrics.beta_steady);
+        out.extend(change.map(|(start, change)| table::sideslip_line(start, change)));
         out
     }
 }

@@ -279,39 +279,6 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
     }
 }
 
-/// Below this steady `r·l/(u·δ)` of a step, with [`LONGEST_WHEELBASE`],
-/// the step's yaw-rate gain is said as a steer likely larger than the
-/// road wheels': 0.08 of a neutral car's on a 2.7 m car, an understeer
-/// gradient of about 11 times the car's `l/u²` (a linear car at 5°/g and
-/// 160 km/h gives 0.24; a 15:1 steering-wheel angle at 60 km/h 0.12; the
-/// run's refusal below [`STEER_IN_DEGREES`] is kept for what no wheelbase
-/// explains).
-pub const SMALL_STEADY_GAIN: f64 = 0.15;
-
-/// The steady lateral acceleration below which a step is judged by its
-/// gain ([`SMALL_STEADY_GAIN`]), m/s²: ISO 7401's 4 m/s², below the limit
-/// where a ploughing car's gain falls with its front grip.
-pub const SMALL_GAIN_AY: f64 = 4.0;
-
-/// The warning on a step whose steady yaw-rate gain at median speed `u`
-/// (m/s) is below [`SMALL_STEADY_GAIN`] of a neutral car's of the longest
-/// wheelbase, at a steady lateral acceleration below [`SMALL_GAIN_AY`]:
-/// `diagnose`, which knows the car, refuses such a run.
-fn small_gain(m: &StepMetrics, u: f64) -> Option<String> {
-    let gain = m.yaw_rate_gain;
-    let ratio = gain * LONGEST_WHEELBASE / u;
-    let gentle = m.ay_steady.is_some_and(|ay| ay.abs() < SMALL_GAIN_AY);
-    (gentle && ratio > 0.0 && ratio < SMALL_STEADY_GAIN).then(|| {
-        format!(
-            "the steady yaw-rate gain, {} 1/s at {} m/s, is {} of a neutral car's even with a {LONGEST_WHEELBASE} m wheelbase ({} on a 2.7 m car): no car understeers so much at a steady ay under {SMALL_GAIN_AY} m/s²; is `steer` a steering-wheel angle (divide it by the steering ratio) or in degrees? The metrics take it as the road-wheel angle in radians",
-            crate::format::readable(gain, 4),
-            crate::format::readable(u, 3),
-            crate::format::readable(ratio, 2),
-            crate::format::readable(ratio * 2.7 / LONGEST_WHEELBASE, 2)
-        )
-    })
-}
-
 /// Refuses a run whose steer its yaw rate contradicts ([`steer_problem`],
 /// wheelbase unknown), not an unstable car's divergence (the step metrics
 /// say it). `diagnose` also notes a yaw rate 3× a neutral car's.
@@ -352,6 +319,11 @@ pub struct MeasuredMetrics {
     pub cleaning: CleaningReport,
     /// The piece's median speed, m/s.
     pub speed: Option<f64>,
+    /// The sideslip the piece holds before its step, rad, where it stands
+    /// apart from zero: the steady sideslip is a change from it
+    /// (`sideslip_start.rs`).
+    #[serde(skip)]
+    pub sideslip_start: Option<f64>,
     /// What the check of `ay` against `u·r` reads ([`Self::ay_check`]).
     #[serde(skip)]
     pub(crate) ay_basis: Option<ay_check::AyBasis>,
@@ -364,10 +336,13 @@ mod no_step;
 mod noise_spread;
 mod peak_speed;
 mod piece;
+mod sideslip_start;
+mod small_gain;
 mod steady_advice;
 mod uniform;
 pub(crate) use ay_check::AY_METRICS;
 pub use ay_check::{AyCheck, AY_CHECKED_FROM, AY_CHECK_SAMPLES, AY_DISAGREES};
+pub use small_gain::{SMALL_GAIN_AY, SMALL_STEADY_GAIN};
 
 impl MeasuredMetrics {
     /// The check of `ay` against the speed times the yaw rate
@@ -525,7 +500,7 @@ pub fn measured_step_metrics(
     ));
     warnings.extend(metrics.steer_logged_late.map(super::steer_lead_said));
     warnings.extend(measured_speed_varies(&piece, &metrics, settings));
-    warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
+    warnings.extend(speed.and_then(|u| small_gain::small_gain(&metrics, u)));
     warnings.extend(noise_spread::said(&metrics));
     warnings.extend(metrics.settling_warning());
     warnings.extend(metrics.settling.not_judged_warnings());
@@ -538,6 +513,7 @@ pub fn measured_step_metrics(
         warnings.push(NO_BETA.into());
     }
     let ay_basis = ay_check::ay_basis(&piece, &metrics, settings);
+    let sideslip_start = sideslip_start::sideslip_start(&filled, &metrics, settings);
     Ok(MeasuredMetrics {
         metrics,
         piece: piece.path.display().to_string(),
@@ -547,6 +523,7 @@ pub fn measured_step_metrics(
         warnings,
         cleaning,
         speed,
+        sideslip_start,
         ay_basis,
     })
 }

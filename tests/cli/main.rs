@@ -992,6 +992,7 @@ mod trips_s113_lead;
 mod trips_s113_settle48;
 mod trips_s113_units48;
 mod trips_s114_ident50;
+mod trips_s114_metrics50;
 mod trips_s114_tyres50;
 mod trips_s114_units50;
 mod trips_s114_words50;

@@ -41,7 +41,7 @@ fn a_step_says_its_straight_running_trim_and_a_ramp_on_shifted_tyres_warns_of_it
     ]);
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("note: the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of -0.019° and a sideslip of 0.051°; the run starts there, the 0.677° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)"),
+        said.contains("note: the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of -0.019° and a sideslip of 0.051°; the run starts there, the 0.677° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change from the 0.0513° the run holds before the step)"),
         "{said}"
     );
     assert!(!said.contains("warning:"), "{said}");

@@ -45,14 +45,21 @@ const ALIASES: [(&str, &str); 29] = [
 /// ([`ALIASES`]), matched without case, separators, or a unit written
 /// after it in brackets (`Slip Angle [deg]`).
 pub(super) fn alias_of<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
-    let lower = h.to_lowercase();
-    let name = lower.split(['[', '(']).next().unwrap_or_default();
-    let plain: String = name
-        .chars()
-        .filter(|c| !matches!(c, '_' | '-' | ' '))
-        .collect();
+    let name = h.split(['[', '(']).next().unwrap_or_default();
+    let plain = plain(name);
     let (_, ours) = ALIASES.iter().find(|(other, _)| *other == plain)?;
     among.iter().copied().find(|n| n == ours)
+}
+
+/// A header name as the readers compare names: lower-case, without `_`,
+/// `-` or spaces (`Yaw Rate`, `yaw-rate` and `YawRate` are `yawrate`, as
+/// `yaw_rate` is), so that a name is read alike whatever its case and
+/// separators.
+pub(super) fn plain(name: &str) -> String {
+    name.to_lowercase()
+        .chars()
+        .filter(|c| !matches!(c, '_' | '-' | ' '))
+        .collect()
 }
 
 #[cfg(test)]
@@ -68,5 +75,14 @@ mod tests {
         // Not a column this reader takes: nothing to hint at.
         assert_eq!(alias_of("gamma", &["alpha"]), None);
         assert_eq!(alias_of("gammas", &["camber"]), None);
+    }
+
+    #[test]
+    fn a_plain_name_drops_case_and_separators_only() {
+        for h in ["Yaw Rate", "yaw-rate", "YawRate", "yaw_rate", " yaw_rate "] {
+            assert_eq!(plain(h), "yawrate", "{h}");
+        }
+        assert_eq!(plain("Steer"), "steer");
+        assert_ne!(plain("yaw.rate"), "yawrate");
     }
 }

@@ -79,20 +79,21 @@ fn column_named(name: &str, checked: &[&str], known: &[&str]) -> Option<(&'stati
     if let Some(c) = all().find(|c| *c == name) {
         return Some((quantity_of(c)?.0, true));
     }
-    let lower = name.to_lowercase();
+    // Whatever its case and separators: `Yaw Rate [deg/s]` is `yaw_rate`
+    // in deg/s, as `yaw_rate [deg/s]` is; read as a misspelt name, its
+    // did-you-mean `yaw_rate` read the deg/s as rad/s (round 50).
+    let plain = super::aliases::plain(name);
+    let same = |c: &str| super::aliases::plain(c) == plain;
     let listed: Vec<&str> = all().collect();
     // A rig's channel name (`SA`, `FZ`), not another name of the column
     // (`steering_angle` may be the handwheel's: a did-you-mean says it).
-    let rig = super::RIG_NAMES.iter().find(|(rig, _)| *rig == lower);
+    let rig = super::RIG_NAMES.iter().find(|(rig, _)| same(rig));
     let rig = rig.and_then(|(_, ours)| listed.iter().copied().find(|c| c == ours));
     // A long name of the time (`time`, `Zeit`): `time [ms]` and `time_ms`
     // are `t` in ms, whose did-you-mean `t` left the values 1000 times too
     // large (round 48), as `t_ms` is. One rule for every reader of a `t`.
-    let time = super::TIME_NAMES.contains(&lower.as_str()) && listed.contains(&"t");
-    let c = all()
-        .find(|c| *c == lower)
-        .or(rig)
-        .or(time.then_some("t"))?;
+    let time = super::TIME_NAMES.iter().any(|n| same(n)) && listed.contains(&"t");
+    let c = all().find(|c| same(c)).or(rig).or(time.then_some("t"))?;
     Some((quantity_of(c)?.0, false))
 }
 
@@ -316,6 +317,40 @@ mod tests {
             Some(Reading::Refuse(r)) => assert_eq!(r.column, "alpha"),
             _ => panic!("SA_deg not read"),
         }
+    }
+
+    /// A name and its unit are read alike whatever the name's case and
+    /// separators: `Yaw Rate [deg/s]` is refused as `yaw_rate` in deg/s
+    /// with the advice `yaw_rate [deg/s]` gets, not left to a
+    /// did-you-mean that would read the deg/s as rad/s (round 50).
+    #[test]
+    fn a_name_with_spaces_or_capitals_gets_the_unit_advice_of_the_column() {
+        let by = Some(DeclaredBy::MetricsOption);
+        let said = refused("yaw_rate [deg/s]", by).unwrap();
+        for h in [
+            "Yaw Rate [deg/s]",
+            "YAW-RATE (deg/s)",
+            "YawRate [deg/s]",
+            "Yaw Rate_deg_s",
+        ] {
+            let r = refused(h, by).unwrap_or_else(|| panic!("{h}"));
+            assert_eq!((r.column, &r.stated), ("yaw_rate", &said.stated), "{h}");
+            assert_eq!(
+                r.advice,
+                UnitAdvice::Declare(DeclaredBy::MetricsOption),
+                "{h}"
+            );
+        }
+        // In the column's own unit, a renaming alone (a slip, said
+        // elsewhere); under its exact name, read.
+        assert!(reading("Yaw Rate [rad/s]", (&RUN, &[]), by, &[]).is_none());
+        assert!(matches!(
+            reading("yaw_rate [rad/s]", (&RUN, &[]), by, &[]),
+            Some(Reading::Accept("yaw_rate"))
+        ));
+        // A long name of the time with spaces, in ms: the conversion.
+        let r = refused("Time Stamp [ms]", None).unwrap();
+        assert_eq!((r.column, r.advice), ("t", UnitAdvice::Convert));
     }
 
     /// `sa_deg` (or `alpha [rad]`) beside `alpha` is left under its own

@@ -149,6 +149,29 @@ fn variance_rows(m: &StepMetrics, marks: &Marks) -> Vec<String> {
     ]
 }
 
+/// That the steady sideslip is a change, from the sideslip `start` (rad)
+/// the run holds before its step: every metric is a change from the
+/// initial window. `simulate` says it of a step from its trim, `metrics`
+/// of a run that starts with sideslip ([`sideslip_line`]): one set of
+/// words.
+pub(crate) fn sideslip_is_its_change(start: f64) -> String {
+    format!(
+        "the steady sideslip is its change from the {}° the run holds before the step",
+        crate::format::fixed(start.to_degrees(), 4)
+    )
+}
+
+/// The line after a measured run's table where it starts with sideslip
+/// `start` (rad) and changes by `change` (rad): the steady sideslip is
+/// that change, and where the sideslip ends.
+pub(crate) fn sideslip_line(start: f64, change: f64) -> String {
+    format!(
+        "  sideslip: {}, to {}° over the steady window",
+        sideslip_is_its_change(start),
+        crate::format::fixed((start + change).to_degrees(), 4)
+    )
+}
+
 /// The line after the table saying what "(before the steer)" marks: a
 /// 90 % crossing before the steer reaches half its step is no lag.
 fn before_note(marks: &Marks) -> Option<String> {

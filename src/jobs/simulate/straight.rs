@@ -81,10 +81,11 @@ pub(super) fn straight_running(sc: &Scenario) -> Option<Straight> {
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         if let Some(why) = cause(sc, s.speed, s.trim, sc.initial.beta) {
             return Some(Straight::Note(format!(
-                "{why}: straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change){}",
+                "{why}: straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there ({}){}",
                 s.trim.to_degrees(),
                 sc.initial.beta.to_degrees(),
                 s.amplitude.to_degrees(),
+                crate::jobs::metrics::sideslip_is_its_change(sc.initial.beta),
                 asked_change(sc)
             )));
         }

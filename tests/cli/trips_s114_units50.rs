@@ -178,7 +178,7 @@ fn a_run_refused_after_its_steer_was_judged_is_not_counted_as_reading_in_radians
         .display()
         .to_string();
     assert!(
-        lines[2].contains(&format!("the other 6 runs: 4 read in radians by their held steer against their yaw rate, as they should; ")),
+        lines[2].contains("the other 6 runs: 4 read in radians by their held steer against their yaw rate, as they should; "),
         "{e}"
     );
     assert!(

@@ -43,7 +43,7 @@ impl Integrator {
         // stops the method's loop before its next step.
         let mut row = |sys: &mut Driven, i: usize, t: f64, x: &StateVector| {
             record(&mut hist, sys, t, x);
-            if i < n && hist.len() % every == 0 && !watch(&hist) {
+            if i < n && hist.len().is_multiple_of(every) && !watch(&hist) {
                 stopped = true;
             }
             !stopped

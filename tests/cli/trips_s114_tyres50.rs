@@ -78,7 +78,9 @@ fn a_tyre_file_fitted_below_the_cars_wheel_loads_is_noted_before_the_verdict() {
     assert!(note < verdict, "{stdout}");
     let notes = d["notes"].as_array().unwrap();
     assert!(
-        notes.iter().any(|n| *n == said["note: ".len()..]),
+        notes
+            .iter()
+            .any(|n| n.as_str().unwrap().starts_with(&said["note: ".len()..])),
         "{notes:?}"
     );
     let short = loads_notes(&d);
@@ -94,9 +96,8 @@ fn a_tyre_file_fitted_below_the_cars_wheel_loads_is_noted_before_the_verdict() {
     let page = fs::read_to_string(out.join("report.html")).unwrap();
     assert!(
         page.contains(
-            "(its [fitted_ranges] fz) and the car&#x27;s static wheel loads are 2995–4507 N"
-        ) || page
-            .contains("(its [fitted_ranges] fz) and the car's static wheel loads are 2995–4507 N"),
+            "(its [fitted_ranges] fz) and the car&#39;s static wheel loads are 2995–4507 N"
+        ),
         "the note is not on the page"
     );
 
@@ -163,7 +164,7 @@ fn a_tir_fitted_at_one_camber_says_so_and_asks_no_unit() {
         ),
         (
             "flat.csv",
-            "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n4000,0,0.08,0.0004,16.7\n",
+            "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n4000,0,0.08,0.0003,16.7\n",
         ),
     ]);
     let o = run_in(
@@ -176,7 +177,7 @@ fn a_tir_fitted_at_one_camber_says_so_and_asks_no_unit() {
         .lines()
         .find(|l| l.contains("CAMMAX"))
         .unwrap_or_else(|| panic!("{err}"));
-    assert!(line.contains("1 of 2 points above CAMMAX = 0.00045 rad, in the points' frame (the file's range -0.00036 to 0.00045): evaluated at that end; the first at line 3, camber = 0.02 rad given, evaluated at 0.00045 rad; the tyre was fitted at camber 0 only (CAMMIN to CAMMAX, -0.00036 to 0.00045 rad, a range under 1°): its camber terms describe no other camber, in any unit"), "{line}");
+    assert!(line.contains("1 of 2 points above CAMMAX = 0.00036 rad, in the points' frame (the file's range -0.00045 to 0.00036): evaluated at that end; the first at line 3, camber = 0.02 rad given, evaluated at 0.00036 rad; the tyre was fitted at camber 0 only (CAMMIN to CAMMAX, -0.00045 to 0.00036 rad, a range under 1°): its camber terms describe no other camber, in any unit"), "{line}");
     assert!(!err.contains("is the column in degrees?"), "{err}");
     // The book's example points ask no unit of this file either.
     let book = root().join("docs/examples/tyre_points.csv");
@@ -269,7 +270,7 @@ fn a_rig_speed_beyond_any_rigs_is_refused_at_its_first_row_with_its_unit() {
         .position(|c| c == "speed")
         .unwrap();
     let rows = head.lines().count() - 1;
-    let out = dir.path().join("mm.tir");
+    let out = dir.path().join("mm.toml");
     let err = refused(&identify_to(&rig, "linear", &out), &out);
     assert!(err.contains(&format!("grid_rig.csv:2:{col}: column `speed`: 16700 m/s is beyond 150 m/s (540 km/h), which no tyre rig or car runs at ({rows} rows of the file beyond it; the column's median is 16700): `speed` is the wheel's forward speed in m/s (FORMATS.md); is the column in mm/s? read so, its median is 16.7 m/s, a rig's speed: divide it by 1000")), "{err}");
 

@@ -563,6 +563,18 @@ pub(crate) fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::V
     )
 }
 
+/// Runs `diagnose campaign --out out`, which may fail: whether it
+/// succeeded, and stderr.
+pub(crate) fn diagnose_status(campaign: &Path, out: &Path) -> (bool, String) {
+    let o = run(&[
+        "diagnose",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (o.status.success(), stderr(&o))
+}
+
 /// Diagnoses each campaign into its own `out` folder, all at once (each
 /// `diagnose` is its own process); stdout and diagnosis.json in order.
 pub(crate) fn diagnosed_together(

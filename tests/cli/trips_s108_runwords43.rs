@@ -14,18 +14,6 @@ fn seed2(dir: &Path, name: &str) -> PathBuf {
     synth_campaign(dir, name, &["--effects", "sensor_delay", "--seed", "2"])
 }
 
-/// `diagnose` of `campaign` into `dir/out`: whether it succeeded and its
-/// stderr.
-fn diagnosed(campaign: &Path, out: &Path) -> (bool, String) {
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    (o.status.success(), stderr(&o))
-}
-
 /// `identify --model linear` of rig file `rig`, expected to fail: stderr.
 fn rig_refused(dir: &Path, rig: &Path) -> String {
     let out = dir.join("never.toml");
@@ -97,7 +85,7 @@ fn a_yaw_rate_refused_says_the_other_runs_sideslip_is_not_checked_yet() {
     let yaw = c.join("runs/step_060kph_2ms2.csv");
     map_column(&yaw, "yaw_rate", |v| -v);
     map_column(&c.join("runs/step_120kph_4ms2.csv"), "beta", |v| -v);
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     let lines: Vec<&str> = e.lines().collect();
     assert_eq!(lines[0], "error: 1 of 8 runs refused, in run order:", "{e}");
@@ -115,7 +103,7 @@ fn a_yaw_rate_refused_says_the_other_runs_sideslip_is_not_checked_yet() {
     assert_eq!(lines.len(), 3, "{e}");
     // Negating the yaw rate back, as asked: the `beta` file is named.
     map_column(&yaw, "yaw_rate", |v| -v);
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     assert!(
         e.contains("`beta` of ")
@@ -211,7 +199,7 @@ fn a_folder_campaign_of_one_short_run_is_told_to_add_a_run_file() {
             fs::remove_file(f).unwrap();
         }
     }
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     let runs = c.join("runs");
     assert!(
@@ -227,7 +215,7 @@ fn a_folder_campaign_of_one_short_run_is_told_to_add_a_run_file() {
         runs.join("step_060kph_2ms2.csv"),
     )
     .unwrap();
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(ok, "{e}");
 }
 
@@ -256,7 +244,7 @@ fn a_folder_campaign_of_one_long_log_is_told_where_to_write_segment() {
         }
     }
     fs::write(c.join("runs/log.csv"), log).unwrap();
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     let vehicle = c.join("vehicle.toml");
     assert!(
@@ -268,7 +256,7 @@ fn a_folder_campaign_of_one_long_log_is_told_where_to_write_segment() {
     );
     let text = fs::read_to_string(&vehicle).unwrap();
     fs::write(&vehicle, text + "\n[runs]\nsegment = 10\n").unwrap();
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(ok, "{e}");
 }
 
@@ -281,7 +269,7 @@ fn two_dead_channels_are_counted_as_channels() {
     let run = c.join("runs/step_100kph_6ms2.csv");
     map_column(&run, "ay", |_| 0.0);
     map_column(&run, "beta", |_| 0.0);
-    let (ok, e) = diagnosed(&c, &dir.path().join("d"));
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     assert!(
         e.contains("step_100kph_6ms2.csv: 2 channels refused:\n")

@@ -21,18 +21,6 @@ fn campaign(dir: &Path, runs: &str) -> (PathBuf, PathBuf) {
     (path, camp.join("runs"))
 }
 
-/// `diagnose campaign` into `dir/d`: its success and stderr.
-fn diagnosed(campaign: &Path, dir: &Path) -> (bool, String) {
-    let out = dir.join("d");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    (o.status.success(), stderr(&o))
-}
-
 /// The run files of `runs`, sorted.
 fn run_files(runs: &Path) -> Vec<String> {
     let mut names: Vec<String> = fs::read_dir(runs)
@@ -73,7 +61,7 @@ fn a_declared_steer_that_makes_every_run_57_times_small_is_one_refusal_at_its_en
     let (c, runs) = campaign(dir.path(), "degrees = [ \"steer\" ]\n");
     let files = run_files(&runs);
     let n = files.len();
-    let (ok, e) = diagnosed(&c, dir.path());
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     // One refusal, at the `"steer"` element (line 17, column 13 here).
     let at = steer_entry(&c);
@@ -96,7 +84,7 @@ fn a_declared_steer_that_makes_every_run_57_times_small_is_one_refusal_at_its_en
     // The fix said, taken: the campaign passes.
     let text = fs::read_to_string(&c).unwrap();
     fs::write(&c, text.replace("degrees = [ \"steer\" ]\n", "")).unwrap();
-    let (ok, e) = diagnosed(&c, dir.path());
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(ok, "{e}");
 }
 
@@ -114,7 +102,7 @@ fn runs_that_read_right_under_a_declared_steer_are_named_to_convert_in_their_fil
     for f in deg {
         map_column(&runs.join(f), "steer", f64::to_degrees);
     }
-    let (ok, e) = diagnosed(&c, dir.path());
+    let (ok, e) = diagnose_status(&c, &dir.path().join("d"));
     assert!(!ok, "{e}");
     let at = steer_entry(&c);
     assert_eq!(at, "c.toml:17:24: ");
@@ -151,7 +139,7 @@ fn refused_with(dir: &Path, to_degrees: &[&str], reversed: &str) -> String {
         map_column(&runs.join(f), "steer", f64::to_degrees);
     }
     map_column(&runs.join(reversed), "steer", |d| -d);
-    let (ok, e) = diagnosed(&c, dir);
+    let (ok, e) = diagnose_status(&c, &dir.join("d"));
     assert!(!ok, "{e}");
     e
 }

@@ -204,6 +204,9 @@ pub enum InputProblem {
     /// One steer sample beyond any steer sensor's (`steer_cell.rs`).
     #[error(transparent)]
     SteerBeyondAnySensor(#[from] super::steer_cell::SteerBeyondAnySensor),
+    /// One response sample beyond any car's (`response_cell.rs`).
+    #[error(transparent)]
+    ResponseBeyondAnyCar(#[from] super::response_cell::ResponseBeyondAnyCar),
     /// A negative vertical load.
     #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md){}", Num(*value), if *every { "; every load of the file is: a rig whose z axis points down (SAE's axes) logs them so; negate the column" } else { "" })]
     NegativeLoad {

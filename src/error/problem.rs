@@ -61,8 +61,7 @@ pub enum InputProblem {
         /// The TOML reader's description.
         detail: String,
     },
-    /// A key naming a file or folder that does not exist, or is the other
-    /// of the two.
+    /// A key naming a file or folder that does not exist, or is the other of the two.
     #[error("`{key}`{} names {}, {} ({})", written.as_ref().map_or(String::new(), |w| format!(" = \"{w}\"")), target.display(), found.describe(), read_from(written.as_deref(), base))]
     MissingFile {
         /// Dotted key.
@@ -558,8 +557,7 @@ pub enum InputProblem {
     /// A scenario file refused as a whole or at a table (boxed).
     #[error("{0}")]
     Scenario(Box<super::ScenarioProblem>),
-    /// A file of another kind than the reader's, or a key naming what
-    /// no file given has (boxed).
+    /// A file of another kind than the reader's, or a key naming what no file given has (boxed).
     #[error("{0}")]
     Kind(Box<super::KindProblem>),
 }

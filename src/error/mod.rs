@@ -45,6 +45,7 @@ mod problem;
 mod problem_name;
 mod reason;
 mod replay_run;
+mod response_cell;
 mod rig;
 mod rig_exchanged;
 mod rig_load_lbf;
@@ -119,6 +120,7 @@ pub use reason::{
     SlowSteer, Waveform, Wheelbase, DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use replay_run::ReplayRunProblem;
+pub use response_cell::{Response, ResponseBeyondAnyCar};
 pub use rig::{Variable, INFLATION_PRESSURES, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use rig_exchanged::{LoadAndForceExchanged, EXCHANGED_SHARE};
 pub use rig_load_lbf::{RigLoadInLbf, LBF_SLIP, MAX_MEDIAN_GRIP};

@@ -61,8 +61,7 @@ pub enum InputProblem {
         /// The TOML reader's description.
         detail: String,
     },
-    /// A key naming a file or folder that does not exist, or is the other
-    /// of the two.
+    /// A key naming a file or folder that does not exist, or is the other of the two.
     #[error("`{key}`{} names {}, {} ({})", written.as_ref().map_or(String::new(), |w| format!(" = \"{w}\"")), target.display(), found.describe(), read_from(written.as_deref(), base))]
     MissingFile {
         /// Dotted key.
@@ -204,6 +203,9 @@ pub enum InputProblem {
     /// One steer sample beyond any steer sensor's (`steer_cell.rs`).
     #[error(transparent)]
     SteerBeyondAnySensor(#[from] super::steer_cell::SteerBeyondAnySensor),
+    /// One response sample beyond any car's (`response_cell.rs`).
+    #[error(transparent)]
+    ResponseBeyondAnyCar(#[from] super::response_cell::ResponseBeyondAnyCar),
     /// A negative vertical load.
     #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md){}", Num(*value), if *every { "; every load of the file is: a rig whose z axis points down (SAE's axes) logs them so; negate the column" } else { "" })]
     NegativeLoad {
@@ -555,8 +557,7 @@ pub enum InputProblem {
     /// A scenario file refused as a whole or at a table (boxed).
     #[error("{0}")]
     Scenario(Box<super::ScenarioProblem>),
-    /// A file of another kind than the reader's, or a key naming what
-    /// no file given has (boxed).
+    /// A file of another kind than the reader's, or a key naming what no file given has (boxed).
     #[error("{0}")]
     Kind(Box<super::KindProblem>),
 }

@@ -35,6 +35,7 @@ impl InputProblem {
             InputProblem::TooFewSamples => "TooFewSamples",
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
             InputProblem::SteerBeyondAnySensor(_) => "SteerBeyondAnySensor",
+            InputProblem::ResponseBeyondAnyCar(_) => "ResponseBeyondAnyCar",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
             InputProblem::LoadAndForceExchanged(_) => "LoadAndForceExchanged",
             InputProblem::RigPressureAboveAny(_) => "RigPressureAboveAny",

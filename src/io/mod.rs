@@ -23,6 +23,7 @@ mod run;
 mod run_ay_sign;
 mod run_bank;
 mod run_offset;
+mod run_response;
 pub use run_bank::steep_bank;
 mod run_slope;
 mod run_turning;

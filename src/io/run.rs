@@ -207,6 +207,8 @@ fn read_run_lacking(
     check_speed_and_rates(path, &c, &run, declared_by.1)?;
     check_angles(path, &c, &run, declared.contains(&AngleColumn::Beta))?;
     check_lateral(path, &c, &run)?;
+    // After the units, which name a column in another unit first.
+    super::run_response::check_responses(path, &c, &run)?;
     Ok((run, RunHeader { unread, slips }, absent))
 }
 

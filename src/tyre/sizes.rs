@@ -92,7 +92,13 @@ const MF_DIMENSIONAL: [&str; 3] = ["VERTICAL_STIFFNESS", "NOMPRES", "INFLPRES"];
 
 /// A contact length, m.
 pub(crate) fn contact_length(key: &str, v: f64) -> Result<(), ParamError> {
-    ParamError::in_range(key, v, 0.0, MAX_CONTACT_LENGTH, Limit::ContactLength)
+    ParamError::in_range(
+        key,
+        v,
+        0.0,
+        MAX_CONTACT_LENGTH,
+        Limit::ContactLength { given: v },
+    )
 }
 
 /// A cornering stiffness, N/rad: a small positive one is said as the

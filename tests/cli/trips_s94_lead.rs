@@ -103,7 +103,10 @@ fn runs_without_a_sideslip_that_start_mid_turn_show_no_gap_where_the_model_is_ex
 /// the `ay` gap of a withheld sensor bias weighed a fraction of what it
 /// should (held-out error 2.057 for 2.848, noise level 0.811 for 0.934).
 /// Now a masked sample is no signal, and the diagnosis is the spike-free
-/// campaign's to rounding.
+/// campaign's to rounding. Since round 51 an `ay` of 9999 m/s² is refused
+/// at its cell (no car's): five spikes of 99 m/s², within reach (and
+/// under 1 % of the run, which the unit check reads), add as much to the
+/// run's sum of squares as one of 221 would.
 #[test]
 fn a_masked_spike_does_not_set_the_scale_of_its_channel() {
     let dir = tempfile::tempdir().unwrap();
@@ -121,13 +124,18 @@ fn a_masked_spike_does_not_set_the_scale_of_its_channel() {
     let text = fs::read_to_string(&path).unwrap();
     let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
     let ay = lines[0].split(',').position(|h| h == "ay").unwrap();
-    let mut cells: Vec<&str> = lines[300].split(',').collect();
-    cells[ay] = "9999";
-    lines[300] = cells.join(",");
+    for row in (100..=740).step_by(160) {
+        let mut cells: Vec<&str> = lines[row].split(',').collect();
+        cells[ay] = "99";
+        lines[row] = cells.join(",");
+    }
     fs::write(&path, lines.join("\n") + "\n").unwrap();
     let (_, a) = diagnose_to(&clean, &dir.path().join("a"));
     let (said, b) = diagnose_to(&spiked, &dir.path().join("b"));
-    assert!(said.contains("ay 9999 (1 sample, masked)"), "{said}");
+    assert!(
+        said.contains("runs/ramp_080kph.csv: ay 5 times, the first at 3.990 s (99), the last at 10.390 s (99) (5 samples, masked)"),
+        "{said}"
+    );
     assert_eq!(a["verdict"]["effects"], b["verdict"]["effects"], "{said}");
     for key in ["heldout_error", "noise_level"] {
         let (x, y) = (

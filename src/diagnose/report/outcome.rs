@@ -492,7 +492,8 @@ pub enum GapFinding {
         /// within noise, with their held-out RMS (its unit): where they
         /// are fewer, the words name them ("all but …").
         within_in: Vec<(String, f64)>,
-        /// Runs.
+        /// Runs that measure the channel (a run without its column is
+        /// counted in neither list).
         runs: usize,
         /// Parts (windows, regimes) above three noise floors, with their RMS.
         wrong: Vec<(Part, f64)>,

@@ -236,6 +236,9 @@ fn channel_finding(
             .collect()
     };
     let (significant_in, within_in) = (of(true), of(false));
+    // Counted of the runs that measure the channel: a run without a beta
+    // column is neither significant nor within noise in beta.
+    let measuring = significant_in.len() + within_in.len();
     Some(GapFinding::Channel {
         channel: ch,
         rms: all.before,
@@ -243,7 +246,7 @@ fn channel_finding(
         significant_runs: significant_in.len(),
         significant_in,
         within_in,
-        runs: runs.len(),
+        runs: measuring,
         wrong,
         right,
         off_in_right,

@@ -130,9 +130,13 @@ pub enum Limit {
         "no road wheel steers beyond ±45° (a car's largest mean road-wheel steer is about 35–40°)"
     )]
     RoadWheelSteerDegrees,
-    /// A tyre's contact length, m.
-    #[error("no tyre's contact patch is longer than 1 m (a car tyre's is 0.1–0.25 m, a truck's about 0.3 m); the key is in metres: is the value in millimetres? (180 mm is 0.18)")]
-    ContactLength,
+    /// A tyre's contact length `given`, m as read: one beyond 1 m is said
+    /// as the millimetres it likely is, with the value given converted.
+    #[error("{}", contact_length(*given))]
+    ContactLength {
+        /// The length as read, m.
+        given: f64,
+    },
     /// A tyre's cornering stiffness, N/rad.
     #[error("no tyre's cornering stiffness reaches 2e6 N/rad (a car tyre's is 5e4–1.5e5, a truck tyre's about 3e5); the key is in N/rad, per wheel: check the unit")]
     CorneringStiffness,
@@ -208,6 +212,23 @@ pub enum Limit {
         /// The other pressure key is about the unit's factor above it.
         apart: bool,
     },
+}
+
+/// The words of a contact length `given` (m as read) out of range: above
+/// it, the millimetres it likely is converted (`contact_length = 160`:
+/// "160 mm is 0.16", where a fixed 180 mm was said whatever the value).
+fn contact_length(given: f64) -> String {
+    let limit = "no tyre's contact patch is longer than 1 m (a car tyre's is 0.1–0.25 m, a truck's about 0.3 m); the key is in metres";
+    // The limit is `tyre::sizes::MAX_CONTACT_LENGTH`'s 1 m, which the words
+    // say (the errors sit below the tyres and do not import them).
+    if given > 1.0 {
+        let metres = crate::format::rounded(given / 1000.0, 6);
+        return format!(
+            "{limit}: is the value in millimetres? ({} mm is {metres})",
+            crate::error::number::Num(given)
+        );
+    }
+    limit.to_string()
 }
 
 /// The upper end of a run's `end`, and why: the rows a history holds.

@@ -41,6 +41,17 @@ fn without(name: &str, value: f64, add: f64) -> String {
     )
 }
 
+/// What e1 and e2 are, with their values: the terminal says them where
+/// they weigh a noise's share into Er (the book defines them, the
+/// terminal's "e2 times it for Er" did not, round 51).
+fn weights((e1, e2): (f64, f64)) -> String {
+    format!(
+        "Er = e1·E_r + e2·E_ay, the total variances weighted by e1 = {} and e2 = {}",
+        crate::error::Num(e1),
+        crate::error::Num(e2)
+    )
+}
+
 /// The warnings of the total variances of `m` a tenth or more of which
 /// is noise over `window` s: `E_r`'s, `E_ay`'s, and Er's with what each
 /// channel adds to it through its weight (`weights`, e1 and e2).
@@ -50,11 +61,12 @@ pub(super) fn noise_in_variance(m: &StepMetrics, window: f64, (e1, e2): (f64, f6
     let e_r = m.yaw_rate_total_variance;
     if add_r > 0.0 && add_r >= SAID_SHARE * e_r {
         said.push(format!(
-            "the yaw-rate noise ({}) adds about {} s to E_r ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_r and Er read high by that much (e1 times it for Er), {}; filter harder (--filter-hz) or log a quieter gyro",
+            "the yaw-rate noise ({}) adds about {} s to E_r ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_r reads high by that much and Er by e1 times it ({}), {}; filter harder (--filter-hz) or log a quieter gyro",
             m.yaw_rate_noise_text(),
             crate::format::readable(add_r, 3),
             crate::format::readable(e_r, 4),
             crate::error::Num(window),
+            weights((e1, e2)),
             without("E_r", e_r, add_r),
         ));
     }
@@ -64,11 +76,12 @@ pub(super) fn noise_in_variance(m: &StepMetrics, window: f64, (e1, e2): (f64, f6
     let add_ay = added(noise_ay, window);
     if add_ay > 0.0 && add_ay >= SAID_SHARE * e_ay {
         said.push(format!(
-            "the ay noise ({} % of its step) adds about {} s to E_ay ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_ay and Er read high by that much (e2 times it for Er), {}; filter harder (--filter-hz) or log a quieter accelerometer",
+            "the ay noise ({} % of its step) adds about {} s to E_ay ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_ay reads high by that much and Er by e2 times it ({}), {}; filter harder (--filter-hz) or log a quieter accelerometer",
             crate::format::decimals_or_digits(100.0 * noise_ay, 2, 2),
             crate::format::readable(add_ay, 3),
             crate::format::readable(e_ay, 4),
             crate::error::Num(window),
+            weights((e1, e2)),
             without("E_ay", e_ay, add_ay),
         ));
     }
@@ -93,7 +106,15 @@ pub(super) fn noise_in_variance(m: &StepMetrics, window: f64, (e1, e2): (f64, f6
 
 #[cfg(test)]
 mod tests {
-    use super::without;
+    use super::{weights, without};
+
+    #[test]
+    fn the_weights_are_said_with_what_they_weigh() {
+        assert_eq!(
+            weights((1.0, 0.5)),
+            "Er = e1·E_r + e2·E_ay, the total variances weighted by e1 = 1 and e2 = 0.5"
+        );
+    }
 
     #[test]
     fn a_noise_share_past_the_variance_gives_no_negative_estimate() {

@@ -13,6 +13,24 @@
 //! logger's grid (a steer step of a few counts: the gain per steer known
 //! within ±q/2), not a simulation's sampled ramp.
 //!
+//! A lattice is a logger's only where something besides one ramp puts the
+//! values on it. A noise-free ramp sampled at equal times changes by the
+//! same amount at every sample it spans whole, and by less at its two
+//! ends, where it starts and stops between samples: its values lie on the
+//! lattice of that change, or of a part of it where the ends cut it
+//! simply. A 100 Hz simulation's 0.15 s ramp to 0.45° taken every other
+//! row (50 Hz) changes 0.03°, then 0.06° seven times, and all its values
+//! lie on a 0.03° lattice that no logger wrote; its steer was warned of as
+//! "written in steps of 0.03 deg" and the gain's spread grew from 0.0081
+//! to 0.0222 (round 51). A quantiser shows its lattice otherwise: in
+//! levels held and returned to ([`held_resolution`](crate::metrics::noise)),
+//! or in a ramp whose changes inside its rise differ by whole counts (a
+//! slope that is no whole number of counts per sample, rounded, changes
+//! by one count, then two). So the steer's lattice is said unless its
+//! changes are one such sampled ramp; a rounded ramp whose slope is a
+//! whole number of counts per sample cannot be told from one, and is not
+//! said.
+//!
 //! ISO 7401 starts the step from straight running: a step from a steady
 //! turn gives changes from that turn (the table's steady ay is the
 //! change), which is said where the yaw rate and ay before it both stand
@@ -139,16 +157,17 @@ pub(super) fn coarse(piece: &MeasuredRun, m: &StepMetrics) -> Vec<String> {
 /// only where its grid shows in held levels or a dither
 /// ([`held_resolution`](crate::metrics::noise)), not in a ramp's few
 /// samples, every sample is a whole number of steps q from the first, and
-/// its changes are not one stretch of equal ones: a noise-free ramp (or a
-/// jump) sampled by a simulation changes by the same amount at every
-/// sample of its rise, each a multiple of that change, and is no grid.
+/// its changes are not one sampled ramp's ([`sampled_ramp`]): a
+/// noise-free ramp (or a jump) sampled by a simulation changes by the
+/// same amount at every sample inside its rise, and by a part of it at
+/// its ends, and is no grid.
 pub(super) fn coarse_steer(piece: &MeasuredRun, m: &StepMetrics) -> Option<String> {
     let x = &piece.steer;
     // Read from held levels or many, not a ramp's few samples.
     let q = grid_of(x)?;
     let step = m.steer_step.abs();
     let share = q / 12f64.sqrt() / step;
-    if !(share > STEER_COARSE_SHARE && step > 0.0 && on_grid(x, q)) || one_ramp(x, q) {
+    if !(share > STEER_COARSE_SHARE && step > 0.0 && on_grid(x, q)) || sampled_ramp(x) {
         return None;
     }
     let deg = 180.0 / std::f64::consts::PI;
@@ -189,7 +208,7 @@ fn grid_of(x: &[f64]) -> Option<f64> {
 /// sampled ramp's): None where none shows.
 fn rounding_share(x: &[f64], step: f64) -> Option<f64> {
     let q = grid_of(x)?;
-    (step > 0.0 && on_grid(x, q) && !one_ramp(x, q)).then(|| q / 12f64.sqrt() / step)
+    (step > 0.0 && on_grid(x, q) && !sampled_ramp(x)).then(|| q / 12f64.sqrt() / step)
 }
 
 /// The yaw-rate gain's share of deviation from its two channels' grids:
@@ -217,20 +236,41 @@ fn on_grid(x: &[f64], q: f64) -> bool {
         .all(|v| ((v - x0) / q - ((v - x0) / q).round()).abs() < 1e-3)
 }
 
-/// Whether the changes of `x` are one stretch of consecutive samples each
-/// changing by the same amount `q` (a sampled ramp or a single jump).
-fn one_ramp(x: &[f64], q: f64) -> bool {
+/// Whether the changes of `x` are those of one ramp sampled at equal
+/// times (or of a single jump): one stretch of consecutive samples, each
+/// changing the same way, by the same amount `d` at every sample inside
+/// the stretch and by at most `d` at its two ends (where the ramp starts
+/// and stops between samples, the interval holds a part of it). A
+/// rounded ramp changes by whole counts that differ inside the stretch
+/// unless its slope is a whole number of counts per sample. Equal to a
+/// thousandth of `d`: a decimal value is not exact in binary, and a
+/// ramp's values written to 6 digits differ by less.
+fn sampled_ramp(x: &[f64]) -> bool {
     let moving: Vec<usize> = x
         .windows(2)
         .enumerate()
         .filter(|(_, w)| w[1] != w[0])
         .map(|(i, _)| i)
         .collect();
-    let contiguous = moving.windows(2).all(|w| w[1] == w[0] + 1);
-    let equal = moving
+    if !moving.windows(2).all(|w| w[1] == w[0] + 1) {
+        return false;
+    }
+    let change: Vec<f64> = moving.iter().map(|&i| x[i + 1] - x[i]).collect();
+    // Two changes or fewer are the ramp's ends alone.
+    let (Some(first), Some(inner)) = (change.first(), change.get(1)) else {
+        return true;
+    };
+    if change.len() == 2 {
+        return first.signum() == inner.signum();
+    }
+    let d = *inner;
+    let tolerance = 1e-3 * d.abs();
+    let n = change.len();
+    let equal = change[1..n - 1].iter().all(|c| (c - d).abs() <= tolerance);
+    let ends = [change[0], change[n - 1]]
         .iter()
-        .all(|&i| ((x[i + 1] - x[i]).abs() - q).abs() <= 1e-3 * q);
-    contiguous && equal
+        .all(|c| c.signum() == d.signum() && c.abs() <= d.abs() + tolerance);
+    equal && ends
 }
 
 /// The warning of a step that starts from a steady turn: the yaw rate and
@@ -279,4 +319,66 @@ fn mean_and_error(v: &[f64]) -> Option<(f64, f64)> {
     let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n.max(2) - 1) as f64;
     let tau = crate::measured::calibration::stats::integrated_time(v, mean);
     Some((mean, (var * tau / n as f64).sqrt()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{grid_of, on_grid, sampled_ramp};
+
+    /// A 0.45° (0.00785 rad) step ramped over 0.15 s from 1.0 s, sampled
+    /// every `every` ms from `first` ms for 3 s, rounded to `q` rad where
+    /// given (whole milliseconds: the ramp's end is reached exactly).
+    fn ramp(every: usize, first: usize, q: Option<f64>) -> Vec<f64> {
+        let step = 0.45f64.to_radians();
+        (first..3000)
+            .step_by(every)
+            .map(|ms| step * ((ms as f64 - 1000.0) / 150.0).clamp(0.0, 1.0))
+            .map(|v| q.map_or(v, |q| (v / q).round() * q))
+            .collect()
+    }
+
+    /// Round 51: the 100 Hz ramp taken every other row (50 Hz, its
+    /// first sample 10 ms into the ramp) changes 0.03°, then 0.06° seven
+    /// times, on a 0.03° lattice; both it and the 100 Hz ramp are one
+    /// sampled ramp, not a grid, though each lies on a lattice.
+    #[test]
+    fn a_ramp_sampled_at_equal_times_is_no_grid_at_any_phase() {
+        let hz100 = ramp(10, 0, None);
+        let hz50 = ramp(20, 10, None);
+        let q = grid_of(&hz50).expect("nine levels read a lattice");
+        assert!((q - 0.03f64.to_radians()).abs() < 1e-12, "{q}");
+        assert!(on_grid(&hz50, q));
+        assert!(sampled_ramp(&hz100));
+        assert!(sampled_ramp(&hz50));
+        // Any phase, either way: the ends hold a part of the interval.
+        for first in [0, 3, 7, 19] {
+            let x = ramp(20, first, None);
+            assert!(sampled_ramp(&x), "{first}");
+            let down: Vec<f64> = x.iter().map(|v| -v).collect();
+            assert!(sampled_ramp(&down), "{first}");
+        }
+    }
+
+    /// A ramp rounded to a logger's 0.0003 rad counts (1.75 counts a
+    /// sample at 100 Hz) changes by 1 and 2 counts inside its rise: a
+    /// quantiser's grid. One held and returned to, or a ramp whose end
+    /// changes more than its inside, is none either.
+    #[test]
+    fn a_rounded_ramp_or_a_stair_is_no_sampled_ramp() {
+        let rounded = ramp(10, 0, Some(3e-4));
+        assert!(!sampled_ramp(&rounded));
+        let q = grid_of(&rounded).unwrap();
+        assert!((q - 3e-4).abs() < 1e-12, "{q}");
+        assert!(on_grid(&rounded, q));
+        let dither = [0.0, 0.0, 1e-3, 0.0, 1e-3, 1e-3, 0.0];
+        assert!(!sampled_ramp(&dither));
+        let wide_end = [0.0, 0.0, 1e-3, 2e-3, 3e-3, 5e-3, 5e-3];
+        assert!(!sampled_ramp(&wide_end));
+        let back = [0.0, 0.0, 1e-3, 2e-3, 3e-3, 2e-3, 2e-3];
+        assert!(!sampled_ramp(&back));
+        let two_stretches = [0.0, 1e-3, 2e-3, 2e-3, 3e-3, 4e-3, 4e-3];
+        assert!(!sampled_ramp(&two_stretches));
+        // A jump is one.
+        assert!(sampled_ramp(&[0.0, 0.0, 1e-2, 1e-2]));
+    }
 }

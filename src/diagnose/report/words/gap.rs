@@ -204,9 +204,12 @@ pub(super) const NAMED_RUNS: usize = 3;
 /// isolates ("wrong in: nowhere") is otherwise lost, and "significant in 4
 /// of 8 runs" leaves the user to find which. Up to [`NAMED_RUNS`] + 1 are
 /// named in the campaign's order; where the runs within noise (`within`)
-/// are fewer and at most [`NAMED_RUNS`], and every run measures the
-/// channel, those instead ("all but …"); else the [`NAMED_RUNS`] largest
-/// and a count of the rest. Empty where none or every run is significant.
+/// are fewer and at most [`NAMED_RUNS`], and every one of the `runs`
+/// measures the channel, those instead ("all but …"); else the
+/// [`NAMED_RUNS`] largest and a count of the rest. Empty where none or
+/// every run is significant. The `runs` are those that measure the
+/// channel (a campaign run without a beta column is not one of beta's:
+/// "significant in 0 of 8 runs" was said of beta measured in 7, round 51).
 fn runs_named(
     channel: Channel,
     noise_floor: f64,

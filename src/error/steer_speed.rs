@@ -30,10 +30,12 @@ impl fmt::Display for LimitAtSpeed {
     /// `below 0.0151: half of 0.0303, the least a car understeering 6°/g
     /// gives at 90.0 m/s`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // 0.15/0.2 is 0.7499…: the share is named to a part in a million.
+        let near = |x: f64| (self.share - x).abs() < 1e-6;
         let share = match self.share {
-            s if s == 0.5 => "half".to_string(),
-            s if s == 0.75 => "three quarters".to_string(),
-            s => format!("{} ×", readable(s, 2)),
+            _ if near(0.5) => "half".to_string(),
+            _ if near(0.75) => "three quarters".to_string(),
+            s => readable(s, 2),
         };
         let per_g = self.gradient.to_degrees() * crate::constants::G;
         write!(

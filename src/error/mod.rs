@@ -61,6 +61,7 @@ mod steady;
 mod steer_cell;
 mod steer_declared;
 mod steer_runs;
+mod steer_speed;
 mod stiffness_unit;
 mod sweep_limit;
 #[cfg(test)]
@@ -136,6 +137,7 @@ pub use steady::NoSteadyState;
 pub use steer_cell::SteerBeyondAnySensor;
 pub use steer_declared::{DeclaredRun, SteerDeclaredRuns};
 pub use steer_runs::{OtherRun, SteerInDegreesRuns, YawDeclaredRuns};
+pub use steer_speed::LimitAtSpeed;
 pub use stiffness_unit::{
     argument as stiffness_argument, StiffnessGiven, StiffnessSlip, LEAST_LOAD_STIFFNESS,
     MOST_LOAD_STIFFNESS,

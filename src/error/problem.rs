@@ -473,9 +473,8 @@ pub enum InputProblem {
         /// The held steered samples.
         samples: usize,
     },
-    /// A steer far larger than the yaw rate it gives: in degrees, or a
-    /// steering-wheel angle.
-    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's); a column in degrees is declared so: `metrics --degrees steer`, or `degrees = [\"steer\"]` under a campaign's [runs]", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, crate::format::fixed_apart(&[*median], 3)[0], assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
+    /// A steer far larger than its yaw rate: in degrees, or a steering-wheel angle.
+    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples{}{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's); a column in degrees is declared so: `metrics --degrees steer`, or `degrees = [\"steer\"]` under a campaign's [runs]", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, crate::format::fixed_apart(&[*median], 3)[0], assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))), at_speed.map_or(String::new(), |a| format!("; refused {a}")))]
     SteerAboveYaw {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,
@@ -483,6 +482,8 @@ pub enum InputProblem {
         samples: usize,
         /// The wheelbase l taken when the vehicle's is not known, m.
         assumed_wheelbase: Option<f64>,
+        /// The limit where the speed lowered it (`least_gain.rs`).
+        at_speed: Option<crate::error::LimitAtSpeed>,
     },
     /// A yaw rate far larger than a car's for its steer: a steer in
     /// radians divided by 57 once more, a yaw rate in deg/s, or a column

@@ -35,6 +35,8 @@ pub enum ReplayRunProblem {
         median: f64,
         /// The steered samples.
         samples: usize,
+        /// The limit where the speed lowered it (`least_gain.rs`).
+        at_speed: Option<super::LimitAtSpeed>,
     },
     /// A `degrees` entry naming a steer or yaw rate the run logs in
     /// radians: the yaw rate then reads 57× off a neutral car's for its
@@ -93,15 +95,16 @@ impl fmt::Display for ReplayRunProblem {
                     false => f.write_str("the run stands still throughout: there is nothing to replay"),
                 }
             }
-            ReplayRunProblem::SteerAboveYaw { run, median, samples } => write!(
+            ReplayRunProblem::SteerAboveYaw { run, median, samples, at_speed } => write!(
                 f,
-                "the run {run}: the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians; a column the run logs in degrees is declared so in this scenario: `degrees = [\"steer\"]` under [manoeuvre]",
+                "the run {run}: the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians; a column the run logs in degrees is declared so in this scenario: `degrees = [\"steer\"]` under [manoeuvre]",
                 match *median > 0.0 {
                     true => format!("{}× smaller", crate::format::readable(1.0 / median, 2)),
                     false => "far smaller".into(),
                 },
                 // 0.0004 is not "0.000" beside "2500× smaller".
-                crate::format::fixed_apart(&[*median], 3)[0]
+                crate::format::fixed_apart(&[*median], 3)[0],
+                at_speed.map_or(String::new(), |a| format!("; refused {a}"))
             ),
             ReplayRunProblem::DeclaredInDegrees { run, column, median, samples } => {
                 let (what, unit) = match *column {

@@ -20,7 +20,9 @@ pub(crate) const ISO_7401_RISE: f64 = 0.15;
 
 /// Below this median of r·l/(u·δ) the steer is far larger than the yaw
 /// rate it gives: a steer in degrees (57×) or a steering-wheel angle
-/// (15×), not a car's understeer (0.2–1).
+/// (15×), not a car's understeer (0.2–1 at the handling tests' speeds;
+/// lower at speed, where the limit falls with the least a car gives:
+/// [`least_gain`]).
 pub const STEER_IN_DEGREES: f64 = 0.1;
 
 /// The wheelbase taken when a run comes without its vehicle, m: longer than
@@ -129,9 +131,11 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
     let share = |f: fn(f64) -> bool| q.iter().filter(|x| f(**x)).count() as f64 / n;
     let (with_steer, against) = (share(|x| x > 0.0), share(|x| x < 0.0));
     let yaw: Vec<f64> = samples.iter().map(|&i| run.yaw_rate[i]).collect();
+    let mut speeds: Vec<f64> = samples.iter().map(|&i| run.speed[i]).collect();
     Some(YawPerNeutral {
         median: median(&mut q),
         samples: q.len(),
+        speed: median(&mut speeds),
         with_steer,
         against,
         one_value: crate::measured::one_value(&yaw),
@@ -220,10 +224,11 @@ impl Wheelbase {
 
 /// What is wrong with a run's steer, judged by the median `median` of
 /// [`yaw_per_neutral`] over `samples` held samples, taken with
-/// `wheelbase`'s [`Wheelbase::for_median`]: below −[`STEER_IN_DEGREES`] the
-/// yaw rate turns against the steer (another sign convention), below
-/// [`STEER_IN_DEGREES`] it is far smaller than a neutral car's (a steer in
-/// degrees, 57×, or a steering-wheel angle, 15×), above
+/// `wheelbase`'s [`Wheelbase::for_median`], against [`STEER_IN_DEGREES`]
+/// lowered by the samples' speed ([`least_gain::limit_at_speed`]): below
+/// minus that limit the yaw rate turns against the steer (another sign
+/// convention), below it it is far smaller than a neutral car's (a steer
+/// in degrees, 57×, or a steering-wheel angle, 15×), above
 /// [`YAW_ABOVE_STEER`] far larger (a steer declared in degrees that was in
 /// radians). Each refuses the run, in `metrics`, in a replay and in
 /// `diagnose` alike: fitted, such a steer gives a model-form error that is
@@ -242,17 +247,20 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
             Some(SHORTEST_WHEELBASE),
         ),
     };
-    let units = if median < -STEER_IN_DEGREES {
+    let (limit, at_speed) =
+        least_gain::limit_at_speed(STEER_IN_DEGREES, y.speed, wheelbase.for_median());
+    let units = if median < -limit {
         Some(InputProblem::YawAgainstSteer {
             median,
             samples,
             ay_with_steer: y.ay_with_steer,
         })
-    } else if median < STEER_IN_DEGREES {
+    } else if median < limit {
         Some(InputProblem::SteerAboveYaw {
             median,
             samples,
             assumed_wheelbase: assumed,
+            at_speed,
         })
     } else if above > YAW_ABOVE_STEER {
         Some(InputProblem::YawAboveSteer {
@@ -285,12 +293,7 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let wheelbase = Wheelbase::Unknown;
     let Some(y) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
-        let p = super::moving_steer::steer_in_degrees(
-            run,
-            min_speed,
-            LONGEST_WHEELBASE,
-            STEER_IN_DEGREES,
-        );
+        let p = super::moving_steer::steer_in_degrees(run, min_speed, LONGEST_WHEELBASE);
         return p.map_or(Ok(()), |p| Err(InputError::problem(&run.path, p)));
     };
     match steer_problem(&y, wheelbase) {
@@ -332,6 +335,7 @@ pub struct MeasuredMetrics {
 mod ay_check;
 mod coarse_grid;
 mod hole_bound;
+pub mod least_gain;
 mod no_step;
 mod noise_spread;
 mod peak_speed;

@@ -3,8 +3,10 @@
 //! steer turns left), the shares turning with and against the steer, and
 //! the share of lateral acceleration turning with it, which says which
 //! channel a reversal is in (ay = u·r in a steady turn: an `ay` with the
-//! steer and a yaw rate against it is a yaw rate of the other sign).
-//! Units: SI, rad.
+//! steer and a yaw rate against it is a yaw rate of the other sign),
+//! and the samples' median speed, which the limits on the ratio fall
+//! with (an understeering car's is `1/(1 + K·u²/l)`:
+//! `measured/least_gain.rs`). Units: SI, rad, m/s.
 
 use crate::measured::MeasuredRun;
 
@@ -16,6 +18,9 @@ pub struct YawPerNeutral {
     pub median: f64,
     /// The held steered samples it is taken over.
     pub samples: usize,
+    /// Their median speed, m/s: a car's ratio falls with it (the limits
+    /// it is judged by: `measured/least_gain.rs`).
+    pub speed: f64,
     /// Their share whose yaw rate turns with the steer (`r·δ > 0`).
     pub with_steer: f64,
     /// Their share whose yaw rate turns against it (`r·δ < 0`).

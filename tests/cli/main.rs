@@ -1009,3 +1009,4 @@ mod trips_s114_tyres50;
 mod trips_s114_units50;
 mod trips_s114_words50;
 mod trips_s115_clean51;
+mod trips_s115_gain51;

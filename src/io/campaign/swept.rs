@@ -13,7 +13,8 @@
 //! sweep 0.54 in radians); a steer in degrees 57× less (0.0095), a
 //! steering-wheel angle 15× less; a steer in radians declared in degrees
 //! 57× more. The median is judged by [`steer_problem`] as a held steer's
-//! is: below [`crate::metrics::measured::STEER_IN_DEGREES`] (0.1) or above
+//! is: below [`crate::metrics::measured::STEER_IN_DEGREES`] (0.1, lowered
+//! at the samples' median speed as `measured/least_gain.rs` says) or above
 //! [`crate::metrics::measured::YAW_ABOVE_STEER`] (5) the run is refused
 //! with its words (`diagnose` and a replay alike). ISO 8855 signs; SI,
 //! rad, s.
@@ -68,6 +69,7 @@ pub(super) fn swept_per_neutral(
     }
     let lag = best_lag(&run.t, &run.steer, &q, &at_speed);
     let (mut ratio, mut with, mut against) = (Vec::new(), 0usize, 0usize);
+    let mut speeds = Vec::new();
     for &i in at_speed
         .iter()
         .filter(|&&i| run.steer[i].abs() >= 0.3 * p95)
@@ -78,6 +80,7 @@ pub(super) fn swept_per_neutral(
             with += usize::from(x > 0.0);
             against += usize::from(x < 0.0);
             ratio.push(x);
+            speeds.push(run.speed[i]);
         }
     }
     if ratio.len() < MIN_SAMPLES {
@@ -85,9 +88,11 @@ pub(super) fn swept_per_neutral(
     }
     let n = ratio.len() as f64;
     ratio.sort_by(f64::total_cmp);
+    speeds.sort_by(f64::total_cmp);
     Some(YawPerNeutral {
         median: ratio[ratio.len() / 2],
         samples: ratio.len(),
+        speed: speeds[speeds.len() / 2],
         with_steer: with as f64 / n,
         against: against as f64 / n,
         one_value: None,

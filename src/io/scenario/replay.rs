@@ -74,13 +74,17 @@ pub(super) fn resolve(
             return Err(e);
         }
         if let InputProblem::SteerAboveYaw {
-            median, samples, ..
+            median,
+            samples,
+            at_speed,
+            ..
         } = problem
         {
             let p = ReplayRunProblem::SteerAboveYaw {
                 run: r.run.display().to_string().into(),
                 median,
                 samples,
+                at_speed,
             };
             return Err(at_key(src, "manoeuvre.run", p));
         }

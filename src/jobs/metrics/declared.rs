@@ -19,6 +19,7 @@ pub(super) fn name_declaration(e: InputError, degrees: &[AngleColumn]) -> InputE
             median,
             samples,
             assumed_wheelbase,
+            ..
         } => (median, samples, assumed_wheelbase, AngleColumn::YawRate),
         InputProblem::YawAboveSteer {
             median,

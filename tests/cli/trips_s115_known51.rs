@@ -1,4 +1,4 @@
-//! Findings known from session 114 (issue 41), fixed in session 115:
+//! Findings known from session 114, fixed in session 115:
 //!
 //! 1. A pneumatic trail given with `--hold` to a linear fit was held and
 //!    its σ said (79.781 % at 0.05 m on the Hoosier file's 1656 N level,

@@ -24,6 +24,7 @@
 
 mod aligning;
 pub mod data;
+pub mod determined;
 pub mod grouping;
 mod held;
 pub mod lifted;
@@ -38,18 +39,18 @@ mod reach;
 mod spare;
 pub mod template_size;
 mod undetermined;
-pub(crate) use undetermined::hold_undetermined;
 use undetermined::Spread;
+pub(crate) use undetermined::{hold_undetermined, start_tyre_of};
 
 pub(crate) use held::{bounds_in, set_after_fits, value_in, with_value, LINEAR_TRAIL};
 pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 
-use crate::error::{Error, FitError, OptionsError};
+use crate::error::{Error, FitError};
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{levenberg_marquardt, GaussNewton, LocalResult, Residuals};
 use crate::optim::{stats, Inertia, Pso};
-use crate::tyre::{Identification, ModelName, Tyre};
+use crate::tyre::Tyre;
 use data::Condition;
 use nalgebra::DMatrix;
 use serde::Serialize;
@@ -148,6 +149,10 @@ pub struct ParameterReport {
     pub bounds: (f64, f64),
     /// Warning, if any.
     pub warning: Option<String>,
+    /// Fixed by the data beyond its linearisation, where a hold within its
+    /// ±2 standard errors was refused (`determined.rs`); else `None`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub determination: Option<determined::Determination>,
     /// What the data leave of it unsettled where the fit hardly feels it
     /// (a standard error past the value, an effect under 1 % of the
     /// channel's RMS): said, not warned of.
@@ -579,21 +584,3 @@ fn asked_past(
 
 #[cfg(test)]
 mod tests;
-
-/// The start tyre of a fit of `model` to data whose median load is `fz`
-/// (each model's own, [`ModelName::start_tyre`]): the lateral parameters
-/// only, so that no borrowed aligning or longitudinal coefficients are
-/// written. A model without a swarm fit is refused with what fits it.
-pub(crate) fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
-    model.start_tyre(fz).ok_or_else(|| {
-        Error::Options(match model.identification() {
-            Identification::Staged(fits) => OptionsError::StagedFitOnly {
-                model: model.to_string(),
-                fits: fits.iter().map(|f| f.name).collect(),
-            },
-            _ => OptionsError::NotIdentified {
-                model: model.to_string(),
-            },
-        })
-    })
-}

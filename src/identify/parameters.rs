@@ -45,6 +45,7 @@ pub(super) fn parameter_reports(
             effect_percent: None,
             bounds: (lo, hi),
             warning: None,
+            determination: None,
             note: None,
         };
         if free[i] {

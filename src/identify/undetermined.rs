@@ -37,15 +37,17 @@
 //! The trying and choosing of holds is the staged fit's own code
 //! (`spare.rs`); this module builds the channel's problems and refits.
 
+use super::determined::{Determination, Partner, STRONG_CORRELATION};
 use super::parameters::{parameter_reports, EFFECT_FLOOR};
-use super::spare::{self, candidates, held_value, standard_errors_away};
+use super::spare::{self, candidates, held_value, standard_errors_away, LEAN_STANDARD_ERRORS};
 use super::spare::{HoldFit, HoldWays, Spared, TieBreak};
 use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
 use super::{data::Condition, LocalMethod};
+use crate::error::{Error, OptionsError};
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{LocalResult, Residuals};
 use crate::optim::stats;
-use crate::tyre::Tyre;
+use crate::tyre::{Identification, ModelName, Tyre};
 use nalgebra::DMatrix;
 use std::time::Instant;
 
@@ -275,8 +277,20 @@ struct HoldRounds {
     p: Vec<f64>,
     free: Vec<bool>,
     held: Vec<(usize, HeldFor)>,
-    tried_at: Vec<(usize, f64)>,
+    tried_at: Vec<Tried>,
     evaluations: usize,
+}
+
+/// A hold the guard refused: the parameter (full index), the value tried,
+/// and whether that lay within the free fit's ±2 linearised standard
+/// errors then (its stated value within them, or their edge nearest it),
+/// so that the refusal shows the data fix it beyond that linearisation
+/// (`determined.rs`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Tried {
+    i: usize,
+    value: f64,
+    within: bool,
 }
 
 /// The rounds of holds from the free fit `fit`: each round holds the
@@ -306,7 +320,7 @@ fn hold_rounds(
     // 0.00244 costs less than the free fit's holds).
     let mut refused: Vec<(usize, f64)> = Vec::new();
     // With the value each was tried at, for its warning.
-    let mut tried_at: Vec<(usize, f64)> = Vec::new();
+    let mut tried_at: Vec<Tried> = Vec::new();
     let mut evaluations = 0;
     while p.len() > 1 {
         let spread = Spread::at(&problem, &p);
@@ -322,7 +336,7 @@ fn hold_rounds(
         evaluations += round.evaluations;
         let now_refused = tried_values(&round.refused, (&problem, &p), &spread, &values);
         tried_at.extend(&now_refused);
-        refused.extend(&now_refused);
+        refused.extend(now_refused.iter().map(|t| (t.i, t.value)));
         let Some(t) = round.kept else {
             if round.refused.is_empty() {
                 break;
@@ -359,24 +373,25 @@ fn hold_rounds(
 /// The parameters (free indices `refused`) whose hold the guard refused
 /// this round, each by its full index with the value it was tried at
 /// ([`held_value`]: its stated value, or the edge of its ±2 standard
-/// errors nearest it).
+/// errors nearest it) and whether that lay within them.
 fn tried_values(
     refused: &[usize],
     (problem, p): (&FitProblem, &[f64]),
     spread: &Spread,
     stated: &Stated,
-) -> Vec<(usize, f64)> {
+) -> Vec<Tried> {
     refused
         .iter()
         .map(|&k| {
             let i = problem.free[k];
-            let value = held_value(
-                stated.values[i],
-                p[k],
-                spread.std_error(k),
-                stated.bounds[i],
-            );
-            (i, value)
+            let se = spread.std_error(k);
+            let value = held_value(stated.values[i], p[k], se, stated.bounds[i]);
+            let z = standard_errors_away(stated.values[i], p[k], se);
+            let within = match z {
+                Some(z) => value != stated.values[i] || z <= LEAN_STANDARD_ERRORS,
+                None => false,
+            };
+            Tried { i, value, within }
         })
         .collect()
 }
@@ -389,25 +404,68 @@ fn tried_values(
 /// the `--hold` that fits the rest from a new one (UniTire's aligning
 /// `c9` on the Hoosier file at 83.4 kPa and 0°: refused, σ 9.733 %; with
 /// `--hold aligning.c9=0`, 9.685 %).
-fn refusals_said(mut fit: Fit, tried_at: &[(usize, f64)]) -> Fit {
+fn refusals_said(mut fit: Fit, tried_at: &[Tried]) -> Fit {
     // Each parameter's last refusal: the value the data allowed last.
     let mut said = Vec::new();
-    for &(i, value) in tried_at.iter().rev() {
-        if said.contains(&i) {
+    for t in tried_at.iter().rev() {
+        if said.contains(&t.i) {
             continue;
         }
-        said.push(i);
-        let p = &mut fit.parameters[i];
+        said.push(t.i);
+        let fixed = fixed_beyond(&fit, t);
+        let p = &mut fit.parameters[t.i];
         let (true, Some(w)) = (p.free, p.warning.as_mut()) else {
             continue;
         };
-        let v = crate::format::readable(value, 4);
-        w.push_str(&format!(
-            "; held at {v} with the rest refitted from this fit's optimum, it raised the channel's σ past what the rule lets a hold cost (5 % of itself, or 2.25 standard errors' worth), so it is left free: --hold {}={v} (or a value of your own) fits the rest from a new swarm instead",
+        let v = crate::format::readable(t.value, 4);
+        let refusal = format!(
+            "held at {v} with the rest refitted from this fit's optimum, it raised the channel's σ past what the rule lets a hold cost (5 % of itself, or 2.25 standard errors' worth), so it is left free: --hold {}={v} (or a value of your own) fits the rest from a new swarm instead",
             p.name
-        ));
+        );
+        // Refused within its ±2: the words (and the type) the staged fit
+        // gives such a coefficient replace "not identified" (one
+        // function, `Determination::said`).
+        match fixed.as_ref().and_then(|d| d.said(p.std_error)) {
+            Some(head) => *w = format!("{head}; {refusal}"),
+            None => w.push_str(&format!("; {refusal}")),
+        }
+        if fixed.is_some() {
+            p.determination = fixed;
+        }
     }
     fit
+}
+
+/// The determination of a parameter of `fit` whose hold `t` was refused
+/// within its ±2 linearised standard errors, still flagged with a
+/// standard error and off its search bound: fixed beyond its
+/// linearisation, with the free parameter it trades with (`|r| ≥`
+/// [`STRONG_CORRELATION`] by the fit's covariance). `None` otherwise.
+fn fixed_beyond(fit: &Fit, t: &Tried) -> Option<Determination> {
+    let p = &fit.parameters[t.i];
+    let effect_percent = p.effect_percent.filter(|_| p.std_error.is_some())?;
+    let off_bound = !super::parameters::on_search_bound(p.value, p.bounds);
+    (t.within && p.free && p.warning.is_some() && off_bound).then(|| {
+        let free: Vec<usize> = (0..fit.parameters.len())
+            .filter(|&j| fit.parameters[j].free)
+            .collect();
+        let k = free.iter().position(|&j| j == t.i);
+        let partner = fit.covariance.as_ref().zip(k).and_then(|(c, k)| {
+            (0..free.len())
+                .filter(|&j| j != k && c[(j, j)] > 0.0 && c[(k, k)] > 0.0)
+                .map(|j| (j, c[(j, k)] / (c[(j, j)] * c[(k, k)]).sqrt()))
+                .filter(|(_, r)| r.is_finite() && r.abs() >= STRONG_CORRELATION)
+                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        });
+        Determination::FixedBeyondLinearisation {
+            effect_percent,
+            partner: partner.map(|(j, correlation)| Partner {
+                name: fit.parameters[free[j]].name.clone(),
+                correlation,
+                on_bound: None,
+            }),
+        }
+    })
 }
 
 /// What the holds of a channel start from: the stated `values` and the
@@ -488,6 +546,24 @@ fn refit(
 ) -> LocalResult {
     polish(problem, x, bounds, local)
         .unwrap_or_else(|| BoundedLm::default().minimize(problem, x, bounds))
+}
+
+/// The start tyre of a fit of `model` to data whose median load is `fz`
+/// (each model's own, [`ModelName::start_tyre`]): the lateral parameters
+/// only, so that no borrowed aligning or longitudinal coefficients are
+/// written. A model without a swarm fit is refused with what fits it.
+pub(crate) fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
+    model.start_tyre(fz).ok_or_else(|| {
+        Error::Options(match model.identification() {
+            Identification::Staged(fits) => OptionsError::StagedFitOnly {
+                model: model.to_string(),
+                fits: fits.iter().map(|f| f.name).collect(),
+            },
+            _ => OptionsError::NotIdentified {
+                model: model.to_string(),
+            },
+        })
+    })
 }
 
 #[cfg(test)]

@@ -167,3 +167,70 @@ fn data_that_fix_every_parameter_hold_none() {
         fit.parameters
     );
 }
+
+/// A hold refused within the free fit's ±2 linearised standard errors
+/// shows the data fix the parameter beyond that linearisation: its
+/// warning is the staged fit's words for it (`Determination::said`), not
+/// "not identified", typed in the report, with the refusal after them;
+/// one refused beyond the ±2 keeps its warning and gets no type.
+#[test]
+fn a_hold_refused_within_its_linearisation_is_said_as_the_staged_fit_says_it() {
+    let (start, conditions) = linear_range_pac89();
+    let free = fit_channel_holding(
+        &start,
+        Channel::LateralForce,
+        &conditions,
+        &FitSettings::new(3),
+        &[],
+    )
+    .unwrap();
+    let i = free
+        .parameters
+        .iter()
+        .position(|p| {
+            let bound = super::super::parameters::on_search_bound(p.value, p.bounds);
+            p.free && p.warning.is_some() && p.std_error.is_some() && !bound
+        })
+        .unwrap_or_else(|| panic!("{:#?}", free.parameters));
+    let p = &free.parameters[i];
+    let was = p.warning.clone().unwrap();
+    assert!(was.starts_with("not identified"), "{was}");
+    let tried = |within| Tried {
+        i,
+        value: p.value + p.std_error.unwrap(),
+        within,
+    };
+    let fixed = refusals_said(free.clone(), &[tried(true)]);
+    let q = &fixed.parameters[i];
+    let Some(Determination::FixedBeyondLinearisation {
+        effect_percent,
+        partner,
+    }) = &q.determination
+    else {
+        panic!("{q:?}")
+    };
+    assert_eq!(Some(*effect_percent), p.effect_percent);
+    let w = q.warning.as_deref().unwrap();
+    let head = q.determination.as_ref().unwrap().said(p.std_error).unwrap();
+    assert!(w.starts_with(&format!("{head}; held at ")), "{w}");
+    assert!(
+        w.starts_with("fixed by the data more tightly than its standard error says: the linearised standard error "),
+        "{w}"
+    );
+    assert!(!w.contains("not identified"), "{w}");
+    if let Some(partner) = partner {
+        assert!(
+            partner.correlation.abs() >= STRONG_CORRELATION,
+            "{partner:?}"
+        );
+        assert!(
+            w.contains(&format!("it trades with {}", partner.name)),
+            "{w}"
+        );
+    }
+    let beyond = refusals_said(free.clone(), &[tried(false)]);
+    let q = &beyond.parameters[i];
+    assert_eq!(q.determination, None);
+    let w = q.warning.as_deref().unwrap();
+    assert!(w.starts_with(&format!("{was}; held at ")), "{w}");
+}

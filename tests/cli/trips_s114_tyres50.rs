@@ -76,6 +76,14 @@ fn a_tyre_file_fitted_below_the_cars_wheel_loads_is_noted_before_the_verdict() {
     let note = at(&said).unwrap_or_else(|| panic!("{stdout}"));
     let verdict = at("verdict:").unwrap_or_else(|| panic!("{stdout}"));
     assert!(note < verdict, "{stdout}");
+    // One sentence: what would settle it follows the last parenthesis
+    // after a `;`, not as a second parenthesis straight after it.
+    let line = lines[note].trim_start();
+    assert!(
+        line.ends_with("zero offset); a tyre fitted at the car's loads would tell the two apart"),
+        "{line}"
+    );
+    assert!(!line.contains(") ("), "{line}");
     let notes = d["notes"].as_array().unwrap();
     assert!(
         notes
@@ -83,6 +91,9 @@ fn a_tyre_file_fitted_below_the_cars_wheel_loads_is_noted_before_the_verdict() {
             .any(|n| n.as_str().unwrap().starts_with(&said["note: ".len()..])),
         "{notes:?}"
     );
+    let tyre_notes = notes.iter().map(|n| n.as_str().unwrap());
+    let mut tyre_notes = tyre_notes.filter(|n| n.starts_with("the tyre file "));
+    assert!(tyre_notes.all(|n| !n.contains(") (")), "{notes:?}");
     let short = loads_notes(&d);
     assert_eq!(short.len(), 1, "{short:?}");
     assert_eq!(short[0]["of"]["kind"], "fitted");
@@ -99,6 +110,12 @@ fn a_tyre_file_fitted_below_the_cars_wheel_loads_is_noted_before_the_verdict() {
             "(its [fitted_ranges] fz) and the car&#39;s static wheel loads are 2995–4507 N"
         ),
         "the note is not on the page"
+    );
+    assert!(
+        page.contains(
+            "zero offset); a tyre fitted at the car&#39;s loads would tell the two apart"
+        ),
+        "the note's end is not on the page"
     );
 
     // A `.tir` whose FZMAX the front's load passes, a range holding the

@@ -19,58 +19,15 @@
 //! sits on its bound (PKY4 = 0.1 beside PKY1 on the Hoosier file).
 //!
 //! A coefficient on its physical bound has no standard error worth the
-//! name: the fit would take it beyond (`OnBound`).
+//! name: the fit would take it beyond (`OnBound`). The type and its words
+//! are the swarm route's too (`identify/determined.rs`).
 
 use super::hold_refusal::RefusedHold;
 use super::hold_rounds::StageFit;
 use super::release::at_bound;
-use super::uncertainty::{effect_words, Uncertainty};
+use super::uncertainty::Uncertainty;
+use crate::identify::determined::{Determination, Partner, STRONG_CORRELATION};
 use crate::identify::spare::LEAN_STANDARD_ERRORS;
-use serde::Serialize;
-
-/// The correlation of two estimates, by the linearised covariance, at
-/// which the one is named as the other's partner: the two trade along
-/// one direction the data barely see (`|r|` near 1).
-pub(crate) const STRONG_CORRELATION: f64 = 0.9;
-
-/// The free parameter a coefficient's estimate is most correlated with.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Partner {
-    /// Its `.tir` name.
-    pub name: &'static str,
-    /// The correlation of the two estimates at the fit (−1 to 1).
-    pub correlation: f64,
-    /// The physical bound it sits on, if it does.
-    pub on_bound: Option<f64>,
-}
-
-/// How the data determine a fitted coefficient (module notes).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "kebab-case", tag = "kind")]
-pub enum Determination {
-    /// Its standard error is below its magnitude, or one standard error
-    /// moves the fit by under 1 % of the channel's RMS.
-    Identified,
-    /// Its standard error reaches its magnitude and one moves the fit by
-    /// 1 % of the channel's RMS or more, or it has none.
-    NotIdentifiable,
-    /// Its linearised standard error says not identifiable, but a hold
-    /// within it was refused: the data fix it more tightly, and the
-    /// standard error (kept in `std_error`) means nothing.
-    FixedBeyondLinearisation {
-        /// One linearised standard error's effect alone, % of the
-        /// channel's RMS.
-        effect_percent: f64,
-        /// The free parameter it trades with, where one is correlated
-        /// with it by [`STRONG_CORRELATION`] or more.
-        partner: Option<Partner>,
-    },
-    /// On a physical bound: the fit would take it beyond.
-    OnBound {
-        /// The bound.
-        bound: f64,
-    },
-}
 
 impl RefusedHold {
     /// Whether the value tried lay within the free fit's ±2 linearised
@@ -107,7 +64,7 @@ pub(super) fn determination(
                 partner: u
                     .partner(k, STRONG_CORRELATION)
                     .map(|(j, correlation)| Partner {
-                        name: fit.problem.names[j],
+                        name: fit.problem.names[j].to_string(),
                         correlation,
                         on_bound: at_bound(fit.p[j], fit.bounds[j]),
                     }),
@@ -115,55 +72,6 @@ pub(super) fn determination(
         }
         _ if u.flagged(k, value) => Determination::NotIdentifiable,
         _ => Determination::Identified,
-    }
-}
-
-impl Partner {
-    /// "it trades with QSX11 (correlation −0.9993 at the fit)", the
-    /// partner's bound said where it sits on one.
-    fn said(&self) -> String {
-        let bound = self.on_bound.map_or(String::new(), |b| {
-            format!(", itself on its physical bound {}", crate::format::exact(b))
-        });
-        // Four digits, or as many more as keep a correlation short of ±1
-        // from reading as ±1 (−0.99998 is not "−1").
-        let r = self.correlation;
-        let short_of_one = |t: &String| {
-            let v = t.parse::<f64>().ok();
-            r.abs() == 1.0 || v.filter(|v| v.abs() >= 1.0).is_none()
-        };
-        let said = (4..=12)
-            .map(|d| crate::format::rounded(r, d))
-            .find(short_of_one)
-            .unwrap_or_else(|| crate::format::rounded(r, 12));
-        format!(
-            "it trades with {}{bound} (correlation {said} at the fit)",
-            self.name
-        )
-    }
-}
-
-impl Determination {
-    /// The words of a coefficient fixed beyond its linearisation with
-    /// standard error `se`, before its refused hold's; `None` for the
-    /// others, whose words are the identifiability warning's.
-    pub fn said(&self, se: Option<f64>) -> Option<String> {
-        let Determination::FixedBeyondLinearisation {
-            effect_percent,
-            partner,
-        } = self
-        else {
-            return None;
-        };
-        let why = match partner {
-            Some(p) => format!("{}, along which the cost is far from quadratic", p.said()),
-            None => "the cost is far from quadratic about the fit".into(),
-        };
-        Some(format!(
-            "fixed by the data more tightly than its standard error says: the linearised standard error{} means nothing here (one of it would move the fit by {}; {why}), as the hold below shows",
-            se.map_or(String::new(), |s| format!(" {}", crate::format::readable(s, 4))),
-            effect_words(*effect_percent),
-        ))
     }
 }
 
@@ -211,19 +119,19 @@ mod tests {
         let d = Determination::FixedBeyondLinearisation {
             effect_percent: 769.7,
             partner: Some(Partner {
-                name: "QSX11",
+                name: "QSX11".into(),
                 correlation: -0.99934,
                 on_bound: None,
             }),
         };
         assert_eq!(
             d.said(Some(168.2)).unwrap(),
-            "fixed by the data more tightly than its standard error says: the linearised standard error 168.2 means nothing here (one of it would move the fit by 769.7 % of the channel's RMS; it trades with QSX11 (correlation -0.9993 at the fit), along which the cost is far from quadratic), as the hold below shows"
+            "fixed by the data more tightly than its standard error says: the linearised standard error 168.2 means nothing here (one of it would move the fit by 769.7 % of the channel's RMS; it trades with QSX11 (correlation -0.9993 at the fit), along which the cost is far from quadratic), as its refused hold shows"
         );
         let bound = Determination::FixedBeyondLinearisation {
             effect_percent: 722.3,
             partner: Some(Partner {
-                name: "PKY4",
+                name: "PKY4".into(),
                 correlation: 0.95,
                 on_bound: Some(0.1),
             }),
@@ -235,7 +143,7 @@ mod tests {
         );
         // QSX10 against QSX11 on the book's rig: −0.99998 is not "−1".
         let near = Partner {
-            name: "QSX11",
+            name: "QSX11".into(),
             correlation: -0.999984,
             on_bound: None,
         };

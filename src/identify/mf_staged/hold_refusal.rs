@@ -98,14 +98,13 @@ pub(super) fn refused_hold(
 ) -> RefusedHold {
     let base = problem.cost(p);
     let dof = problem.count().saturating_sub(p.len()).max(1) as f64;
-    let statistical = 0.5 * GUARD_STANDARD_ERRORS * GUARD_STANDARD_ERRORS * 2.0 * base / dof;
-    let rise = base * ((1.0 + SIGMA_RISE).powi(2) - 1.0);
     let sigma = problem.sigma_percent(p);
     // σ scales with the square root of the cost (module notes).
     let scaled = |cost: f64| match base > 0.0 {
         true => sigma * (cost / base).sqrt(),
         false => 0.0,
     };
+    let (sigma_limit_percent, limit) = sigma_limit(sigma, dof);
     RefusedHold {
         source,
         stated,
@@ -113,13 +112,27 @@ pub(super) fn refused_hold(
         standard_errors_away: standard_errors_away(stated, p[r.k], se),
         sigma_free_percent: sigma,
         sigma_held_percent: scaled(r.cost),
-        sigma_limit_percent: scaled(base + statistical.max(rise)),
-        limit: match statistical > rise {
-            true => GuardLimit::StandardErrors,
-            false => GuardLimit::SigmaRise,
-        },
+        sigma_limit_percent,
+        limit,
         more_data: more_data(need),
     }
+}
+
+/// The most σ (%) a hold may reach from a free fit at σ `sigma` (%) with
+/// `dof` residual degrees of freedom, and which of the guard's two limits
+/// (`spare::guard`) sets it: the cost `c₀` may grow by `½·2.25²·s²` =
+/// `c₀·2.25²/dof` (`s² = 2c₀/dof`) or by σ rising 5 %, the larger, and σ
+/// goes as `sqrt(c)` (module notes). One rule for the staged fit's holds
+/// and a linear fit's trail given with `--hold`
+/// (`jobs/identify/linear_window.rs`).
+pub(crate) fn sigma_limit(sigma: f64, dof: f64) -> (f64, GuardLimit) {
+    let statistical = GUARD_STANDARD_ERRORS * GUARD_STANDARD_ERRORS / dof.max(1.0);
+    let rise = (1.0 + SIGMA_RISE).powi(2) - 1.0;
+    let limit = match statistical > rise {
+        true => GuardLimit::StandardErrors,
+        false => GuardLimit::SigmaRise,
+    };
+    (sigma * (1.0 + statistical.max(rise)).sqrt(), limit)
 }
 
 /// The data that would determine a term needing `need` levels: each of
@@ -162,7 +175,7 @@ impl MoreData {
 
 impl GuardLimit {
     /// The limit in words.
-    fn words(self) -> String {
+    pub(crate) fn words(self) -> String {
         match self {
             GuardLimit::SigmaRise => format!(
                 "σ rising by {:.0} % of itself, the larger of the guard's two limits here",
@@ -282,5 +295,19 @@ mod tests {
             pressures: 1,
         };
         assert_eq!(more_data(lc), vec![MoreData::Loads, MoreData::Cambers]);
+    }
+
+    /// On many points σ rising 5 % sets the limit; on few, 2.25 standard
+    /// errors' worth: 17 points less one parameter allow
+    /// sqrt(1 + 2.25²/16) = 1.14735 times σ.
+    #[test]
+    fn the_limit_is_the_larger_of_the_guards_two() {
+        let (most, limit) = sigma_limit(10.0, 5000.0);
+        assert!((most - 10.5).abs() < 1e-12, "{most}");
+        assert_eq!(limit, GuardLimit::SigmaRise);
+        let (most, limit) = sigma_limit(10.0, 16.0);
+        assert!((most - 10.0 * (1.0 + 2.25f64.powi(2) / 16.0).sqrt()).abs() < 1e-12);
+        assert!((most - 11.4735).abs() < 1e-4, "{most}");
+        assert_eq!(limit, GuardLimit::StandardErrors);
     }
 }

@@ -46,8 +46,8 @@
 use super::book_defaults::pacejka_book_default;
 use super::curvature_clip::AtClip;
 use super::params::{Need, HELD};
-use super::uncertainty::ABSURD_EFFECT_PERCENT;
 use crate::format::{exact, readable};
+use crate::identify::determined::ABSURD_EFFECT_PERCENT;
 use crate::identify::spare::{held_at, held_at_tried, lean_clause};
 use serde::Serialize;
 use std::fmt;

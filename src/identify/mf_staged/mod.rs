@@ -125,9 +125,10 @@ mod start;
 mod template_start;
 mod uncertainty;
 
+pub use crate::identify::determined::{Determination, Partner};
 pub use book_defaults::pacejka_book_default;
 pub use curvature_clip::{AtClip, CurvatureFactor};
-pub use determination::{Determination, Partner};
+pub(crate) use hold_refusal::sigma_limit;
 pub use hold_refusal::{GuardLimit, MoreData, RefusedHold};
 pub use holds::{HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;

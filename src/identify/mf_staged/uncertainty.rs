@@ -7,6 +7,7 @@
 //! identifiable ([`identifiability_warning`]).
 
 use super::problem::{unbounded, StageProblem};
+use crate::identify::determined::effect_words;
 use crate::optim::local::Residuals;
 
 /// The uncertainty of a stage's free parameters at a point.
@@ -238,25 +239,6 @@ pub(super) fn identifiability_warning(value: f64, se: f64, effect: f64) -> Optio
             effect_words(100.0 * effect)
         )
     })
-}
-
-/// The effect of one standard error, % of the channel's RMS, past which
-/// its digits say nothing (PKX3's "0.23756 ± 27256 … 196581.1 %" on
-/// combined-slip data, RHY1's 5505749.1 % under `--start paper`): said as
-/// more than ten times the channel's RMS.
-pub(super) const ABSURD_EFFECT_PERCENT: f64 = 1000.0;
-
-/// One standard error's effect, `percent` of the channel's RMS, in words:
-/// its digits up to [`ABSURD_EFFECT_PERCENT`], a bound past it.
-pub(super) fn effect_words(percent: f64) -> String {
-    if percent < ABSURD_EFFECT_PERCENT {
-        format!("{percent:.1} % of the channel's RMS")
-    } else {
-        format!(
-            "more than {} times the channel's RMS",
-            ABSURD_EFFECT_PERCENT / 100.0
-        )
-    }
 }
 
 #[cfg(test)]

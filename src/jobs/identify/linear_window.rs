@@ -70,6 +70,10 @@ pub struct LinearWindow {
     pub trail_sigma_percent: Option<f64>,
     /// The window's points with a measured `mz`.
     pub trail_points: usize,
+    /// Where the trail given with `--hold` costs the aligning moment more
+    /// than the hold guard lets a hold cost (the data refuse it; held all
+    /// the same, as given): the trail they fit and its σ.
+    pub trail_refused: Option<TrailRefused>,
     /// The loads of the conditions left with fewer than two points in the
     /// window, so not fitted, N.
     pub loads_left_out: Vec<f64>,
@@ -81,6 +85,30 @@ pub struct LinearWindow {
     /// `max_abs_alpha_deg` by up to half a bin, as a bin within the window
     /// is judged by its centre and its samples spread about it.
     pub samples_reach_deg: Option<f64>,
+}
+
+/// A trail given with `--hold` that the window's `mz` refuses, judged as
+/// the staged fit's guard judges a hold (`mf_staged::sigma_limit`): its σ
+/// past what σ of the trail the data fit (Σα·Mz / Σα·Fy, [`trail`]) may
+/// rise to, by 5 % of itself or 2.25 standard errors' worth over the
+/// points less the one trail, the larger. A σ of 20 % (the large-σ
+/// warning's bound, `notes.rs`) is no such test here: σ is the RMS of
+/// `t_p·Fy − Mz` over the RMS of `Mz`, and `Mz = t_p·Fy` misses a real
+/// tyre's aligning moment by a share of its own (13.2 % at the trail the
+/// Hoosier file's 1656 N level fits, 0.0279 m), so a bound on σ alone
+/// says the model form, not the hold; the guard compares the held trail
+/// with the fitted one on the same points (15.2 % allowed there; 0.05 m
+/// gives 79.8 %).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TrailRefused {
+    /// The trail the points fit, m.
+    pub fitted: f64,
+    /// The aligning moment's σ at it, %.
+    pub sigma_fitted_percent: f64,
+    /// The most σ a hold may reach, %.
+    pub sigma_limit_percent: f64,
+    /// Which of the guard's two limits set it.
+    pub limit: crate::identify::mf_staged::GuardLimit,
 }
 
 /// What the points beyond a linear fit's window do (module notes).
@@ -134,7 +162,11 @@ impl LinearWindow {
     /// header (`mark` `"#"`).
     pub(crate) fn lines(&self, mark: &str) -> Vec<String> {
         let trail = match (self.trail_given, self.pneumatic_trail) {
-            (Some(t), _) => given_trail_words(t, self.trail_sigma_percent, self.trail_points),
+            (Some(t), _) => format!(
+                "{}{}",
+                given_trail_words(t, self.trail_sigma_percent, self.trail_points),
+                self.given_warning(t)
+            ),
             (None, Some(t)) => format!(
                 "pneumatic_trail = {t:.5} m fitted to mz on the same points (the ratio of the slopes of mz and fy on alpha): aligning moment σ {} % over {}{}",
                 crate::format::fixed(self.trail_sigma_percent.unwrap_or(f64::NAN), 3),
@@ -229,6 +261,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
             trail_given: None,
             trail_sigma_percent: None,
             trail_points: 0,
+            trail_refused: None,
             loads_left_out: Vec::new(),
             beyond,
             samples_reach_deg: None,
@@ -251,6 +284,7 @@ pub(crate) fn windowed(conditions: Vec<Condition>, bin: f64) -> (Vec<Condition>,
         trail_given: None,
         trail_sigma_percent: None,
         trail_points: 0,
+        trail_refused: None,
         loads_left_out: left.iter().map(|c| c.fz).collect(),
         beyond,
         samples_reach_deg: None,
@@ -387,6 +421,27 @@ impl LinearWindow {
         self.trail_sigma_percent = set
             .filter(|_| !points.is_empty())
             .map(|_| sigma_of(Channel::AligningMoment, tyre, &points).0);
+        self.trail_refused = match (given, self.trail_sigma_percent) {
+            (Some(_), Some(held)) => refused_trail(tyre, conditions, &points, held),
+            _ => None,
+        };
+    }
+
+    /// The warning of a trail `t` given with `--hold`: the data's refusal
+    /// ([`TrailRefused`], in the words the staged fit gives a refused
+    /// hold's σ), else a σ past the large-σ bound, as a fitted trail's.
+    fn given_warning(&self, t: f64) -> String {
+        let (Some(r), Some(held)) = (self.trail_refused, self.trail_sigma_percent) else {
+            return self.trail_warning();
+        };
+        format!(
+            "; warning: the data refuse this hold: the trail they fit on the same points is {} m; held at {} m, σ rose from {:.3} % to {held:.3} %, past the {:.3} % a hold may reach ({}), so Mz = t_p·Fy at the trail held does not follow these data; it is held all the same, as given with --hold: hold a value you know, or leave it out to fit the trail",
+            crate::format::fixed(r.fitted, 5),
+            crate::format::exact(t),
+            r.sigma_fitted_percent,
+            r.sigma_limit_percent,
+            r.limit.words(),
+        )
     }
 
     /// The trail the window's `mz` judges: the one fitted to it, or the
@@ -428,6 +483,31 @@ fn given_trail_words(t: f64, sigma: Option<f64>, points: usize) -> String {
     )
 }
 
+/// The refusal ([`TrailRefused`]) of a trail held on `tyre` at σ `held`
+/// (%) over `points`, the window's with a measured `mz`: `None` where the
+/// data fit no trail or the held one costs what a hold may.
+fn refused_trail(
+    tyre: &Tyre,
+    conditions: &[Condition],
+    points: &[crate::identify::data::Point],
+    held: f64,
+) -> Option<TrailRefused> {
+    use crate::identify::{sigma_of, Channel};
+    let fitted = trail(conditions)?;
+    let mut free = tyre.clone();
+    set_trail(&mut free, fitted);
+    let sigma = sigma_of(Channel::AligningMoment, &free, points).0;
+    // One parameter, the trail, fitted to the points.
+    let dof = points.len().saturating_sub(1) as f64;
+    let (most, limit) = crate::identify::mf_staged::sigma_limit(sigma, dof);
+    (held > most).then_some(TrailRefused {
+        fitted,
+        sigma_fitted_percent: sigma,
+        sigma_limit_percent: most,
+        limit,
+    })
+}
+
 /// Sets the trail of a linear `tyre` to `t`.
 pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
     if let Tyre::Linear(l) = tyre {
@@ -451,6 +531,7 @@ mod tests {
             trail_given: None,
             trail_sigma_percent: None,
             trail_points: 0,
+            trail_refused: None,
             loads_left_out: Vec::new(),
             beyond: Beyond::NotJudged,
             samples_reach_deg: Some(2.112),

@@ -48,6 +48,14 @@ fn beyond(loads: [f64; 2], car: [f64; 2]) -> (f64, bool) {
 /// sedan's straight running into a yaw rate read as one).
 const MAY_BE: &str = "so a gap may be the tyre's rather than an unmodelled effect's, a steady one included (its force at zero slip at those loads is no fit either, and a run reads it as a sensor's zero offset)";
 
+/// What would tell the two apart, `what` said as its subject: a clause
+/// of the note's one sentence after a `;`, where it had stood as a second
+/// parenthesis straight after [`MAY_BE`]'s, "…offset) (a tyre fitted …
+/// closes it)" (round 51).
+fn settles(what: &str) -> String {
+    format!("{what} would tell the two apart")
+}
+
 /// The words of [`crate::diagnose::report::Note::TyreLoadsShort`] of
 /// `of`, its `loads` and `car`.
 pub(super) fn note(of: &LoadRangeOf, loads: [f64; 2], car: [f64; 2]) -> String {
@@ -59,16 +67,18 @@ pub(super) fn note(of: &LoadRangeOf, loads: [f64; 2], car: [f64; 2]) -> String {
     };
     match of {
         LoadRangeOf::Rig => format!(
-            "the rig data's wheel loads span {} and the car's static wheel loads are {} ({ratio:.2}× the rig's {end}): the base tyre fitted to them is extrapolated to the car's loads, {MAY_BE} (rig data at the car's loads, or tyre files under [tyres], close it)",
+            "the rig data's wheel loads span {} and the car's static wheel loads are {} ({ratio:.2}× the rig's {end}): the base tyre fitted to them is extrapolated to the car's loads, {MAY_BE}; {}",
             span(loads),
             car_span(car),
+            settles("rig data at the car's loads, or tyre files under [tyres],"),
         ),
         LoadRangeOf::Fitted { file, axles } => format!(
-            "the tyre file {file} was fitted to rig data at wheel loads of {} (its [fitted_ranges] fz) and {} {} {} ({ratio:.2}× the fitted {end}): the tyre is extrapolated to the car's loads, {MAY_BE} (a tyre fitted at the car's loads closes it)",
+            "the tyre file {file} was fitted to rig data at wheel loads of {} (its [fitted_ranges] fz) and {} {} {} ({ratio:.2}× the fitted {end}): the tyre is extrapolated to the car's loads, {MAY_BE}; {}",
             span(loads),
             axles.wheels(),
             is(*axles),
             car_span(car),
+            settles("a tyre fitted at the car's loads"),
         ),
         LoadRangeOf::Tir {
             file,
@@ -81,11 +91,12 @@ pub(super) fn note(of: &LoadRangeOf, loads: [f64; 2], car: [f64; 2]) -> String {
                 (false, _) => ("FZMIN", "its forces are evaluated at the load given there, past the file's range (MFeval holds no load at FZMIN)"),
             };
             format!(
-                "the tyre file {file} states the loads it holds as FZMIN–FZMAX, {}, and {} {} {} ({ratio:.2}× its {key}): {held}, {MAY_BE} (a tyre file whose range holds the car's loads closes it)",
+                "the tyre file {file} states the loads it holds as FZMIN–FZMAX, {}, and {} {} {} ({ratio:.2}× its {key}): {held}, {MAY_BE}; {}",
                 span(loads),
                 axles.wheels(),
                 is(*axles),
                 car_span(car),
+                settles("a tyre file whose range holds the car's loads"),
             )
         }
     }
@@ -127,5 +138,33 @@ mod tests {
         };
         let w = note(&of, [0.0, 2859.1], [2995.0, 4507.0]);
         assert!(w.contains("FZMIN–FZMAX, up to 2859 N, and the car's static wheel loads are 2995–4507 N (1.58× its FZMAX): its forces are held at FZMAX's there"), "{w}");
+    }
+
+    /// Each source's note is one sentence: what would settle it follows
+    /// the last parenthesis after a `;`, never as a second one straight
+    /// after it (round 51: "…offset) (a tyre fitted … closes it)").
+    #[test]
+    fn each_note_ends_in_one_clause_not_a_second_parenthesis() {
+        let tir = LoadRangeOf::Tir {
+            file: "small.tir".to_string(),
+            axles: TyreAxles::Rear,
+            limit_checks: false,
+        };
+        let ends = [
+            (LoadRangeOf::Rig, "; rig data at the car's loads, or tyre files under [tyres], would tell the two apart"),
+            (
+                LoadRangeOf::Fitted {
+                    file: "hoo.toml".to_string(),
+                    axles: TyreAxles::Both,
+                },
+                "; a tyre fitted at the car's loads would tell the two apart",
+            ),
+            (tir, "; a tyre file whose range holds the car's loads would tell the two apart"),
+        ];
+        for (of, end) in ends {
+            let w = note(&of, [414.2, 2887.4], [2995.0, 4507.0]);
+            assert!(w.ends_with(&format!("a sensor's zero offset){end}")), "{w}");
+            assert!(!w.contains(") ("), "{w}");
+        }
     }
 }

@@ -211,8 +211,7 @@ pub enum InputProblem {
     NegativeLoad {
         /// The load, N.
         value: f64,
-        /// Whether every load of the file is negative (a sign convention,
-        /// not a glitch).
+        /// Whether every load of the file is negative (a sign convention, not a glitch).
         every: bool,
     },
     /// `fz` and `fy` exchanged (`rig_exchanged.rs`).

@@ -996,3 +996,4 @@ mod trips_s114_metrics50;
 mod trips_s114_tyres50;
 mod trips_s114_units50;
 mod trips_s114_words50;
+mod trips_s115_roll51;

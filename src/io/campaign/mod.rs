@@ -208,6 +208,12 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         runs,
         run_files: files.len(),
         roll: f.roll,
+        roll_gradient_at: (src.key_span("roll.gradient")).map(|s| {
+            (
+                file.clone(),
+                super::toml_file::line_col(&src.text, s.start).0,
+            )
+        }),
         settings: f.diagnose,
         effects,
         notes,

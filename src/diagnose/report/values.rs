@@ -12,7 +12,7 @@ use crate::diagnose::effects::{Bound, Group, Parameter, RollDynamics};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::fold_refits::FoldRefit;
 use crate::diagnose::report::parts::Part;
-use crate::diagnose::report::per_roll::PerLateralAcceleration;
+use crate::diagnose::report::per_roll::{HeldRollGradient, PerLateralAcceleration};
 use serde::Serialize;
 
 /// A fitted parameter.
@@ -541,4 +541,27 @@ pub struct RunPart {
     /// it there; not written for every run and part).
     #[serde(skip)]
     pub bias_after: f64,
+}
+
+impl ParameterValue {
+    /// The same with its product with the `held` roll gradient, where it is
+    /// a value per radian of roll (any other is returned as it is). The
+    /// product's standard error is the gradient times the value's, of
+    /// whichever basis ([`ParameterValue::std_error_basis`]).
+    pub fn at_roll_gradient(self, held: &HeldRollGradient) -> Self {
+        let Some(quantity) = self.effect_parameter.and_then(|q| q.per_roll) else {
+            return self;
+        };
+        let k = held.gradient;
+        Self {
+            per_lateral_acceleration: Some(PerLateralAcceleration {
+                quantity,
+                value: self.value * k,
+                std_error: self.std_error * k.abs(),
+                unit: quantity.unit(),
+                roll_gradient: held.clone(),
+            }),
+            ..self
+        }
+    }
 }

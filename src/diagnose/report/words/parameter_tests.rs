@@ -461,3 +461,67 @@ fn a_roll_steer_is_said_at_its_stated_gradient_with_the_product_the_runs_determi
         parameter(&b)
     );
 }
+
+/// A value per radian of roll and its product with the roll gradient.
+mod per_roll {
+    use crate::diagnose::effects::{EffectKind, Group, PerRoll};
+    use crate::diagnose::report::{HeldRollGradient, ParameterValue};
+
+    fn held(gradient: f64) -> HeldRollGradient {
+        HeldRollGradient {
+            gradient,
+            file: Some("camp/vehicle.toml".into()),
+            line: Some(19),
+            runs_logging_roll: 0,
+        }
+    }
+
+    #[test]
+    fn the_product_and_its_error_scale_with_the_gradient_and_only_roll_values_carry_one() {
+        let steer = &EffectKind::RollSteer.parameters()[0];
+        let v = ParameterValue::of(Group::Effect(EffectKind::RollSteer), steer, -0.251, 0.00305);
+        let k = 3f64.to_radians() / crate::constants::G;
+        let p = v.clone().at_roll_gradient(&held(k));
+        let per = p.per_lateral_acceleration.as_ref().unwrap();
+        assert_eq!(per.quantity, PerRoll::Steer);
+        assert_eq!(per.unit, "rad/(m/s²)");
+        assert!((per.value - -0.251 * k).abs() < 1e-15);
+        assert!((per.std_error - 0.00305 * k).abs() < 1e-15);
+        // 3°/g times -0.251 rad/rad is -0.753°/g of steer.
+        assert!((per.per_g(per.value) - -0.753).abs() < 1e-12);
+        assert!((per.roll_gradient.degrees_per_g() - 3.0).abs() < 1e-12);
+        // At twice the gradient, half the coefficient: the same product.
+        let twice = ParameterValue::of(
+            Group::Effect(EffectKind::RollSteer),
+            steer,
+            -0.1255,
+            0.001525,
+        )
+        .at_roll_gradient(&held(2.0 * k));
+        let per2 = twice.per_lateral_acceleration.unwrap();
+        assert!((per2.value - per.value).abs() < 1e-15);
+        assert!((per2.std_error - per.std_error).abs() < 1e-15);
+        // Camber thrust per g is N/N per m/s² times g.
+        let camber = &EffectKind::RollCamber.parameters()[1];
+        let c = ParameterValue::of(Group::Effect(EffectKind::RollCamber), camber, 2.0, 0.5)
+            .at_roll_gradient(&held(k));
+        let per = c.per_lateral_acceleration.unwrap();
+        assert_eq!(
+            (per.quantity, per.unit),
+            (PerRoll::CamberThrust, "N/N per m/s²")
+        );
+        assert!((per.per_g(per.value) - 2.0 * k * crate::constants::G).abs() < 1e-15);
+        // Neither a roll dynamics' value nor another effect's has one.
+        let frequency = &crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+        let f = ParameterValue::of(Group::Roll, frequency, 1.8, 0.01).at_roll_gradient(&held(k));
+        assert!(f.per_lateral_acceleration.is_none());
+        let bank = &EffectKind::RoadBank.parameters()[0];
+        let b = ParameterValue::of(Group::Effect(EffectKind::RoadBank), bank, 0.01, 0.001)
+            .at_roll_gradient(&held(k));
+        assert!(b.per_lateral_acceleration.is_none());
+        // A value without a standard error has a product without one.
+        let none = ParameterValue::of(Group::Effect(EffectKind::RollSteer), steer, 0.1, f64::NAN)
+            .at_roll_gradient(&held(k));
+        assert!(none.per_lateral_acceleration.unwrap().std_error.is_nan());
+    }
+}

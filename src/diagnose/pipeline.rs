@@ -531,7 +531,7 @@ fn run(
         derivatives: c.settings.derivatives,
         shared: Default::default(),
     };
-    let base = baseline(&ctx, &floors);
+    let base = baseline(&ctx, &floors, (c.roll_gradient_at.clone(), &c.runs));
     let significant = rules::significant(base.j0, base.jn);
     let mut notes = notes_of(c, visibility, &ctx, &noise);
     notes.extend(rig_notes::rig_notes(c, &tyre_source, rig_grouping.as_ref()));

@@ -86,6 +86,7 @@ impl Synthetic {
             run_files: self.runs.len(),
             runs,
             roll: self.roll,
+            roll_gradient_at: None,
             settings,
             effects,
             notes: Vec::new(),

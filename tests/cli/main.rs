@@ -1011,3 +1011,4 @@ mod trips_s114_words50;
 mod trips_s115_clean51;
 mod trips_s115_gain51;
 mod trips_s115_known51;
+mod trips_s115_roll51;

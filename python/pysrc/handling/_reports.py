@@ -456,7 +456,15 @@ class Verdict:
     whether on a bound and whether the runs determine it). ``std_error`` is
     the larger of ``asymptotic_std_error`` and the fold refits' spread
     (``fold_std_error``) where the model leaves a gap above noise;
-    ``std_error_basis`` says which (``"asymptotic"`` or ``"fold_spread"``)."""
+    ``std_error_basis`` says which (``"asymptotic"`` or ``"fold_spread"``).
+    A value per radian of body roll (``roll_steer.*``, ``roll_camber.*``)
+    holds only at the campaign's roll gradient, and its
+    ``per_lateral_acceleration`` gives what the runs determine: its product
+    with that gradient (``quantity``: ``"steer"`` or ``"camber_thrust"``;
+    ``value``, ``std_error``, ``unit``) and the gradient (``roll_gradient``:
+    ``gradient`` in rad per m/s², ``file`` and ``line`` of ``[roll]
+    gradient`` or null for the default, ``runs_logging_roll``); ``determined``
+    is at that gradient only."""
     statement: str
     """The verdict in words."""
     warnings: List[str]

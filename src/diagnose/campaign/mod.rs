@@ -228,6 +228,9 @@ pub struct Campaign {
     pub run_files: usize,
     /// Roll degree of freedom.
     pub roll: RollModel,
+    /// The campaign file and line that state `[roll] gradient` (None: not
+    /// stated), for the roll-steer and roll-camber values said at it.
+    pub roll_gradient_at: Option<(PathBuf, usize)>,
     /// Diagnosis settings.
     pub settings: DiagnoseSettings,
     /// The candidate effects.

@@ -21,7 +21,7 @@
 //! the base model's value.
 
 use super::generate::effect_library;
-use super::{par, Effect, Needs, Parameter};
+use super::{par, Effect, Needs, Parameter, PerRoll};
 use crate::scalar::Scalar;
 use crate::vehicle::{Effects, PASSENGER_CAR_ROLL_GRADIENT};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -109,8 +109,8 @@ impl Effect for SteeringCompliance {
 impl Effect for RollSteer {
     const NAME: &'static str = "roll_steer";
     const PARAMETERS: &'static [Parameter] = &[
-        par("front", "rad/rad", 0.0, -0.5, 0.5),
-        par("rear", "rad/rad", 0.0, -0.5, 0.5),
+        par("front", "rad/rad", 0.0, -0.5, 0.5).per_roll(PerRoll::Steer),
+        par("rear", "rad/rad", 0.0, -0.5, 0.5).per_roll(PerRoll::Steer),
     ];
     const SIGNATURE: &'static str = "a steer change that follows body roll through the tyre's slip curve (saturates at the limit): a ramp steer to the limit";
     const NEEDS: Needs = Needs::Nothing;
@@ -124,8 +124,8 @@ impl Effect for RollSteer {
 impl Effect for RollCamber {
     const NAME: &'static str = "roll_camber";
     const PARAMETERS: &'static [Parameter] = &[
-        par("front", "N/N per rad", 0.0, -8.0, 8.0),
-        par("rear", "N/N per rad", 0.0, -8.0, 8.0),
+        par("front", "N/N per rad", 0.0, -8.0, 8.0).per_roll(PerRoll::CamberThrust),
+        par("rear", "N/N per rad", 0.0, -8.0, 8.0).per_roll(PerRoll::CamberThrust),
     ];
     const SIGNATURE: &'static str = "a force change proportional to roll and load that does not saturate with slip: a ramp steer to the limit";
     const NEEDS: Needs = Needs::Nothing;

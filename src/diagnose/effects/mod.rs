@@ -95,6 +95,40 @@ pub struct Parameter {
     /// yaw-rate and sideslip offsets are not, as each replay starts from
     /// the first measured state less them.
     pub additive: bool,
+    /// What it is per radian of body roll, where its effect on the runs
+    /// is only its product with the campaign's roll gradient (None: it
+    /// acts on its own). The model's roll is `φ̈ = ω²·(k·ay − φ) −
+    /// 2ζω·φ̇`, linear in the gradient k, and a roll steer or camber acts
+    /// as its value times φ: a coefficient c at gradient k replays as c/2
+    /// at 2k (the roll state doubled, the steer or thrust the same). The runs
+    /// determine c·k, not c (the report's
+    /// [`crate::diagnose::report::PerLateralAcceleration`]).
+    pub per_roll: Option<PerRoll>,
+}
+
+/// What a per-radian-of-roll parameter ([`Parameter::per_roll`]) moves:
+/// its product with the roll gradient is that quantity per lateral
+/// acceleration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PerRoll {
+    /// An axle's steer (roll steer, rad of steer per rad of roll): the
+    /// product is rad of steer per m/s² of lateral acceleration, as
+    /// engineers quote it in °/g.
+    Steer,
+    /// An axle's camber thrust (roll camber, lateral force per wheel load
+    /// per rad of roll): the product is N/N per m/s².
+    CamberThrust,
+}
+
+impl PerRoll {
+    /// The unit of the product with a roll gradient (rad per m/s²).
+    pub fn unit(self) -> &'static str {
+        match self {
+            PerRoll::Steer => "rad/(m/s²)",
+            PerRoll::CamberThrust => "N/N per m/s²",
+        }
+    }
 }
 
 /// What bounds a parameter on one side.
@@ -117,6 +151,7 @@ const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64)
         bounds: (lo, hi),
         limits: (Bound::Search, Bound::Search),
         additive: false,
+        per_roll: None,
     }
 }
 
@@ -133,6 +168,15 @@ impl Parameter {
     const fn share(self) -> Self {
         Self {
             limits: (Bound::Physical, Bound::Physical),
+            ..self
+        }
+    }
+
+    /// The same as a value per radian of body roll, which acts only
+    /// through its product with the roll gradient ([`Parameter::per_roll`]).
+    const fn per_roll(self, what: PerRoll) -> Self {
+        Self {
+            per_roll: Some(what),
             ..self
         }
     }
@@ -158,7 +202,8 @@ impl Parameter {
 /// steer or camber seen through the wrong roll frequency and damping is
 /// mimicked by stiffness changes of the wrong sign. The roll gradient stays
 /// the campaign's: it only scales the per-radian roll-steer and roll-camber
-/// values. Off values (NaN) are the campaign's.
+/// values ([`Parameter::per_roll`]: the runs determine their product with
+/// it, which the report gives). Off values (NaN) are the campaign's.
 pub struct RollDynamics;
 
 impl RollDynamics {
@@ -271,6 +316,67 @@ mod tests {
         seeds.sort_unstable();
         seeds.dedup();
         assert_eq!(seeds.len(), EffectKind::ALL.len());
+    }
+
+    #[test]
+    fn the_per_roll_parameters_are_the_roll_effects_and_act_through_their_product_with_the_gradient(
+    ) {
+        // Every parameter of an effect that acts through roll is per radian
+        // of roll, and no other is (the roll dynamics' are the mode's).
+        for k in EffectKind::ALL {
+            for q in k.parameters() {
+                assert_eq!(
+                    q.per_roll.is_some(),
+                    k.uses_roll(),
+                    "{}.{}",
+                    k.name(),
+                    q.name
+                );
+            }
+        }
+        assert!(RollDynamics::PARAMETERS
+            .iter()
+            .all(|q| q.per_roll.is_none()));
+        let steer = EffectKind::RollSteer.parameters();
+        assert!(steer.iter().all(|q| q.per_roll == Some(PerRoll::Steer)));
+        let camber = EffectKind::RollCamber.parameters();
+        assert!(camber
+            .iter()
+            .all(|q| q.per_roll == Some(PerRoll::CamberThrust)));
+        // A roll steer and camber c at the roll gradient k replay as c/2 at
+        // 2k: the runs see c·k alone (a sine through the roll mode, whose
+        // lag the product keeps).
+        use crate::diagnose::model::{Augmented, Drive};
+        use crate::manoeuvre::{Manoeuvre, SineSteer};
+        let sine = Manoeuvre::Sine(SineSteer {
+            speed: 22.0,
+            amplitude: 0.04,
+            frequency: 0.7,
+            start: 0.2,
+            end: 4.0,
+        });
+        let drive = Drive::new(&sine, 2e-3);
+        let run = |c: f64, k: f64| {
+            let mut a = Augmented::new(crate::vehicle::linear_bicycle(), 1.0);
+            a.effects_mut().roll.gradient = k;
+            EffectKind::RollSteer.apply(&[-0.2 * c, 0.1 * c], a.effects_mut());
+            EffectKind::RollCamber.apply(&[-2.0 * c, 1.0 * c], a.effects_mut());
+            a.simulate(&drive, [0.0; 6])
+        };
+        let (one, half) = (run(1.0, 0.005), run(0.5, 0.01));
+        let plain = run(0.0, 0.005);
+        let mut moved: f64 = 0.0;
+        for i in 0..one.yaw_rate.len() {
+            let r = one.yaw_rate[i];
+            assert!(
+                (half.yaw_rate[i] - r).abs() <= 1e-12 * (1.0 + r.abs()),
+                "{i}"
+            );
+            moved = moved.max((r - plain.yaw_rate[i]).abs());
+        }
+        // And the coefficients move the yaw rate (the comparison is no
+        // comparison of two base models).
+        assert!(moved > 1e-3, "{moved}");
     }
 
     #[test]

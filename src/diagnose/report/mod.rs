@@ -15,6 +15,7 @@ mod lookalike;
 mod narrowed;
 pub mod outcome;
 pub(crate) mod parts;
+pub mod per_roll;
 mod rank_warning;
 pub(crate) mod runs_left;
 pub mod separating;
@@ -46,6 +47,7 @@ pub use crate::diagnose::report::outcome::{
     Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
+pub use crate::diagnose::report::per_roll::{HeldRollGradient, PerLateralAcceleration};
 pub use crate::diagnose::report::values::{
     jackknife, ParameterValue, Reduction, RunPart, Shrinkage, StdErrorBasis, Traded,
     LIMIT_RESOLUTION, UNDERSTATED,

@@ -12,6 +12,7 @@ use crate::diagnose::effects::{Bound, Group, Parameter, RollDynamics};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::fold_refits::FoldRefit;
 use crate::diagnose::report::parts::Part;
+use crate::diagnose::report::per_roll::{HeldRollGradient, PerLateralAcceleration};
 use serde::Serialize;
 
 /// A fitted parameter.
@@ -47,7 +48,10 @@ pub struct ParameterValue {
     /// value lies beyond it).
     pub bound: Option<Bound>,
     /// The runs determine it: its standard error is finite and no larger
-    /// than the parameter's whole range ([`ParameterValue::of`]).
+    /// than the parameter's whole range ([`ParameterValue::of`]). For a
+    /// value per radian of roll ([`ParameterValue::per_lateral_acceleration`]
+    /// set) only at the stated roll gradient: the runs determine its
+    /// product with the gradient, not the value apart from it.
     pub determined: bool,
     /// Held at its off value because no measured channel responds to it
     /// (an offset of a channel no run carries): not fitted, not counted.
@@ -85,6 +89,14 @@ pub struct ParameterValue {
     /// pair).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub traded: Option<Traded>,
+    /// A value per radian of body roll (roll steer, roll camber) acts only
+    /// through its product with the campaign's roll gradient, held: that
+    /// product, steer or camber thrust per m/s² of lateral acceleration
+    /// with its standard error, and the gradient with where it is stated
+    /// ([`PerLateralAcceleration`]; absent: a value the runs see on its
+    /// own).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub per_lateral_acceleration: Option<PerLateralAcceleration>,
     /// The effect's parameter in the registry this value is, with its off
     /// value and search bounds (`None`: a roll dynamics' parameter, whose
     /// off values are the campaign's, or a value made by name alone,
@@ -259,6 +271,7 @@ impl ParameterValue {
             fold_noise_dof: None,
             fold_refits: Vec::new(),
             traded: None,
+            per_lateral_acceleration: None,
             effect_parameter: None,
         }
     }
@@ -528,4 +541,27 @@ pub struct RunPart {
     /// it there; not written for every run and part).
     #[serde(skip)]
     pub bias_after: f64,
+}
+
+impl ParameterValue {
+    /// The same with its product with the `held` roll gradient, where it is
+    /// a value per radian of roll (any other is returned as it is). The
+    /// product's standard error is the gradient times the value's, of
+    /// whichever basis ([`ParameterValue::std_error_basis`]).
+    pub fn at_roll_gradient(self, held: &HeldRollGradient) -> Self {
+        let Some(quantity) = self.effect_parameter.and_then(|q| q.per_roll) else {
+            return self;
+        };
+        let k = held.gradient;
+        Self {
+            per_lateral_acceleration: Some(PerLateralAcceleration {
+                quantity,
+                value: self.value * k,
+                std_error: self.std_error * k.abs(),
+                unit: quantity.unit(),
+                roll_gradient: held.clone(),
+            }),
+            ..self
+        }
+    }
 }

@@ -12,7 +12,9 @@ use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
-use crate::diagnose::report::{ChannelError, ParameterValue, RankWarning, Ranked, Refused};
+use crate::diagnose::report::{
+    ChannelError, HeldRollGradient, ParameterValue, RankWarning, Ranked, Refused,
+};
 use crate::diagnose::verdict::candidate::parameter_values;
 use crate::diagnose::verdict::rules::{self, Candidate};
 use crate::diagnose::verdict::score::{Context, Scored};
@@ -53,6 +55,9 @@ pub(crate) struct Baseline {
     /// The prior the axles are fitted against (axles identified from the
     /// runs).
     prior: Option<PriorReport>,
+    /// The roll gradient the roll effects are fitted at (the campaign's):
+    /// their per-radian values are said with their product with it.
+    roll_gradient: HeldRollGradient,
 }
 
 impl Baseline {
@@ -275,6 +280,7 @@ impl Baseline {
             )
             .into_iter()
             .map(|v| v.with_fold_runs(&self.fold_runs, &sc.fold_converged))
+            .map(|v| v.at_roll_gradient(&self.roll_gradient))
             .collect(),
             heldout_error_before: self.j0,
             heldout_error_after: j,
@@ -293,8 +299,17 @@ impl Baseline {
 }
 
 /// The base model scored on held-out and fitted runs, with the error the
-/// channels' noise floors alone would give.
-pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
+/// channels' noise floors alone would give; `roll` is where the campaign
+/// states the roll gradient, if it does (file, line), and its runs (those
+/// that log roll are counted).
+pub(crate) fn baseline(
+    ctx: &Context,
+    floors: &[f64; 3],
+    roll: (
+        Option<(std::path::PathBuf, usize)>,
+        &[crate::measured::MeasuredRun],
+    ),
+) -> Baseline {
     let scales = ctx.scales;
     let noise_level = |e: &ChannelErrors| {
         let n: usize = e.count.iter().sum();
@@ -318,6 +333,12 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
         axle: ctx.bases.axle.is_some(),
         heldout: scored.heldout,
         prior: ctx.bases.identification.as_ref().and_then(|i| i.prior),
+        roll_gradient: HeldRollGradient {
+            gradient: ctx.bases.all.effects().roll.gradient,
+            file: roll.0.as_ref().map(|(f, _)| f.clone()),
+            line: roll.0.map(|(_, l)| l),
+            runs_logging_roll: roll.1.iter().filter(|r| r.roll.is_some()).count(),
+        },
     }
 }
 

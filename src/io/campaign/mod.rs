@@ -208,12 +208,23 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         runs,
         run_files: files.len(),
         roll: f.roll,
+        roll_gradient_at: stated_at(&src, &file, "roll.gradient"),
         settings: f.diagnose,
         effects,
         notes,
         cleaning,
         calibration,
     })
+}
+
+/// The file and line where `src`, read from `file`, states `key` (None:
+/// it does not).
+fn stated_at(src: &TomlSource, file: &Path, key: &str) -> Option<(PathBuf, usize)> {
+    let at = src.key_span(key)?;
+    Some((
+        file.to_path_buf(),
+        super::toml_file::line_col(&src.text, at.start).0,
+    ))
 }
 
 /// A `[tyres]` with `front` only runs it on both axles, as a scenario's:

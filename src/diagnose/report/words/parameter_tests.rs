@@ -404,3 +404,124 @@ fn the_fold_that_stands_apart_names_its_run() {
     assert!(q.folds_apart().is_empty());
     assert!(!parameter(&q).contains("to check"));
 }
+
+#[test]
+fn a_roll_steer_is_said_at_its_stated_gradient_with_the_product_the_runs_determine() {
+    use crate::diagnose::report::HeldRollGradient;
+    let [front, rear] = EffectKind::RollSteer.parameters() else {
+        panic!("roll steer has a front and a rear");
+    };
+    let steer = |q, v, se| ParameterValue::of(Group::Effect(EffectKind::RollSteer), q, v, se);
+    // Round 51's campaign: 3°/g stated on line 19.
+    let stated = HeldRollGradient {
+        gradient: 3f64.to_radians() / crate::constants::G,
+        file: Some("out/fw2/vehicle.toml".into()),
+        line: Some(19),
+        runs_logging_roll: 0,
+    };
+    // -0.2510 × 0.0053392 = -0.0013401 rad per m/s², ± 0.00305 × 0.0053392
+    // = 1.63e-5; per g, -0.2510 × 3 = -0.753°/g ± 0.00305 × 3 = 0.00915.
+    let p = steer(front, -0.2510, 0.00305).at_roll_gradient(&stated);
+    assert_eq!(
+        parameter(&p),
+        "roll_steer.front = -0.2510 ± 0.00305 rad/rad at the stated roll gradient of 3.00°/g (`[roll] gradient` = 0.005339221605729774, out/fw2/vehicle.toml:19), which the diagnosis holds (no run logs roll to measure it): the value scales inversely with that gradient, and the runs determine only its product with it, -0.001340 ± 1.63e-5 rad of front steer per m/s² of ay (-0.753 ± 0.00915°/g)"
+    );
+    // Not stated: the default 4°/g, and runs that log roll measure no
+    // gradient; a value on its search bound has a product without an error.
+    let default = HeldRollGradient {
+        gradient: crate::vehicle::PASSENGER_CAR_ROLL_GRADIENT,
+        file: None,
+        line: None,
+        runs_logging_roll: 3,
+    };
+    let bound = steer(rear, 0.5, 0.01).at_roll_gradient(&default);
+    assert_eq!(bound.bound, Some(crate::diagnose::effects::Bound::Search));
+    // 0.5 × 4°/g = 2°/g of rear steer; 0.5 × 0.0071191 = 0.0035595 rad/(m/s²).
+    assert_eq!(
+        parameter(&bound),
+        "roll_steer.rear = 0.5000 rad/rad (at its search bound: the data would take it further) at the default roll gradient of 4.00°/g (the campaign states no `[roll] gradient`), which the diagnosis holds (the roll logged in 3 runs levels their ay and measures no gradient): the value scales inversely with that gradient, and the runs determine only its product with it, 0.003559 rad of rear steer per m/s² of ay (2.00°/g)"
+    );
+    // Roll camber: N/N of camber thrust per m/s² and per g (2.0 × 3°/g in
+    // rad per m/s² = 0.010678; × g = 0.10472).
+    let [_, camber] = EffectKind::RollCamber.parameters() else {
+        panic!("roll camber has a front and a rear");
+    };
+    let c = ParameterValue::of(Group::Effect(EffectKind::RollCamber), camber, 2.0, 0.5)
+        .at_roll_gradient(&stated);
+    let said = parameter(&c);
+    assert!(
+        said.ends_with("its product with it, 0.0107 ± 0.00267 N/N of rear camber thrust per m/s² of ay (0.105 ± 0.0262 N/N per g)"),
+        "{said}"
+    );
+    // Any other parameter is said as before.
+    let bank = &EffectKind::RoadBank.parameters()[0];
+    let b = ParameterValue::of(Group::Effect(EffectKind::RoadBank), bank, 0.01, 0.001);
+    assert_eq!(
+        parameter(&b.clone().at_roll_gradient(&stated)),
+        parameter(&b)
+    );
+}
+
+/// A value per radian of roll and its product with the roll gradient.
+mod per_roll {
+    use crate::diagnose::effects::{EffectKind, Group, PerRoll};
+    use crate::diagnose::report::{HeldRollGradient, ParameterValue};
+
+    fn held(gradient: f64) -> HeldRollGradient {
+        HeldRollGradient {
+            gradient,
+            file: Some("camp/vehicle.toml".into()),
+            line: Some(19),
+            runs_logging_roll: 0,
+        }
+    }
+
+    #[test]
+    fn the_product_and_its_error_scale_with_the_gradient_and_only_roll_values_carry_one() {
+        let steer = &EffectKind::RollSteer.parameters()[0];
+        let v = ParameterValue::of(Group::Effect(EffectKind::RollSteer), steer, -0.251, 0.00305);
+        let k = 3f64.to_radians() / crate::constants::G;
+        let p = v.clone().at_roll_gradient(&held(k));
+        let per = p.per_lateral_acceleration.as_ref().unwrap();
+        assert_eq!(per.quantity, PerRoll::Steer);
+        assert_eq!(per.unit, "rad/(m/s²)");
+        assert!((per.value - -0.251 * k).abs() < 1e-15);
+        assert!((per.std_error - 0.00305 * k).abs() < 1e-15);
+        // 3°/g times -0.251 rad/rad is -0.753°/g of steer.
+        assert!((per.per_g(per.value) - -0.753).abs() < 1e-12);
+        assert!((per.roll_gradient.degrees_per_g() - 3.0).abs() < 1e-12);
+        // At twice the gradient, half the coefficient: the same product.
+        let twice = ParameterValue::of(
+            Group::Effect(EffectKind::RollSteer),
+            steer,
+            -0.1255,
+            0.001525,
+        )
+        .at_roll_gradient(&held(2.0 * k));
+        let per2 = twice.per_lateral_acceleration.unwrap();
+        assert!((per2.value - per.value).abs() < 1e-15);
+        assert!((per2.std_error - per.std_error).abs() < 1e-15);
+        // Camber thrust per g is N/N per m/s² times g.
+        let camber = &EffectKind::RollCamber.parameters()[1];
+        let c = ParameterValue::of(Group::Effect(EffectKind::RollCamber), camber, 2.0, 0.5)
+            .at_roll_gradient(&held(k));
+        let per = c.per_lateral_acceleration.unwrap();
+        assert_eq!(
+            (per.quantity, per.unit),
+            (PerRoll::CamberThrust, "N/N per m/s²")
+        );
+        assert!((per.per_g(per.value) - 2.0 * k * crate::constants::G).abs() < 1e-15);
+        // Neither a roll dynamics' value nor another effect's has one.
+        let frequency = &crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+        let f = ParameterValue::of(Group::Roll, frequency, 1.8, 0.01).at_roll_gradient(&held(k));
+        assert!(f.per_lateral_acceleration.is_none());
+        let bank = &EffectKind::RoadBank.parameters()[0];
+        let b = ParameterValue::of(Group::Effect(EffectKind::RoadBank), bank, 0.01, 0.001)
+            .at_roll_gradient(&held(k));
+        assert!(b.per_lateral_acceleration.is_none());
+        // A value without a standard error has a product without one.
+        let none = ParameterValue::of(Group::Effect(EffectKind::RollSteer), steer, 0.1, f64::NAN)
+            .at_roll_gradient(&held(k));
+        assert!(none.per_lateral_acceleration.unwrap().std_error.is_nan());
+    }
+}

@@ -2,12 +2,15 @@
 //! standard error, or the bound it stands on, or why it is held or not
 //! determined. Values in the parameter's own unit (SI, rad; a steering
 //! compliance in rad/kN with rad/N beside it); a dimensionless parameter
-//! (unit `-`) is written without one.
+//! (unit `-`) is written without one. A value per radian of roll is said
+//! at the roll gradient it holds at, with its product with that gradient,
+//! what the runs determine (`per_roll.rs`).
 
 use super::fold_words::apart;
 use super::{std_error, value};
 use crate::diagnose::effects::Bound;
-use crate::diagnose::report::{ParameterValue, StdErrorBasis};
+use crate::diagnose::effects::PerRoll;
+use crate::diagnose::report::{ParameterValue, PerLateralAcceleration, StdErrorBasis};
 
 /// A parameter on the end of its search range, to four decimals: its
 /// name, value and unit (a ratio's unit, `-`, not written).
@@ -93,6 +96,15 @@ pub fn parameter(p: &ParameterValue) -> String {
 /// the runs beyond their noise to claim (a no-effect campaign's candidates
 /// fit noise), only a standard error that understates.
 pub fn parameter_of(p: &ParameterValue, removes: bool) -> String {
+    let traded = traded_of(p, removes);
+    match &p.per_lateral_acceleration {
+        Some(a) => format!("{traded}{}", at_roll_gradient(p, a)),
+        None => traded,
+    }
+}
+
+/// [`parameter_alone`] with what a pair that trades adds.
+fn traded_of(p: &ParameterValue, removes: bool) -> String {
     let alone = parameter_alone(p, removes);
     let Some(t) = &p.traded else {
         return alone;
@@ -122,6 +134,60 @@ pub fn parameter_of(p: &ParameterValue, removes: bool) -> String {
         } else {
             "better than either"
         }
+    )
+}
+
+/// What a value per radian of roll is said with: the stated roll gradient
+/// it holds at, in °/g, and where (`[roll] gradient`, file:line), that it
+/// scales inversely with it, and the product the runs determine, per m/s²
+/// and per g, with its standard error where the value has one and stands
+/// off its bounds (the gradient held).
+fn at_roll_gradient(p: &ParameterValue, a: &PerLateralAcceleration) -> String {
+    let k = &a.roll_gradient;
+    let stated = match (&k.file, k.line) {
+        (Some(file), Some(line)) => format!(
+            "the stated roll gradient of {}°/g (`[roll] gradient` = {}, {}:{line})",
+            crate::format::readable(k.degrees_per_g(), 3),
+            crate::format::exact(k.gradient),
+            file.display()
+        ),
+        _ => format!(
+            "the default roll gradient of {}°/g (the campaign states no `[roll] gradient`)",
+            crate::format::readable(k.degrees_per_g(), 3)
+        ),
+    };
+    let logged = match k.runs_logging_roll {
+        0 => "no run logs roll to measure it".to_string(),
+        1 => "the one run's logged roll levels its ay and measures no gradient".to_string(),
+        n => format!("the roll logged in {n} runs levels their ay and measures no gradient"),
+    };
+    let axle = p.name.rsplit('.').next().unwrap_or_default();
+    let what = match a.quantity {
+        PerRoll::Steer => format!("rad of {axle} steer per m/s² of ay"),
+        PerRoll::CamberThrust => format!("N/N of {axle} camber thrust per m/s² of ay"),
+    };
+    let per_g = match a.quantity {
+        PerRoll::Steer => "°/g",
+        PerRoll::CamberThrust => " N/N per g",
+    };
+    let fitted = !p.unseen && p.held.is_none() && p.bound.is_none() && p.determined;
+    let product = if fitted && a.std_error.is_finite() {
+        format!(
+            "{} ± {} {what} ({} ± {}{per_g})",
+            value(a.value),
+            std_error(a.std_error),
+            crate::format::readable(a.per_g(a.value), 3),
+            std_error(a.per_g(a.std_error)),
+        )
+    } else {
+        format!(
+            "{} {what} ({}{per_g})",
+            value(a.value),
+            crate::format::readable(a.per_g(a.value), 3)
+        )
+    };
+    format!(
+        " at {stated}, which the diagnosis holds ({logged}): the value scales inversely with that gradient, and the runs determine only its product with it, {product}"
     )
 }
 

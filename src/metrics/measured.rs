@@ -293,7 +293,12 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let wheelbase = Wheelbase::Unknown;
     let Some(y) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
-        let p = super::moving_steer::steer_in_degrees(run, min_speed, LONGEST_WHEELBASE);
+        let p = super::moving_steer::steer_in_degrees(
+            run,
+            min_speed,
+            LONGEST_WHEELBASE,
+            STEER_IN_DEGREES,
+        );
         return p.map_or(Ok(()), |p| Err(InputError::problem(&run.path, p)));
     };
     match steer_problem(&y, wheelbase) {

@@ -16,7 +16,6 @@ use crate::error::InputProblem;
 use crate::measured::clean::{midpoint_median, quantile};
 use crate::measured::MeasuredRun;
 use crate::metrics::measured::least_gain::limit_at_speed;
-use crate::metrics::measured::STEER_IN_DEGREES;
 
 /// A road-wheel steer no handling test reaches at speed, rad (28.6°; a
 /// car's largest mean road-wheel angle is 35–40° at parking speeds).
@@ -28,7 +27,12 @@ pub const ROAD_WHEEL_MOST: f64 = 0.5;
 /// car's is refused) has a median within ± the held steer's limit at their
 /// median speed over the samples steered by at least half that
 /// percentile: the refusal a step in degrees gets.
-pub fn steer_in_degrees(run: &MeasuredRun, min_speed: f64, wheelbase: f64) -> Option<InputProblem> {
+pub fn steer_in_degrees(
+    run: &MeasuredRun,
+    min_speed: f64,
+    wheelbase: f64,
+    base: f64,
+) -> Option<InputProblem> {
     let at_speed: Vec<usize> = (0..run.t.len())
         .filter(|&i| run.speed[i] >= min_speed.max(5.0) && run.steer[i].is_finite())
         .collect();
@@ -50,7 +54,7 @@ pub fn steer_in_degrees(run: &MeasuredRun, min_speed: f64, wheelbase: f64) -> Op
     let samples = q.len();
     let median = midpoint_median(&mut q);
     let speed = midpoint_median(&mut speeds);
-    let (limit, at_speed) = limit_at_speed(STEER_IN_DEGREES, speed, wheelbase);
+    let (limit, at_speed) = limit_at_speed(base, speed, wheelbase);
     (median.abs() < limit).then_some(InputProblem::SteerAboveYaw {
         median,
         samples,

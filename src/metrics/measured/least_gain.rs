@@ -12,7 +12,7 @@
 //! [`super::STEER_IN_DEGREES`], 0.1; a warning below
 //! [`super::SMALL_STEADY_GAIN`], 0.15, with 5 m) took for a steer in
 //! degrees: `metrics` refused the tool's own simulation, `diagnose` the
-//! sedan's runs above about 60 m/s (issue 41).
+//! sedan's runs above about 60 m/s (round 51).
 //!
 //! The rule: the least `q` a car gives at speed `u`, with the `l` the
 //! ratio is taken with, is the most understeering car's,
@@ -72,7 +72,7 @@ pub fn least_ratio(speed: f64, wheelbase: f64) -> f64 {
 pub fn limit_at_speed(base: f64, speed: f64, wheelbase: f64) -> (f64, Option<LimitAtSpeed>) {
     let least = least_ratio(speed, wheelbase);
     // A speed that is not a number (no samples) leaves the fixed limit.
-    if !(least < LEAST_SET_AT) {
+    if least.is_nan() || least >= LEAST_SET_AT {
         return (base, None);
     }
     let limit = base * least / LEAST_SET_AT;

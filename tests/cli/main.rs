@@ -563,6 +563,48 @@ pub(crate) fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::V
     )
 }
 
+/// The unit step response at time `tau` (s) after the step (0 before it)
+/// of a second-order system of natural frequency `w` (rad/s) and damping
+/// ratio `zeta` below 1: the shape of a synthetic step log's responses.
+pub(crate) fn damped_step(w: f64, zeta: f64, tau: f64) -> f64 {
+    if tau <= 0.0 {
+        return 0.0;
+    }
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    1.0 - (-zeta * w * tau).exp() * ((wd * tau).cos() + zeta * w / wd * (wd * tau).sin())
+}
+
+/// A fixed pseudo-random noise from `seed` (Knuth's MMIX linear
+/// congruential generator): each call gives the next value, uniform in
+/// ±`amp`/2, the same sequence on every machine.
+pub(crate) fn lcg_noise(mut seed: u64) -> impl FnMut(f64) -> f64 {
+    move |amp: f64| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        amp * (((seed >> 33) as f64) / f64::from(1u32 << 31) - 0.5)
+    }
+}
+
+/// The CSV text `log` with the cell of column `column` (1-based) at file
+/// line `line` (1-based) replaced by `cell`.
+pub(crate) fn with_cell(log: &str, line: usize, column: usize, cell: &str) -> String {
+    let mut lines: Vec<String> = log.lines().map(str::to_string).collect();
+    let mut cells: Vec<String> = lines[line - 1].split(',').map(str::to_string).collect();
+    cells[column - 1] = cell.to_string();
+    lines[line - 1] = cells.join(",");
+    lines.join("\n") + "\n"
+}
+
+/// `metrics dir/file args…` run in `dir`: (success, stdout, stderr).
+pub(crate) fn metrics_in(dir: &Path, file: &str, args: &[&str]) -> (bool, String, String) {
+    let mut all = vec!["metrics", file];
+    all.extend(args);
+    let o = run_in(dir, &all);
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    (o.status.success(), out, stderr(&o))
+}
+
 /// Runs `diagnose campaign --out out`, which may fail: whether it
 /// succeeded, and stderr.
 pub(crate) fn diagnose_status(campaign: &Path, out: &Path) -> (bool, String) {

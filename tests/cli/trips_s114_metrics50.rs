@@ -31,20 +31,8 @@ const STEERING_RATIO: f64 = 15.0;
 fn step_log(step: f64, ay: f64, beta0: f64, (yaw, yaw_scale): (&str, f64)) -> String {
     let r_ss = ay / SPEED;
     let (w, zeta): (f64, f64) = (2.0 * std::f64::consts::PI * 1.2, 0.7);
-    let wd = w * (1.0 - zeta * zeta).sqrt();
-    let shape = |tau: f64| match tau <= 0.0 {
-        true => 0.0,
-        false => {
-            1.0 - (-zeta * w * tau).exp() * ((wd * tau).cos() + zeta * w / wd * (wd * tau).sin())
-        }
-    };
-    let mut seed: u64 = 12345;
-    let mut noise = |amp: f64| {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        amp * (((seed >> 33) as f64) / f64::from(1u32 << 31) - 0.5)
-    };
+    let shape = |tau: f64| damped_step(w, zeta, tau);
+    let mut noise = lcg_noise(12345);
     let mut s = format!("t,speed,steer,{yaw},ay,beta\n");
     for i in 0..=900 {
         let t = f64::from(i) * 0.01;
@@ -58,25 +46,6 @@ fn step_log(step: f64, ay: f64, beta0: f64, (yaw, yaw_scale): (&str, f64)) -> St
         );
     }
     s
-}
-
-/// The log with the cell of column `column` (1-based) at file line
-/// `line` replaced by `cell`.
-fn with_cell(log: &str, line: usize, column: usize, cell: &str) -> String {
-    let mut lines: Vec<String> = log.lines().map(str::to_string).collect();
-    let mut cells: Vec<String> = lines[line - 1].split(',').map(str::to_string).collect();
-    cells[column - 1] = cell.to_string();
-    lines[line - 1] = cells.join(",");
-    lines.join("\n") + "\n"
-}
-
-/// `metrics` on `dir/file` with `args` after it: (success, stdout, stderr).
-fn metrics_in(dir: &Path, file: &str, args: &[&str]) -> (bool, String, String) {
-    let mut all = vec!["metrics", file];
-    all.extend(args);
-    let o = run_in(dir, &all);
-    let out = String::from_utf8_lossy(&o.stdout).into_owned();
-    (o.status.success(), out, stderr(&o))
 }
 
 /// The value of the table row `label` of `metrics`' stdout.

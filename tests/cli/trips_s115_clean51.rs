@@ -29,20 +29,8 @@ fn step_log(keep: impl Fn(usize) -> bool, steer: impl Fn(f64) -> f64) -> String 
     let ay_ss = 2.0;
     let r_ss = ay_ss / SPEED;
     let (w, zeta): (f64, f64) = (2.0 * std::f64::consts::PI * 1.2, 0.7);
-    let wd = w * (1.0 - zeta * zeta).sqrt();
-    let shape = |tau: f64| match tau <= 0.0 {
-        true => 0.0,
-        false => {
-            1.0 - (-zeta * w * tau).exp() * ((wd * tau).cos() + zeta * w / wd * (wd * tau).sin())
-        }
-    };
-    let mut seed: u64 = 51;
-    let mut noise = |amp: f64| {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        amp * (((seed >> 33) as f64) / f64::from(1u32 << 31) - 0.5)
-    };
+    let shape = |tau: f64| damped_step(w, zeta, tau);
+    let mut noise = lcg_noise(51);
     let mut s = String::from("t,speed,steer,yaw_rate,ay,beta\n");
     for i in 0..=900usize {
         let t = i as f64 * 0.01;
@@ -57,23 +45,6 @@ fn step_log(keep: impl Fn(usize) -> bool, steer: impl Fn(f64) -> f64) -> String 
         }
     }
     s
-}
-
-/// The log with the cell of column `column` (1-based) at file line
-/// `line` replaced by `cell`.
-fn with_cell(log: &str, line: usize, column: usize, cell: &str) -> String {
-    let mut lines: Vec<String> = log.lines().map(str::to_string).collect();
-    let mut cells: Vec<String> = lines[line - 1].split(',').map(str::to_string).collect();
-    cells[column - 1] = cell.to_string();
-    lines[line - 1] = cells.join(",");
-    lines.join("\n") + "\n"
-}
-
-/// `metrics` on `dir/file`: (success, stdout, stderr).
-fn metrics_in(dir: &Path, file: &str) -> (bool, String, String) {
-    let o = run_in(dir, &["metrics", file]);
-    let out = String::from_utf8_lossy(&o.stdout).into_owned();
-    (o.status.success(), out, stderr(&o))
 }
 
 /// Finding 3: the 100 Hz ramp taken every other row (its first sample
@@ -150,19 +121,19 @@ fn a_response_no_car_produces_is_refused_at_its_cell_and_a_spike_within_reach_ma
         .collect();
     let dir = scratch(&refs);
     for (name, _, _, said) in cases {
-        let (ok, _, e) = metrics_in(dir.path(), name);
+        let (ok, _, e) = metrics_in(dir.path(), name, &[]);
         assert!(!ok, "{name}: {e}");
         assert!(e.contains(&format!("error: {said}")), "{name}: {e}");
         assert!(e.contains("mend or remove this row"), "{e}");
         assert!(!e.contains("masked"), "{e}");
     }
-    let (ok, out, e) = metrics_in(dir.path(), "spike.csv");
+    let (ok, out, e) = metrics_in(dir.path(), "spike.csv", &[]);
     assert!(ok, "{e}");
     assert!(
         e.contains("cleaning: spike at 5.980 s in spike.csv: ay 40 (1 sample, masked)"),
         "{e}"
     );
-    let (ok, good, e) = metrics_in(dir.path(), "good.csv");
+    let (ok, good, e) = metrics_in(dir.path(), "good.csv", &[]);
     assert!(ok, "{e}");
     let row = |text: &str| {
         text.lines()
